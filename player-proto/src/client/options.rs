@@ -1,0 +1,105 @@
+//! How a client connects, waits, and reconnects.
+
+use std::fmt;
+use std::sync::Arc;
+use std::time::Duration;
+
+use crate::wire::DEFAULT_MAX_BODY;
+
+/// PUSH (data as soon as it is published) or PULL (data on request).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DataMode {
+    Push,
+    Pull,
+}
+
+/// Retry timing after a server goes away: `initial`, doubling up to `max`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Backoff {
+    pub initial: Duration,
+    pub max: Duration,
+    /// Give up (state `Failed`) after this many failed attempts; `None` = never.
+    pub max_attempts: Option<u32>,
+}
+
+impl Default for Backoff {
+    fn default() -> Self {
+        Backoff {
+            initial: Duration::from_millis(100),
+            max: Duration::from_secs(5),
+            max_attempts: None,
+        }
+    }
+}
+
+impl Backoff {
+    /// The wait before attempt number `attempt` (1-based).
+    pub fn delay(&self, attempt: u32) -> Duration {
+        let factor = 2u32.saturating_pow(attempt.saturating_sub(1).min(16));
+        self.initial.saturating_mul(factor).min(self.max)
+    }
+}
+
+/// Called from the robot thread whenever new data was stored. Keep it cheap: wake a UI, bump a
+/// counter.
+pub type Notifier = Arc<dyn Fn() + Send + Sync>;
+
+/// Client settings; the defaults suit a viewer.
+#[derive(Clone)]
+pub struct ClientOptions {
+    pub connect_timeout: Duration,
+    /// How long a request waits for its ACK or NACK.
+    pub request_timeout: Duration,
+    pub data_mode: DataMode,
+    /// Ask the server to keep only the newest DATA message per device and subtype in its queue
+    /// (a slow reader then gets fresh data, never a backlog).
+    pub replace_old_data: bool,
+    pub backoff: Backoff,
+    /// Largest message body accepted; bigger ones end the connection before any allocation.
+    pub max_body: usize,
+    /// Requests waiting for a reply at once; more are refused at once.
+    pub max_pending_requests: usize,
+    pub notifier: Option<Notifier>,
+}
+
+impl Default for ClientOptions {
+    fn default() -> Self {
+        ClientOptions {
+            connect_timeout: Duration::from_secs(3),
+            request_timeout: Duration::from_secs(5),
+            data_mode: DataMode::Push,
+            replace_old_data: true,
+            backoff: Backoff::default(),
+            max_body: DEFAULT_MAX_BODY,
+            max_pending_requests: 256,
+            notifier: None,
+        }
+    }
+}
+
+impl fmt::Debug for ClientOptions {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("ClientOptions")
+            .field("connect_timeout", &self.connect_timeout)
+            .field("request_timeout", &self.request_timeout)
+            .field("data_mode", &self.data_mode)
+            .field("replace_old_data", &self.replace_old_data)
+            .field("backoff", &self.backoff)
+            .field("max_body", &self.max_body)
+            .field("notifier", &self.notifier.is_some())
+            .finish()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn backoff_doubles_up_to_its_ceiling() {
+        let b = Backoff::default();
+        assert_eq!(b.delay(1), Duration::from_millis(100));
+        assert_eq!(b.delay(3), Duration::from_millis(400));
+        assert_eq!(b.delay(30), Duration::from_secs(5));
+    }
+}

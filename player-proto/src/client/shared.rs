@@ -1,0 +1,133 @@
+//! State the robot thread writes and the user-facing handle reads: connection state, device
+//! list, and the newest data of each subscribed device.
+
+use std::collections::{HashMap, HashSet};
+use std::fmt;
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+use crate::message::Message;
+use crate::wire::{Banner, DevAddr, Interface};
+
+/// Where a connection stands.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ConnectionState {
+    Connecting,
+    Connected,
+    /// The server went away; retrying (this is the `attempt`-th try since).
+    Reconnecting {
+        attempt: u32,
+    },
+    /// Gave up, or was refused for good (not a Player 3 server).
+    Failed(String),
+}
+
+impl fmt::Display for ConnectionState {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ConnectionState::Connecting => f.write_str("connecting"),
+            ConnectionState::Connected => f.write_str("connected"),
+            ConnectionState::Reconnecting { attempt } => {
+                write!(f, "reconnecting (attempt {attempt})")
+            }
+            ConnectionState::Failed(why) => write!(f, "failed: {why}"),
+        }
+    }
+}
+
+/// A device the server reported, with its driver's name.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct DeviceInfo {
+    pub addr: DevAddr,
+    pub driver: String,
+}
+
+/// A data message as stored: when it arrived, the server's timestamp, and a sequence number
+/// counting this device's messages of this subtype (a viewer redraws when it changes).
+#[derive(Debug, Clone)]
+pub struct Stamped {
+    pub message: Arc<Message>,
+    pub received: Instant,
+    pub server_time: f64,
+    pub seq: u64,
+}
+
+/// Key of the newest-data store.
+pub(crate) type DataKey = (Interface, u16, u8);
+
+/// Per-device counters for rates.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct DeviceStats {
+    pub messages: u64,
+    pub bytes: u64,
+}
+
+#[derive(Default)]
+pub(crate) struct Shared {
+    pub state: Mutex<Option<ConnectionState>>,
+    pub banner: Mutex<Option<Banner>>,
+    pub devices: Mutex<Vec<DeviceInfo>>,
+    /// What the user subscribed to, restored after a reconnect.
+    pub subscriptions: Mutex<HashSet<(Interface, u16)>>,
+    /// Newest DATA per (interface, index, subtype), subscribed devices only: bounded by the
+    /// subscriptions, whatever the server sends.
+    pub latest: Mutex<HashMap<DataKey, Stamped>>,
+    pub stats: Mutex<HashMap<(Interface, u16), DeviceStats>>,
+    /// Messages the server sent that could not be used (undecodable, a reply to nothing).
+    pub rejected: Mutex<u64>,
+}
+
+impl Shared {
+    pub fn set_state(&self, state: ConnectionState) {
+        *self.state.lock().expect("state") = Some(state);
+    }
+
+    pub fn state(&self) -> ConnectionState {
+        self.state
+            .lock()
+            .expect("state")
+            .clone()
+            .unwrap_or(ConnectionState::Connecting)
+    }
+
+    pub fn is_subscribed(&self, interf: Interface, index: u16) -> bool {
+        self.subscriptions
+            .lock()
+            .expect("subscriptions")
+            .contains(&(interf, index))
+    }
+
+    /// Stores a DATA message of a subscribed device; returns whether it was kept.
+    pub fn store(&self, message: Message, size: usize) -> bool {
+        let a = message.header.addr;
+        if !self.is_subscribed(a.interf, a.index) {
+            return false;
+        }
+        {
+            let mut stats = self.stats.lock().expect("stats");
+            let s = stats.entry((a.interf, a.index)).or_default();
+            s.messages += 1;
+            s.bytes += size as u64;
+        }
+        let key = (a.interf, a.index, message.header.subtype);
+        let mut latest = self.latest.lock().expect("latest");
+        let seq = latest.get(&key).map_or(1, |s| s.seq + 1);
+        latest.insert(
+            key,
+            Stamped {
+                server_time: message.header.timestamp,
+                message: Arc::new(message),
+                received: Instant::now(),
+                seq,
+            },
+        );
+        true
+    }
+
+    pub fn forget(&self, interf: Interface, index: u16) {
+        self.latest
+            .lock()
+            .expect("latest")
+            .retain(|(i, n, _), _| !(*i == interf && *n == index));
+    }
+}

@@ -1,0 +1,28 @@
+//! The Player 3.x robot-server protocol, written from scratch: XDR over TCP, port 6665.
+//!
+//! * [`wire`] — XDR primitives as Player applies them, the 40-byte header, device addresses,
+//!   the banner, and framing of a byte stream.
+//! * [`interfaces`] — one module per Player interface with its typed messages.
+//! * [`message`] — a header and a typed body; decoding dispatches on interface code.
+//!
+//! Decoding never panics and never allocates more than the bytes received justify; encoding
+//! writes into any [`bytes::BufMut`].
+
+#[macro_use]
+mod macros;
+
+pub mod capture;
+pub mod client;
+pub mod interfaces;
+pub mod logging;
+pub mod message;
+pub mod server;
+pub mod summary;
+pub mod transport;
+pub mod wire;
+
+#[cfg(test)]
+mod roundtrip_tests;
+
+pub use message::{Body, DecodeError, Message};
+pub use wire::{DevAddr, Header, Interface, MsgType};

@@ -1,0 +1,110 @@
+//! Declarative macros that turn a field list into a Player XDR struct, and a message table into
+//! an interface's message enum. Each interface module is then little more than the protocol
+//! document's tables, written as Rust.
+
+/// Declares a struct whose wire form is its fields' encodings in declaration order, exactly as
+/// Player's generator serialises a C struct.
+macro_rules! xdr_struct {
+    (
+        $(#[$meta:meta])*
+        pub struct $name:ident {
+            $( $(#[$field_meta:meta])* pub $field:ident : $ty:ty ),* $(,)?
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, PartialEq, Default)]
+        #[cfg_attr(any(test, feature = "proptest"), derive(proptest_derive::Arbitrary))]
+        pub struct $name {
+            $( $(#[$field_meta])* pub $field: $ty, )*
+        }
+
+        impl $crate::wire::xdr::Xdr for $name {
+            const MIN_WIRE_SIZE: usize = 0 $( + <$ty as $crate::wire::xdr::Xdr>::MIN_WIRE_SIZE )*;
+
+            #[allow(unused_variables)]
+            fn decode<'a>(
+                input: &'a [u8],
+                body: &::bytes::Bytes,
+            ) -> $crate::wire::xdr::XdrResult<'a, Self> {
+                $(
+                    let (input, $field) = <$ty as $crate::wire::xdr::Xdr>::decode(input, body)
+                        .map_err(|e| $crate::wire::xdr::in_field(e, stringify!($name), stringify!($field)))?;
+                )*
+                Ok((input, Self { $( $field, )* }))
+            }
+
+            #[allow(unused_variables)]
+            fn encode<B: ::bytes::BufMut>(&self, out: &mut B) {
+                $( $crate::wire::xdr::Xdr::encode(&self.$field, out); )*
+            }
+
+            fn encoded_len(&self) -> usize {
+                0 $( + $crate::wire::xdr::Xdr::encoded_len(&self.$field) )*
+            }
+        }
+
+        impl $crate::wire::xdr::XdrElement for $name {}
+    };
+}
+
+/// Declares an interface's messages: one enum variant per (class, subtype) with its body type.
+///
+/// ```ignore
+/// interface_messages! {
+///     pub enum Laser {
+///         Data 1 => Scan(LaserScan),
+///         Request 1 => Geometry(LaserGeometry),
+///     }
+/// }
+/// ```
+/// A request's ACK (and a NACK that has a body) is encoded with the request's own structure,
+/// so one `Request` entry covers REQ, ACK and NACK; the header tells them apart.
+macro_rules! interface_messages {
+    (
+        $(#[$meta:meta])*
+        pub enum $name:ident {
+            $( $(#[$variant_meta:meta])* $class:ident $subtype:literal => $variant:ident($ty:ty), )*
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, PartialEq)]
+        #[cfg_attr(any(test, feature = "proptest"), derive(proptest_derive::Arbitrary))]
+        pub enum $name {
+            $( $(#[$variant_meta])* $variant($ty), )*
+        }
+
+        impl $crate::interfaces::MessageSet for $name {
+            fn decode(
+                class: $crate::wire::MessageClass,
+                subtype: u8,
+                body: &::bytes::Bytes,
+            ) -> Option<Result<(Self, usize), $crate::wire::xdr::XdrError<'_>>> {
+                $(
+                    if class == $crate::wire::MessageClass::$class && subtype == $subtype {
+                        return Some(
+                            $crate::wire::xdr::decode_all::<$ty>(body)
+                                .map(|(value, trailing)| (Self::$variant(value), trailing)),
+                        );
+                    }
+                )*
+                None
+            }
+
+            fn class(&self) -> $crate::wire::MessageClass {
+                match self { $( Self::$variant(_) => $crate::wire::MessageClass::$class, )* }
+            }
+
+            fn subtype(&self) -> u8 {
+                match self { $( Self::$variant(_) => $subtype, )* }
+            }
+
+            fn encode<B: ::bytes::BufMut>(&self, out: &mut B) {
+                match self { $( Self::$variant(v) => $crate::wire::xdr::Xdr::encode(v, out), )* }
+            }
+
+            fn encoded_len(&self) -> usize {
+                match self { $( Self::$variant(v) => $crate::wire::xdr::Xdr::encoded_len(v), )* }
+            }
+        }
+    };
+}

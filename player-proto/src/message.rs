@@ -1,0 +1,270 @@
+//! A whole message: header plus typed body, and the registry that maps interface codes to
+//! their message sets.
+
+use std::fmt;
+
+use bytes::{BufMut, Bytes, BytesMut};
+
+use crate::interfaces::{self, MessageSet};
+use crate::wire::xdr::{XdrError, XdrFault};
+use crate::wire::{DevAddr, HEADER_LEN, Header, Interface, MessageClass, MsgType};
+
+/// Declares [`Body`] with one variant per implemented interface, and its dispatch.
+macro_rules! bodies {
+    ($( $(#[$meta:meta])* $variant:ident => $code:ident, $ty:ty; )*) => {
+        /// A message body, typed when the interface and subtype are known.
+        #[derive(Debug, Clone, PartialEq)]
+        #[cfg_attr(any(test, feature = "proptest"), derive(proptest_derive::Arbitrary))]
+        pub enum Body {
+            /// No body (`size` 0): "get" requests, empty ACKs and NACKs, SYNCH, data requests.
+            Empty,
+            /// A capability or property request, valid on every interface.
+            Universal(interfaces::universal::Universal),
+            $( $(#[$meta])* $variant($ty), )*
+            /// A body this crate does not decode (unknown interface or subtype), kept verbatim
+            /// so it re-encodes byte for byte.
+            Unknown(#[cfg_attr(any(test, feature = "proptest"), proptest(strategy = "crate::message::arbitrary_bytes()"))] Bytes),
+        }
+
+        impl Body {
+            fn decode_typed(
+                interf: Interface,
+                class: MessageClass,
+                subtype: u8,
+                body: &Bytes,
+            ) -> Option<Result<(Body, usize), XdrError<'_>>> {
+                if class == MessageClass::Request && subtype >= 247 {
+                    return interfaces::universal::Universal::decode(class, subtype, body)
+                        .map(|r| r.map(|(v, trailing)| (Body::Universal(v), trailing)));
+                }
+                $(
+                    if interf == Interface::$code {
+                        return <$ty>::decode(class, subtype, body)
+                            .map(|r| r.map(|(v, trailing)| (Body::$variant(v), trailing)));
+                    }
+                )*
+                None
+            }
+
+            /// The interface this typed body belongs to (`None` for empty, universal and
+            /// unknown bodies, which fit any).
+            pub fn interface(&self) -> Option<Interface> {
+                match self {
+                    $( Body::$variant(_) => Some(Interface::$code), )*
+                    _ => None,
+                }
+            }
+
+            /// Class and subtype of a typed body.
+            pub fn kind(&self) -> Option<(MessageClass, u8)> {
+                match self {
+                    Body::Universal(v) => Some((v.class(), v.subtype())),
+                    $( Body::$variant(v) => Some((v.class(), v.subtype())), )*
+                    Body::Empty | Body::Unknown(_) => None,
+                }
+            }
+
+            pub fn encode<B: BufMut>(&self, out: &mut B) {
+                match self {
+                    Body::Empty => {}
+                    Body::Universal(v) => v.encode(out),
+                    $( Body::$variant(v) => v.encode(out), )*
+                    Body::Unknown(raw) => out.put_slice(raw),
+                }
+            }
+
+            pub fn encoded_len(&self) -> usize {
+                match self {
+                    Body::Empty => 0,
+                    Body::Universal(v) => v.encoded_len(),
+                    $( Body::$variant(v) => v.encoded_len(), )*
+                    Body::Unknown(raw) => raw.len(),
+                }
+            }
+        }
+
+        $(
+            impl From<$ty> for Body {
+                fn from(v: $ty) -> Body {
+                    Body::$variant(v)
+                }
+            }
+        )*
+    };
+}
+
+bodies! {
+    Player => PLAYER, interfaces::player::Player;
+    Laser => LASER, interfaces::laser::Laser;
+    Sonar => SONAR, interfaces::sonar::Sonar;
+    Position2d => POSITION2D, interfaces::position2d::Position2d;
+    Fiducial => FIDUCIAL, interfaces::fiducial::Fiducial;
+    Camera => CAMERA, interfaces::camera::Camera;
+    Ranger => RANGER, interfaces::ranger::Ranger;
+    Simulation => SIMULATION, interfaces::simulation::Simulation;
+    Blobfinder => BLOBFINDER, interfaces::blobfinder::Blobfinder;
+    Map => MAP, interfaces::map::Map;
+    Graphics2d => GRAPHICS2D, interfaces::graphics2d::Graphics2d;
+    Graphics3d => GRAPHICS3D, interfaces::graphics3d::Graphics3d;
+    Speech => SPEECH, interfaces::speech::Speech;
+    Bumper => BUMPER, interfaces::bumper::Bumper;
+    Power => POWER, interfaces::power::Power;
+    Gripper => GRIPPER, interfaces::gripper::Gripper;
+}
+
+impl From<interfaces::universal::Universal> for Body {
+    fn from(v: interfaces::universal::Universal) -> Body {
+        Body::Universal(v)
+    }
+}
+
+#[cfg(any(test, feature = "proptest"))]
+pub(crate) fn arbitrary_bytes() -> impl proptest::strategy::Strategy<Value = Bytes> {
+    use proptest::strategy::Strategy;
+    proptest::collection::vec(proptest::arbitrary::any::<u8>(), 0..64).prop_map(Bytes::from)
+}
+
+/// A body that could not be decoded: names the interface, type, subtype, field and the byte
+/// offset within the body where decoding failed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{}", self.describe())]
+pub struct DecodeError {
+    pub header: Header,
+    /// Offset within the body where the failing item starts.
+    pub offset: usize,
+    pub fault: XdrFault,
+    /// `"LaserScan.ranges"`, when known.
+    pub field: Option<String>,
+}
+
+impl DecodeError {
+    fn from_xdr(header: Header, body: &Bytes, err: XdrError<'_>) -> DecodeError {
+        let offset = body.len().saturating_sub(err.input.len());
+        DecodeError {
+            header,
+            offset,
+            fault: err.fault,
+            field: err
+                .field
+                .map(|f| format!("{}.{}", err.within.unwrap_or("?"), f)),
+        }
+    }
+
+    fn describe(&self) -> String {
+        let h = &self.header;
+        let field = match &self.field {
+            Some(f) => format!(" in {f}"),
+            None => String::new(),
+        };
+        format!(
+            "cannot decode {} {} subtype {} from {}: {} at body byte {} of {}{}",
+            h.addr.interf, h.msg_type, h.subtype, h.addr, self.fault, self.offset, h.size, field
+        )
+    }
+}
+
+impl fmt::Display for XdrFault {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            XdrFault::Truncated => f.write_str("body ends early"),
+            XdrFault::LengthAboveCount { count, length } => {
+                write!(f, "array length {length} exceeds its count {count}")
+            }
+            XdrFault::LengthBeyondBody { length, remaining } => write!(
+                f,
+                "array length {length} cannot fit in the {remaining} bytes left"
+            ),
+            XdrFault::Malformed => f.write_str("malformed value"),
+        }
+    }
+}
+
+/// A Player message: header and body.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Message {
+    /// The header as received, or as it will be sent; `size` is recomputed on encoding.
+    pub header: Header,
+    pub body: Body,
+}
+
+impl Message {
+    /// A message with an explicit subtype, e.g. a bodiless "get" request.
+    pub fn new(addr: DevAddr, msg_type: MsgType, subtype: u8, body: Body) -> Message {
+        let size = u32::try_from(body.encoded_len()).expect("body above 4 GiB");
+        Message {
+            header: Header {
+                addr,
+                msg_type,
+                subtype,
+                timestamp: 0.0,
+                seq: 0,
+                size,
+            },
+            body,
+        }
+    }
+
+    /// A message whose subtype follows from its typed body.
+    ///
+    /// # Panics
+    /// If `body` is empty or unknown (use [`Message::new`] for those).
+    pub fn typed(addr: DevAddr, msg_type: MsgType, body: impl Into<Body>) -> Message {
+        let body = body.into();
+        let (_, subtype) = body
+            .kind()
+            .expect("Message::typed needs a typed body; use Message::new");
+        Message::new(addr, msg_type, subtype, body)
+    }
+
+    /// Sets the timestamp.
+    pub fn at(mut self, timestamp: f64) -> Message {
+        self.header.timestamp = timestamp;
+        self
+    }
+
+    /// Decodes a framed body. Never panics; an undecodable body is an error naming the
+    /// interface, subtype, field and offset. Unknown interfaces and subtypes decode to
+    /// [`Body::Unknown`].
+    pub fn decode(header: Header, body: Bytes) -> Result<Message, DecodeError> {
+        if body.is_empty() {
+            return Ok(Message {
+                header,
+                body: Body::Empty,
+            });
+        }
+        let class = header.msg_type.class();
+        let typed = Body::decode_typed(header.addr.interf, class, header.subtype, &body);
+        let body = match typed {
+            None => Body::Unknown(body),
+            Some(Ok((typed, trailing))) => {
+                if trailing > 0 {
+                    // Player's own decoder skips these silently; so do we, but say so.
+                    tracing::debug!(%header, trailing, "body has trailing bytes");
+                }
+                typed
+            }
+            Some(Err(err)) => return Err(DecodeError::from_xdr(header, &body, err)),
+        };
+        Ok(Message { header, body })
+    }
+
+    /// Encoded length, header included.
+    pub fn encoded_len(&self) -> usize {
+        HEADER_LEN + self.body.encoded_len()
+    }
+
+    /// Appends header and body; the header's `size` is the body's encoded length.
+    pub fn encode<B: BufMut>(&self, out: &mut B) {
+        let mut header = self.header;
+        header.size = u32::try_from(self.body.encoded_len()).expect("body above 4 GiB");
+        header.encode(out);
+        self.body.encode(out);
+    }
+
+    /// The wire bytes in one buffer.
+    pub fn to_bytes(&self) -> Bytes {
+        let mut out = BytesMut::with_capacity(self.encoded_len());
+        self.encode(&mut out);
+        out.freeze()
+    }
+}

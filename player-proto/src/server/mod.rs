@@ -1,0 +1,238 @@
+//! The server side of the Player protocol: accept clients on one or several ports (a port is a
+//! robot), send the banner, answer the `player` interface the way a Player 3 server does
+//! (device list, driver names, subscriptions, PUSH/PULL, data requests, replace rules), route
+//! commands and requests to [`Device`]s, and push each device's data to its subscribers.
+//!
+//! A mock laser in a few lines:
+//!
+//! ```no_run
+//! use player_proto::server::{Device, Reply, Server, ServerConfig};
+//! use player_proto::interfaces::laser::{Laser, LaserScan};
+//! use player_proto::message::{Body, Message};
+//!
+//! struct MockLaser;
+//! impl Device for MockLaser {
+//!     fn driver_name(&self) -> &str { "sicklms200" }
+//!     fn on_request(&mut self, _request: &Message) -> Reply { Reply::Nack }
+//! }
+//!
+//! let mut config = ServerConfig::default();
+//! let robot = config.robot(0); // port 0: any free port
+//! config.device(robot, "laser:0".parse().unwrap(), MockLaser);
+//! let server = Server::start(config).unwrap();
+//! let mut addr: player_proto::DevAddr = "laser:0".parse().unwrap();
+//! addr.robot = u32::from(server.port(robot));
+//! let scan = LaserScan { ranges: vec![1.0; 181], ..LaserScan::default() };
+//! server.publisher().publish(addr, 1, Body::Laser(Laser::Scan(scan)), 0.0);
+//! ```
+
+mod device;
+mod publisher;
+mod queue;
+mod session;
+mod state;
+
+use std::net::{IpAddr, Ipv4Addr, SocketAddr};
+use std::sync::{Arc, Mutex};
+
+pub use device::{Device, Reply};
+pub use publisher::Publisher;
+pub use queue::{DataMode, OutQueue, QUEUE_LIMIT, ReplaceRule, RuleAction};
+use state::{DeviceSlot, ServerState};
+
+use crate::wire::{Banner, DEFAULT_MAX_BODY, DevAddr};
+
+/// What to serve.
+pub struct ServerConfig {
+    /// Address to listen on; 127.0.0.1 by default.
+    pub bind: IpAddr,
+    /// The version in the banner.
+    pub version: String,
+    /// Largest message body accepted from a client.
+    pub max_body: usize,
+    ports: Vec<u16>,
+    devices: Vec<(usize, DevAddr, Box<dyn Device>)>,
+}
+
+impl Default for ServerConfig {
+    fn default() -> Self {
+        ServerConfig {
+            bind: IpAddr::V4(Ipv4Addr::LOCALHOST),
+            version: "3.1.1-dev".into(),
+            max_body: DEFAULT_MAX_BODY,
+            ports: Vec::new(),
+            devices: Vec::new(),
+        }
+    }
+}
+
+impl ServerConfig {
+    /// Adds a robot served on `port` (0 = any free port) and returns its number.
+    pub fn robot(&mut self, port: u16) -> usize {
+        self.ports.push(port);
+        self.ports.len() - 1
+    }
+
+    /// Adds a device to a robot; only the interface and index of `addr` are used.
+    pub fn device(&mut self, robot: usize, addr: DevAddr, device: impl Device) {
+        self.devices.push((robot, addr, Box::new(device)));
+    }
+}
+
+/// Why the server could not start.
+#[derive(Debug, thiserror::Error)]
+pub enum ServerError {
+    #[error("cannot listen on {addr}: {source}")]
+    Bind {
+        addr: SocketAddr,
+        source: std::io::Error,
+    },
+    #[error("cannot start the server runtime: {0}")]
+    Runtime(std::io::Error),
+    #[error("bad banner version: {0}")]
+    Banner(#[from] crate::wire::BannerError),
+    #[error("device {addr} added to robot {robot}, but there are only {robots} robots")]
+    NoSuchRobot {
+        addr: DevAddr,
+        robot: usize,
+        robots: usize,
+    },
+}
+
+/// A running server; stops when dropped.
+pub struct Server {
+    ports: Vec<u16>,
+    state: Arc<ServerState>,
+    runtime: Mutex<Option<tokio::runtime::Runtime>>,
+}
+
+impl Server {
+    /// Binds every port, then serves in the background (its own runtime and threads).
+    pub fn start(config: ServerConfig) -> Result<Server, ServerError> {
+        let banner = Banner::new(&config.version)?;
+        let mut listeners = Vec::new();
+        for &port in &config.ports {
+            let addr = SocketAddr::new(config.bind, port);
+            let listener = std::net::TcpListener::bind(addr)
+                .map_err(|source| ServerError::Bind { addr, source })?;
+            listener
+                .set_nonblocking(true)
+                .map_err(|source| ServerError::Bind { addr, source })?;
+            listeners.push(listener);
+        }
+        let ports: Vec<u16> = listeners
+            .iter()
+            .map(|l| l.local_addr().map(|a| a.port()).unwrap_or(0))
+            .collect();
+        let host = match config.bind {
+            IpAddr::V4(ip) if !ip.is_unspecified() => DevAddr::host_from_ipv4(ip),
+            _ => DevAddr::host_from_ipv4(Ipv4Addr::LOCALHOST),
+        };
+        let robots = ports.len();
+        let devices = config
+            .devices
+            .into_iter()
+            .map(|(robot, addr, device)| {
+                let port = *ports.get(robot).ok_or(ServerError::NoSuchRobot {
+                    addr,
+                    robot,
+                    robots,
+                })?;
+                Ok(DeviceSlot {
+                    addr: DevAddr {
+                        host,
+                        robot: u32::from(port),
+                        ..addr
+                    },
+                    device: Mutex::new(device),
+                })
+            })
+            .collect::<Result<Vec<_>, ServerError>>()?;
+        let state = Arc::new(ServerState {
+            host,
+            devices,
+            sessions: Mutex::default(),
+        });
+        let runtime = tokio::runtime::Builder::new_multi_thread()
+            .worker_threads(2)
+            .thread_name("player-server")
+            .enable_all()
+            .build()
+            .map_err(ServerError::Runtime)?;
+        for (listener, &port) in listeners.into_iter().zip(&ports) {
+            let state = state.clone();
+            let banner = banner.clone();
+            let max_body = config.max_body;
+            runtime.spawn(async move {
+                let listener = match tokio::net::TcpListener::from_std(listener) {
+                    Ok(l) => l,
+                    Err(e) => {
+                        tracing::error!(port, "cannot serve: {e}");
+                        return;
+                    }
+                };
+                loop {
+                    match listener.accept().await {
+                        Ok((stream, _)) => {
+                            tokio::spawn(session::serve(
+                                stream,
+                                port,
+                                state.clone(),
+                                banner.clone(),
+                                max_body,
+                            ));
+                        }
+                        Err(e) => {
+                            tracing::warn!(port, "accept failed: {e}");
+                            tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+                        }
+                    }
+                }
+            });
+        }
+        Ok(Server {
+            ports,
+            state,
+            runtime: Mutex::new(Some(runtime)),
+        })
+    }
+
+    /// The port robot number `robot` is served on.
+    pub fn port(&self, robot: usize) -> u16 {
+        self.ports[robot]
+    }
+
+    pub fn ports(&self) -> &[u16] {
+        &self.ports
+    }
+
+    /// Publishes device data from any thread.
+    pub fn publisher(&self) -> Publisher {
+        Publisher {
+            state: self.state.clone(),
+        }
+    }
+
+    /// Stops accepting and drops every connection.
+    pub fn shutdown(&self) {
+        if let Some(runtime) = self.runtime.lock().expect("runtime").take() {
+            for session in self
+                .state
+                .sessions
+                .lock()
+                .expect("sessions")
+                .iter()
+                .filter_map(|w| w.upgrade())
+            {
+                session.close();
+            }
+            runtime.shutdown_background();
+        }
+    }
+}
+
+impl Drop for Server {
+    fn drop(&mut self) {
+        self.shutdown();
+    }
+}

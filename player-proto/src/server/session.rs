@@ -1,0 +1,296 @@
+//! One client connection: the banner, then reading messages and answering them the way a
+//! Player 3 server does (§4 and §8.4 of the protocol notes), while a writer task drains the
+//! connection's outgoing queue.
+
+use std::sync::Arc;
+use std::time::{SystemTime, UNIX_EPOCH};
+
+use bytes::BytesMut;
+use tokio::io::AsyncWriteExt;
+use tokio::net::TcpStream;
+use tokio::net::tcp::OwnedWriteHalf;
+
+use super::device::Reply;
+use super::queue::{DataMode, ReplaceRule, RuleAction, data_request_ack};
+use super::state::{ServerState, SessionState};
+use crate::interfaces::player::{
+    self, CLOSE_MODE, DATAMODE_PULL, DATAMODE_PUSH, DevList, DeviceReq, DriverInfo, ERROR_MODE,
+    OPEN_MODE, Player,
+};
+use crate::message::{Body, Message};
+use crate::transport::{Incoming, MessageReader, write_message};
+use crate::wire::{Banner, DevAddr, FrameDecoder, Interface, MsgType, PlayerString};
+
+fn now() -> f64 {
+    SystemTime::now()
+        .duration_since(UNIX_EPOCH)
+        .map(|d| d.as_secs_f64())
+        .unwrap_or(0.0)
+}
+
+/// Serves one accepted connection until either side closes it.
+pub(crate) async fn serve(
+    stream: TcpStream,
+    port: u16,
+    state: Arc<ServerState>,
+    banner: Banner,
+    max_body: usize,
+) {
+    let peer = stream
+        .peer_addr()
+        .map_or_else(|_| "?".to_string(), |a| a.to_string());
+    let _ = stream.set_nodelay(true);
+    let (read_half, mut write_half) = stream.into_split();
+    if let Err(e) = write_half.write_all(&banner.to_bytes()).await {
+        tracing::debug!(%peer, "client left before the banner: {e}");
+        return;
+    }
+    let session = Arc::new(SessionState::new(port));
+    state.register(&session);
+    let writer = tokio::spawn(write_loop(write_half, session.clone()));
+
+    let mut reader = MessageReader::new(read_half, FrameDecoder::new(max_body));
+    let mut handler = Handler {
+        state: &state,
+        session: &session,
+        port,
+    };
+    loop {
+        match reader.read().await {
+            Ok(Incoming::Message(message)) => handler.handle(message),
+            // Player drops a message whose body does not decode, without a reply.
+            Ok(Incoming::Undecodable(e)) => tracing::warn!(%peer, "dropped: {e}"),
+            Ok(Incoming::Closed) => break,
+            Err(e) => {
+                tracing::warn!(%peer, port, "closing the connection: {e}");
+                break;
+            }
+        }
+        if session.is_closed() {
+            break;
+        }
+    }
+    handler.unsubscribe_all();
+    session.close();
+    let _ = writer.await;
+}
+
+async fn write_loop(mut out: OwnedWriteHalf, session: Arc<SessionState>) {
+    let mut scratch = BytesMut::with_capacity(64 * 1024);
+    loop {
+        let ready = session.queue.lock().expect("queue").take_sendable();
+        for message in &ready {
+            if let Err(e) = write_message(&mut out, message, &mut scratch).await {
+                tracing::debug!("client write failed: {e}");
+                session.close();
+                return;
+            }
+        }
+        if session.is_closed() {
+            let _ = out.shutdown().await;
+            return;
+        }
+        session.wake_writer.notified().await;
+    }
+}
+
+struct Handler<'a> {
+    state: &'a ServerState,
+    session: &'a SessionState,
+    port: u16,
+}
+
+impl Handler<'_> {
+    fn server_addr(&self, interf: Interface, index: u16) -> DevAddr {
+        DevAddr {
+            host: self.state.host,
+            robot: u32::from(self.port),
+            interf,
+            index,
+        }
+    }
+
+    fn reply(&self, request: &Message, kind: MsgType, body: Body) {
+        let addr = self.server_addr(request.header.addr.interf, request.header.addr.index);
+        let mut reply = Message::new(addr, kind, request.header.subtype, body);
+        reply.header.timestamp = now();
+        reply.header.seq = request.header.seq;
+        self.session.send(Arc::new(reply));
+    }
+
+    fn handle(&mut self, message: Message) {
+        if message.header.addr.interf == Interface::PLAYER {
+            self.handle_player(&message);
+            return;
+        }
+        let (interf, index) = (message.header.addr.interf, message.header.addr.index);
+        let Some(slot) = self.state.device(self.port, interf, index) else {
+            // Player drops messages to devices it does not have, even requests.
+            tracing::debug!(
+                port = self.port,
+                "dropped a message to unknown device {interf}:{index}"
+            );
+            return;
+        };
+        if matches!(message.body, Body::Unknown(_)) {
+            tracing::debug!("dropped {}: no structure for that subtype", message.header);
+            return;
+        }
+        let mut message = message;
+        message.header.addr = slot.addr;
+        match message.header.msg_type {
+            MsgType::Cmd => slot.device.lock().expect("device").on_command(&message),
+            MsgType::Req => match slot.device.lock().expect("device").on_request(&message) {
+                Reply::Ack(body) => self.reply(&message, MsgType::Ack, body),
+                Reply::Nack => self.reply(&message, MsgType::Nack, Body::Empty),
+            },
+            other => tracing::debug!("dropped a {other} message sent to a device"),
+        }
+    }
+
+    fn handle_player(&mut self, message: &Message) {
+        let h = &message.header;
+        if h.msg_type != MsgType::Req {
+            self.reply(message, MsgType::Nack, Body::Empty);
+            return;
+        }
+        match (h.subtype, &message.body) {
+            (player::REQ_DEVLIST, _) => {
+                let devices = self.state.devices_on(self.port).map(|d| d.addr).collect();
+                self.reply(
+                    message,
+                    MsgType::Ack,
+                    Body::Player(Player::DevList(DevList { devices })),
+                );
+            }
+            (player::REQ_DRIVERINFO, Body::Player(Player::DriverInfo(asked))) => {
+                match self
+                    .state
+                    .device(self.port, asked.addr.interf, asked.addr.index)
+                {
+                    Some(slot) => {
+                        let name =
+                            PlayerString::new(slot.device.lock().expect("device").driver_name());
+                        let info = DriverInfo {
+                            addr: slot.addr,
+                            driver_name: name,
+                        };
+                        self.reply(
+                            message,
+                            MsgType::Ack,
+                            Body::Player(Player::DriverInfo(info)),
+                        );
+                    }
+                    None => self.reply(message, MsgType::Nack, Body::Empty),
+                }
+            }
+            (player::REQ_DEV, Body::Player(Player::Device(req))) => self.subscription(message, req),
+            (player::REQ_DATAMODE, Body::Player(Player::DataMode(m))) => {
+                let mode = match m.mode {
+                    DATAMODE_PUSH => Some(DataMode::Push),
+                    DATAMODE_PULL => Some(DataMode::Pull),
+                    // Player ignores an unknown mode but still ACKs.
+                    _ => None,
+                };
+                if let Some(mode) = mode {
+                    self.session.queue.lock().expect("queue").set_mode(mode);
+                }
+                self.reply(message, MsgType::Ack, Body::Empty);
+            }
+            (player::REQ_DATA, Body::Empty) => {
+                let ack = data_request_ack(self.state.host, u32::from(self.port));
+                self.session
+                    .queue
+                    .lock()
+                    .expect("queue")
+                    .request_data(Arc::new(ack));
+                self.session.wake_writer.notify_one();
+            }
+            (player::REQ_ADD_REPLACE_RULE, Body::Player(Player::AddReplaceRule(r))) => {
+                let action = match r.replace {
+                    player::REPLACE_RULE_REPLACE => RuleAction::Replace,
+                    player::REPLACE_RULE_IGNORE => RuleAction::Ignore,
+                    _ => RuleAction::Accept,
+                };
+                let rule = ReplaceRule {
+                    interf: r.interf,
+                    index: r.index,
+                    msg_type: r.msg_type,
+                    subtype: r.subtype,
+                    action,
+                };
+                self.session.queue.lock().expect("queue").add_rule(rule);
+                self.reply(message, MsgType::Ack, Body::Empty);
+            }
+            // A body where none belongs, or a request Player's TCP layer does not implement
+            // (AUTH, NAMESERVICE): Player drops the former and NACKs the latter.
+            (player::REQ_DATA, _) => tracing::debug!("dropped a data request with a body"),
+            _ => self.reply(message, MsgType::Nack, Body::Empty),
+        }
+    }
+
+    fn subscription(&mut self, message: &Message, req: &DeviceReq) {
+        let (interf, index) = (req.addr.interf, req.addr.index);
+        let Some(slot) = self.state.device(self.port, interf, index) else {
+            let refused = DeviceReq {
+                addr: self.server_addr(interf, index),
+                access: ERROR_MODE,
+                driver_name: PlayerString::default(),
+            };
+            self.reply(
+                message,
+                MsgType::Nack,
+                Body::Player(Player::Device(refused)),
+            );
+            return;
+        };
+        let mut device = slot.device.lock().expect("device");
+        let key = (interf, index);
+        let granted = match req.access {
+            OPEN_MODE => {
+                let mut subs = self.session.subscriptions.lock().expect("subscriptions");
+                if subs.contains(&key) || device.on_subscribe() {
+                    subs.insert(key);
+                    OPEN_MODE
+                } else {
+                    ERROR_MODE
+                }
+            }
+            CLOSE_MODE => {
+                if self
+                    .session
+                    .subscriptions
+                    .lock()
+                    .expect("subscriptions")
+                    .remove(&key)
+                {
+                    device.on_unsubscribe();
+                }
+                CLOSE_MODE
+            }
+            _ => ERROR_MODE,
+        };
+        let reply = DeviceReq {
+            addr: slot.addr,
+            access: granted,
+            driver_name: PlayerString::new(device.driver_name()),
+        };
+        drop(device);
+        self.reply(message, MsgType::Ack, Body::Player(Player::Device(reply)));
+    }
+
+    fn unsubscribe_all(&mut self) {
+        let subs: Vec<_> = self
+            .session
+            .subscriptions
+            .lock()
+            .expect("subscriptions")
+            .drain()
+            .collect();
+        for (interf, index) in subs {
+            if let Some(slot) = self.state.device(self.port, interf, index) {
+                slot.device.lock().expect("device").on_unsubscribe();
+            }
+        }
+    }
+}

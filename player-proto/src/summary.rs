@@ -1,0 +1,174 @@
+//! One-line human summaries of messages, for `playerdump`, `playerprint` and logs.
+
+use crate::interfaces::{
+    blobfinder::Blobfinder, camera::Camera, fiducial::Fiducial, laser::Laser, map::Map,
+    player::Player, position2d::Position2d, power::Power, ranger::Ranger, simulation::Simulation,
+    sonar::Sonar,
+};
+use crate::message::{Body, Message};
+
+fn nearest(values: impl Iterator<Item = f64>) -> String {
+    match values.filter(|v| v.is_finite()).min_by(f64::total_cmp) {
+        Some(v) => format!("min {v:.2} m"),
+        None => "no readings".into(),
+    }
+}
+
+fn pose(x: f64, y: f64, a: f64) -> String {
+    format!("({x:.3}, {y:.3}, {:.1}°)", a.to_degrees())
+}
+
+/// What a message says, in a few words: `181 ranges, min 0.42 m`.
+pub fn summarize(message: &Message) -> String {
+    match &message.body {
+        Body::Empty => "no body".into(),
+        Body::Unknown(raw) => format!("{} bytes (unknown)", raw.len()),
+        Body::Universal(u) => format!("{u:?}"),
+        Body::Player(p) => match p {
+            Player::DevList(d) => format!(
+                "{} devices: {}",
+                d.devices.len(),
+                d.devices
+                    .iter()
+                    .map(|a| format!("{}:{}", a.interf, a.index))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            ),
+            Player::DriverInfo(i) => {
+                format!("{}:{} = {}", i.addr.interf, i.addr.index, i.driver_name)
+            }
+            Player::Device(d) => format!(
+                "{}:{} access {} driver {}",
+                d.addr.interf, d.addr.index, d.access, d.driver_name
+            ),
+            Player::DataMode(m) => format!("mode {}", if m.mode == 2 { "PULL" } else { "PUSH" }),
+            Player::AddReplaceRule(r) => format!(
+                "rule interf {} index {} type {} subtype {} -> {}",
+                r.interf, r.index, r.msg_type, r.subtype, r.replace
+            ),
+            Player::SynchOverflow(n) => format!("{} messages dropped", n.value),
+            other => format!("{other:?}"),
+        },
+        Body::Laser(l) => match l {
+            Laser::Scan(s) => format!(
+                "{} ranges, {}, {} intensities",
+                s.ranges.len(),
+                nearest(s.ranges.iter().map(|&r| f64::from(r))),
+                s.intensity.len()
+            ),
+            Laser::ScanPose(s) => format!(
+                "{} ranges at {}",
+                s.scan.ranges.len(),
+                pose(s.pose.px, s.pose.py, s.pose.pa)
+            ),
+            Laser::Geometry(g) => format!(
+                "pose {} size {:.3}×{:.3}",
+                pose(g.pose.px, g.pose.py, g.pose.pyaw),
+                g.size.sl,
+                g.size.sw
+            ),
+            Laser::Config(c) | Laser::SetConfig(c) => format!(
+                "{:.1}° to {:.1}° step {:.3}°, {} m, {} Hz",
+                c.min_angle.to_degrees(),
+                c.max_angle.to_degrees(),
+                c.resolution.to_degrees(),
+                c.max_range,
+                c.scanning_frequency
+            ),
+            other => format!("{other:?}"),
+        },
+        Body::Sonar(s) => match s {
+            Sonar::Ranges(r) => format!(
+                "{} ranges, {}",
+                r.ranges.len(),
+                nearest(r.ranges.iter().map(|&r| f64::from(r)))
+            ),
+            Sonar::Geometry(g) | Sonar::GeometryData(g) => format!("{} transducers", g.poses.len()),
+            other => format!("{other:?}"),
+        },
+        Body::Ranger(r) => match r {
+            Ranger::Ranges(d) => format!(
+                "{} ranges, {}",
+                d.ranges.len(),
+                nearest(d.ranges.iter().copied())
+            ),
+            Ranger::Intensities(d) => format!("{} intensities", d.intensities.len()),
+            Ranger::Geometry(g) | Ranger::GeometryData(g) => {
+                format!("{} elements", g.element_poses.len())
+            }
+            Ranger::Config(c) | Ranger::SetConfig(c) => format!(
+                "{:.1}° to {:.1}°, {}–{} m, {} Hz",
+                c.min_angle.to_degrees(),
+                c.max_angle.to_degrees(),
+                c.min_range,
+                c.max_range,
+                c.frequency
+            ),
+            other => format!("{other:?}"),
+        },
+        Body::Position2d(p) => match p {
+            Position2d::State(s) => format!(
+                "pose {} vel ({:.2} m/s, {:.2} rad/s){}",
+                pose(s.pos.px, s.pos.py, s.pos.pa),
+                s.vel.px,
+                s.vel.pa,
+                if s.stall != 0 { " STALLED" } else { "" }
+            ),
+            Position2d::Velocity(v) => format!(
+                "vel ({:.2}, {:.2}, {:.2}) motors {}",
+                v.vel.px, v.vel.py, v.vel.pa, v.state
+            ),
+            Position2d::Position(c) => format!("go to {}", pose(c.pos.px, c.pos.py, c.pos.pa)),
+            Position2d::Geometry(g) => format!("size {:.3}×{:.3}", g.size.sl, g.size.sw),
+            other => format!("{other:?}"),
+        },
+        Body::Fiducial(f) => match f {
+            Fiducial::Scan(d) => format!(
+                "{} markers: {}",
+                d.fiducials.len(),
+                d.fiducials
+                    .iter()
+                    .map(|i| format!(
+                        "#{} at {:.2} m {:.0}°",
+                        i.id,
+                        i.range(),
+                        i.bearing().to_degrees()
+                    ))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+            other => format!("{other:?}"),
+        },
+        Body::Camera(c) => match c {
+            Camera::State(d) | Camera::Image(d) => format!(
+                "{}×{} {} bpp format {} {}, {} bytes",
+                d.width,
+                d.height,
+                d.bpp,
+                d.format,
+                if d.compression == 1 { "JPEG" } else { "raw" },
+                d.image.len()
+            ),
+            other => format!("{other:?}"),
+        },
+        Body::Simulation(s) => match s {
+            Simulation::Pose2d(p) | Simulation::SetPose2d(p) => {
+                format!("{} at {}", p.name, pose(p.pose.px, p.pose.py, p.pose.pa))
+            }
+            other => format!("{other:?}"),
+        },
+        Body::Map(Map::Tile(t)) => format!(
+            "tile {}×{} at ({}, {}), {} compressed bytes",
+            t.width,
+            t.height,
+            t.col,
+            t.row,
+            t.data.len()
+        ),
+        Body::Blobfinder(Blobfinder::Blobs(b)) => {
+            format!("{} blobs in {}×{}", b.blobs.len(), b.width, b.height)
+        }
+        Body::Power(Power::State(p)) => format!("{:.1} V, {:.0} %", p.volts, p.percent),
+        other => format!("{other:?}"),
+    }
+}

@@ -1,0 +1,18 @@
+//! The wire layer: XDR primitives, header, addresses, banner and framing.
+
+pub mod address;
+pub mod banner;
+pub mod frame;
+pub mod header;
+pub mod interface;
+pub mod strings;
+pub mod xdr;
+pub mod xdr_bytes;
+
+pub use address::{AddrParseError, DevAddr};
+pub use banner::{BANNER_LEN, Banner, BannerError};
+pub use frame::{DEFAULT_MAX_BODY, Frame, FrameDecoder, FrameError};
+pub use header::{HEADER_LEN, Header, HeaderError, MessageClass, MsgType};
+pub use interface::Interface;
+pub use strings::{Opaque, PlayerString};
+pub use xdr::{FixedBytes, Xdr, XdrElement, XdrError, XdrFault};

@@ -1,0 +1,365 @@
+//! XDR primitives exactly as Player's generated packers apply them.
+//!
+//! Player serialises every C struct member in declaration order with one standard XDR
+//! routine. The rules that matter (and that break implementations most often):
+//!
+//! * every 8- and 16-bit integer is widened to 4 bytes on the wire;
+//! * a variable array carries its count twice: the `x_count` member, then XDR's own length
+//!   prefix ([`Vec<T>`] and [`Opaque`] read and write both);
+//! * byte arrays are packed one byte per element and zero-padded to a multiple of 4
+//!   ([`Opaque`], [`PlayerString`]); all other arrays use 4 or 8 bytes per element;
+//! * fixed arrays (`double cov[6]`) carry no length at all (`[T; N]`).
+//!
+//! Decoding goes through `nom` on a borrowed body slice. The `body` handle passed alongside
+//! lets byte arrays (camera frames, map tiles) be returned as zero-copy slices of the
+//! received buffer instead of copies.
+
+use bytes::{BufMut, Bytes};
+use nom::error::{ErrorKind, ParseError};
+use nom::number::complete::{be_f32, be_f64, be_i32, be_i64, be_u32};
+
+/// The result of decoding one XDR item: the remaining input and the value.
+pub type XdrResult<'a, T> = nom::IResult<&'a [u8], T, XdrError<'a>>;
+
+/// Why an XDR item could not be decoded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum XdrFault {
+    /// The body ended before the item did.
+    Truncated,
+    /// An array's XDR length prefix is larger than the `x_count` member before it
+    /// (Player's own decoder refuses this too).
+    LengthAboveCount { count: u32, length: u32 },
+    /// An array length that cannot fit in the bytes that are left: refused before allocating.
+    LengthBeyondBody { length: u32, remaining: usize },
+    /// Any other combinator failure.
+    Malformed,
+}
+
+/// A decoding failure, carrying the input that was left when it happened so that the caller
+/// can turn it into a byte offset within the message body.
+#[derive(Debug, Clone, PartialEq)]
+pub struct XdrError<'a> {
+    /// Input remaining at the failure point.
+    pub input: &'a [u8],
+    pub fault: XdrFault,
+    /// Innermost struct field being decoded, when known (`"ranges"`).
+    pub field: Option<&'static str>,
+    /// Type that field belongs to (`"LaserScan"`).
+    pub within: Option<&'static str>,
+}
+
+impl<'a> XdrError<'a> {
+    pub fn new(input: &'a [u8], fault: XdrFault) -> Self {
+        Self {
+            input,
+            fault,
+            field: None,
+            within: None,
+        }
+    }
+
+    /// Records the innermost field and type being decoded; outer structs leave it as it is.
+    pub fn in_field(mut self, within: &'static str, field: &'static str) -> Self {
+        if self.field.is_none() {
+            self.field = Some(field);
+            self.within = Some(within);
+        }
+        self
+    }
+}
+
+impl<'a> ParseError<&'a [u8]> for XdrError<'a> {
+    fn from_error_kind(input: &'a [u8], kind: ErrorKind) -> Self {
+        let fault = match kind {
+            ErrorKind::Eof | ErrorKind::Complete => XdrFault::Truncated,
+            _ => XdrFault::Malformed,
+        };
+        Self::new(input, fault)
+    }
+
+    fn append(_: &'a [u8], _: ErrorKind, other: Self) -> Self {
+        other
+    }
+}
+
+/// Fails with `fault` at `input`.
+pub fn fail<'a, T>(input: &'a [u8], fault: XdrFault) -> XdrResult<'a, T> {
+    Err(nom::Err::Error(XdrError::new(input, fault)))
+}
+
+/// Adds field context to an error bubbling up from a struct member.
+pub fn in_field<'a>(
+    err: nom::Err<XdrError<'a>>,
+    within: &'static str,
+    field: &'static str,
+) -> nom::Err<XdrError<'a>> {
+    err.map(|e| e.in_field(within, field))
+}
+
+/// A value with a Player XDR encoding.
+pub trait Xdr: Sized {
+    /// The fewest bytes any value of this type occupies on the wire. Used to refuse an array
+    /// length before allocating for it.
+    const MIN_WIRE_SIZE: usize;
+
+    /// Decodes one value from the front of `input`. `body` is the whole message body that
+    /// `input` is a slice of, so byte arrays can be returned without copying.
+    fn decode<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, Self>;
+
+    /// Appends the wire encoding.
+    fn encode<B: BufMut>(&self, out: &mut B);
+
+    /// The exact number of bytes [`Xdr::encode`] writes.
+    fn encoded_len(&self) -> usize;
+}
+
+/// Types that may be elements of a counted XDR array (`Vec<T>`) or a fixed vector (`[T; N]`).
+///
+/// Byte types are deliberately not elements: Player packs byte arrays (see [`Opaque`]), while a
+/// `Vec<u8>` decoded element by element would take 4 bytes per byte.
+pub trait XdrElement: Xdr {
+    /// Decodes `n` consecutive elements. The default goes element by element through the
+    /// parser; primitive numbers override it with one tight loop over the raw bytes.
+    fn decode_many<'a>(
+        mut input: &'a [u8],
+        body: &Bytes,
+        n: usize,
+        out: &mut Vec<Self>,
+    ) -> XdrResult<'a, ()> {
+        for _ in 0..n {
+            let (rest, item) = Self::decode(input, body)?;
+            out.push(item);
+            input = rest;
+        }
+        Ok((input, ()))
+    }
+}
+
+/// Numbers whose wire form is their own big-endian bytes; arrays of them decode in one loop.
+macro_rules! xdr_number {
+    ($ty:ty, $size:expr, $parser:path) => {
+        impl Xdr for $ty {
+            const MIN_WIRE_SIZE: usize = $size;
+            #[inline]
+            fn decode<'a>(input: &'a [u8], _: &Bytes) -> XdrResult<'a, Self> {
+                $parser(input)
+            }
+            #[inline]
+            fn encode<B: BufMut>(&self, out: &mut B) {
+                out.put_slice(&self.to_be_bytes());
+            }
+            #[inline]
+            fn encoded_len(&self) -> usize {
+                $size
+            }
+        }
+
+        impl XdrElement for $ty {
+            #[inline]
+            fn decode_many<'a>(
+                input: &'a [u8],
+                _: &Bytes,
+                n: usize,
+                out: &mut Vec<Self>,
+            ) -> XdrResult<'a, ()> {
+                let len = n * $size;
+                if input.len() < len {
+                    return fail(input, XdrFault::Truncated);
+                }
+                let (raw, rest) = input.split_at(len);
+                out.extend(
+                    raw.chunks_exact($size)
+                        .map(|c| <$ty>::from_be_bytes(c.try_into().expect("exact chunk"))),
+                );
+                Ok((rest, ()))
+            }
+        }
+    };
+}
+
+xdr_number!(u32, 4, be_u32);
+xdr_number!(i32, 4, be_i32);
+xdr_number!(f32, 4, be_f32);
+xdr_number!(f64, 8, be_f64);
+xdr_number!(i64, 8, be_i64);
+
+/// Small integers are widened to a 4-byte XDR int. On decode Player keeps only the low bits
+/// without a range check, and so do we.
+macro_rules! xdr_widened {
+    ($ty:ty, $wide:ty, $parser:path) => {
+        impl Xdr for $ty {
+            const MIN_WIRE_SIZE: usize = 4;
+            #[inline]
+            fn decode<'a>(input: &'a [u8], _: &Bytes) -> XdrResult<'a, Self> {
+                let (rest, wide) = $parser(input)?;
+                Ok((rest, wide as $ty))
+            }
+            #[inline]
+            fn encode<B: BufMut>(&self, out: &mut B) {
+                out.put_slice(&(*self as $wide).to_be_bytes());
+            }
+            #[inline]
+            fn encoded_len(&self) -> usize {
+                4
+            }
+        }
+    };
+}
+
+xdr_widened!(u8, u32, be_u32);
+xdr_widened!(i8, i32, be_i32);
+xdr_widened!(u16, u32, be_u32);
+xdr_widened!(i16, i32, be_i32);
+// 16-bit integers are never packed, so arrays of them are ordinary XDR arrays.
+impl XdrElement for u16 {}
+impl XdrElement for i16 {}
+
+/// A counted array (`uint32_t x_count; T *x;`): the count member, XDR's length prefix, then
+/// the elements.
+impl<T: XdrElement> Xdr for Vec<T> {
+    const MIN_WIRE_SIZE: usize = 8;
+
+    fn decode<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, Self> {
+        let (after_count, count) = be_u32(input)?;
+        let (rest, length) = be_u32(after_count)?;
+        if length > count {
+            return fail(after_count, XdrFault::LengthAboveCount { count, length });
+        }
+        let n = length as usize;
+        if n.saturating_mul(T::MIN_WIRE_SIZE.max(1)) > rest.len() {
+            return fail(
+                after_count,
+                XdrFault::LengthBeyondBody {
+                    length,
+                    remaining: rest.len(),
+                },
+            );
+        }
+        let mut items = Vec::with_capacity(n);
+        let (rest, ()) = T::decode_many(rest, body, n, &mut items)?;
+        Ok((rest, items))
+    }
+
+    fn encode<B: BufMut>(&self, out: &mut B) {
+        let n = u32::try_from(self.len()).expect("array longer than u32::MAX");
+        out.put_u32(n);
+        out.put_u32(n);
+        for item in self {
+            item.encode(out);
+        }
+    }
+
+    fn encoded_len(&self) -> usize {
+        8 + self.iter().map(Xdr::encoded_len).sum::<usize>()
+    }
+}
+
+/// A fixed vector (`double cov[6]`): exactly `N` elements and no length prefix.
+impl<T: XdrElement + Default + Copy, const N: usize> Xdr for [T; N] {
+    const MIN_WIRE_SIZE: usize = N * T::MIN_WIRE_SIZE;
+
+    fn decode<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, Self> {
+        let mut items = Vec::with_capacity(N);
+        let (rest, ()) = T::decode_many(input, body, N, &mut items)?;
+        let mut array = [T::default(); N];
+        array.copy_from_slice(&items);
+        Ok((rest, array))
+    }
+
+    fn encode<B: BufMut>(&self, out: &mut B) {
+        for item in self {
+            item.encode(out);
+        }
+    }
+
+    fn encoded_len(&self) -> usize {
+        self.iter().map(Xdr::encoded_len).sum()
+    }
+}
+
+pub use super::xdr_bytes::{
+    FixedBytes, decode_counted_bytes, decode_packed_bytes, encode_counted_bytes,
+    encode_packed_bytes, pad4,
+};
+
+/// Decodes a whole value from `body` and checks nothing was left over.
+///
+/// Player itself skips trailing bytes silently; we report how many there were so the caller
+/// can log them.
+pub fn decode_all<T: Xdr>(body: &Bytes) -> Result<(T, usize), XdrError<'_>> {
+    match T::decode(body, body) {
+        Ok((rest, value)) => Ok((value, rest.len())),
+        Err(nom::Err::Error(e) | nom::Err::Failure(e)) => Err(e),
+        Err(nom::Err::Incomplete(_)) => {
+            Err(XdrError::new(&body[body.len()..], XdrFault::Truncated))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::wire::Opaque;
+
+    fn encode<T: Xdr>(value: &T) -> Vec<u8> {
+        let mut out = Vec::new();
+        value.encode(&mut out);
+        assert_eq!(out.len(), value.encoded_len());
+        out
+    }
+
+    #[test]
+    fn small_integers_are_widened() {
+        assert_eq!(encode(&7u8), [0, 0, 0, 7]);
+        assert_eq!(encode(&-1i8), [0xff; 4]);
+        assert_eq!(encode(&0x1234u16), [0, 0, 0x12, 0x34]);
+        let body = Bytes::from_static(&[0, 0, 1, 7]);
+        // Player keeps the low 8 bits without complaint.
+        assert_eq!(u8::decode(&body, &body).unwrap().1, 7);
+    }
+
+    #[test]
+    fn counted_array_repeats_its_count() {
+        assert_eq!(
+            encode(&vec![1.0f32, 2.5]),
+            [0, 0, 0, 2, 0, 0, 0, 2, 0x3f, 0x80, 0, 0, 0x40, 0x20, 0, 0]
+        );
+    }
+
+    #[test]
+    fn byte_arrays_are_packed_and_padded() {
+        let encoded = encode(&Opaque(Bytes::from_static(&[1, 0xff])));
+        assert_eq!(encoded, [0, 0, 0, 2, 0, 0, 0, 2, 1, 0xff, 0, 0]);
+        let body = Bytes::from(encoded);
+        let (rest, back) = Opaque::decode(&body, &body).unwrap();
+        assert!(rest.is_empty());
+        assert_eq!(&back.0[..], &[1, 0xff]);
+    }
+
+    #[test]
+    fn lying_length_is_refused_before_allocating() {
+        // count and length both claim 2^30 floats, but only 4 bytes follow.
+        let body = Bytes::from_static(&[0x40, 0, 0, 0, 0x40, 0, 0, 0, 0, 0, 0, 0]);
+        let err = decode_all::<Vec<f32>>(&body).unwrap_err();
+        assert!(matches!(err.fault, XdrFault::LengthBeyondBody { .. }));
+    }
+
+    #[test]
+    fn length_above_count_is_refused() {
+        let body = Bytes::from_static(&[0, 0, 0, 1, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0]);
+        let err = decode_all::<Vec<u32>>(&body).unwrap_err();
+        assert_eq!(
+            err.fault,
+            XdrFault::LengthAboveCount {
+                count: 1,
+                length: 2
+            }
+        );
+    }
+
+    #[test]
+    fn fixed_vectors_have_no_prefix() {
+        assert_eq!(encode(&[1i32, 2]), [0, 0, 0, 1, 0, 0, 0, 2]);
+        assert_eq!(encode(&FixedBytes(*b"ab")), [b'a', b'b', 0, 0]);
+    }
+}

@@ -1,0 +1,306 @@
+//! The simulated devices as a Player server presents them: requests answered from the world
+//! (geometry, configuration, model poses), commands given to the robots, and each step's data.
+
+use std::sync::{Arc, Mutex};
+
+use player_proto::interfaces::common::{BBox2d, BBox3d, Pose2d, Pose3d};
+use player_proto::interfaces::fiducial::{
+    Fiducial, FiducialData, FiducialFov, FiducialGeometry, FiducialItem,
+};
+use player_proto::interfaces::laser::{Laser, LaserConfig, LaserGeometry, LaserScan};
+use player_proto::interfaces::position2d::{Position2d, Position2dData, Position2dGeometry};
+use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry, RangerRanges};
+use player_proto::interfaces::simulation::{Simulation as SimMsg, SimulationPose2d};
+use player_proto::interfaces::sonar::{Sonar, SonarData, SonarGeometry};
+use player_proto::message::{Body, Message};
+use player_proto::server::{Device, Reply};
+
+use crate::served::{ServedDevice, Source};
+use crate::sim::{Command, Simulation, fiducials, ranger_scan};
+use crate::world::{Pose, RangerSpec, SensorSpec};
+
+/// A served device, backed by the shared simulation.
+pub struct SimDevice {
+    pub sim: Arc<Mutex<Simulation>>,
+    pub served: ServedDevice,
+}
+
+fn pose3(p: Pose, z: f64) -> Pose3d {
+    Pose3d {
+        px: p.x,
+        py: p.y,
+        pz: z,
+        pyaw: p.a,
+        ..Pose3d::default()
+    }
+}
+
+fn laser_sensor(ranger: &RangerSpec) -> &SensorSpec {
+    &ranger.sensors[0]
+}
+
+/// A ranger's configuration, with the beam spacing the readings really have.
+fn ranger_config(ranger: &RangerSpec) -> RangerConfig {
+    let s = laser_sensor(ranger);
+    let n = s.samples.max(1);
+    RangerConfig {
+        min_angle: -s.fov / 2.0,
+        max_angle: s.fov / 2.0,
+        angular_res: if n > 1 { s.fov / (n - 1) as f64 } else { s.fov },
+        min_range: s.min_range,
+        max_range: s.max_range,
+        range_res: 0.01,
+        frequency: 10.0,
+    }
+}
+
+impl SimDevice {
+    fn answer(&self, request: &Message) -> Reply {
+        let mut sim = self.sim.lock().expect("simulation");
+        let subtype = request.header.subtype;
+        match self.served.source {
+            Source::Position { robot } => {
+                let spec = &sim.world.robots[robot];
+                match subtype {
+                    1 => Reply::Ack(Body::Position2d(Position2d::Geometry(Position2dGeometry {
+                        pose: Pose3d::default(),
+                        size: BBox3d {
+                            sl: spec.size[0],
+                            sw: spec.size[1],
+                            sh: spec.size[2],
+                        },
+                    }))),
+                    // Motor power, velocity and position modes: accepted, nothing to change.
+                    2..=4 => Reply::Ack(Body::Empty),
+                    _ => Reply::Nack,
+                }
+            }
+            Source::Ranger { robot, ranger } => {
+                let spec = &sim.world.robots[robot].rangers[ranger];
+                match subtype {
+                    1 => Reply::Ack(Body::Ranger(Ranger::Geometry(RangerGeometry {
+                        pose: pose3(spec.pose, 0.0),
+                        size: BBox3d {
+                            sw: 0.15,
+                            sl: 0.15,
+                            sh: 0.1,
+                        },
+                        element_poses: spec.sensors.iter().map(|s| pose3(s.pose, 0.0)).collect(),
+                        element_sizes: spec.sensors.iter().map(|_| BBox3d::default()).collect(),
+                    }))),
+                    5 => Reply::Ack(Body::Ranger(Ranger::Config(ranger_config(spec)))),
+                    _ => Reply::Nack,
+                }
+            }
+            Source::Laser { robot, ranger } => {
+                let spec = &sim.world.robots[robot].rangers[ranger];
+                let c = ranger_config(spec);
+                match subtype {
+                    1 => Reply::Ack(Body::Laser(Laser::Geometry(LaserGeometry {
+                        pose: pose3(spec.pose, 0.0),
+                        size: BBox3d {
+                            sw: 0.15,
+                            sl: 0.15,
+                            sh: 0.1,
+                        },
+                    }))),
+                    3 => Reply::Ack(Body::Laser(Laser::Config(LaserConfig {
+                        min_angle: c.min_angle as f32,
+                        max_angle: c.max_angle as f32,
+                        resolution: c.angular_res as f32,
+                        max_range: c.max_range as f32,
+                        range_res: c.range_res as f32,
+                        intensity: 0,
+                        scanning_frequency: c.frequency as f32,
+                    }))),
+                    _ => Reply::Nack,
+                }
+            }
+            Source::Sonar { robot, ranger } => {
+                let spec = &sim.world.robots[robot].rangers[ranger];
+                match subtype {
+                    1 => {
+                        let on_robot = |s: &SensorSpec| crate::sim::on_robot(spec.pose, s.pose);
+                        let poses = spec
+                            .sensors
+                            .iter()
+                            .map(|s| pose3(on_robot(s), 0.0))
+                            .collect();
+                        Reply::Ack(Body::Sonar(Sonar::Geometry(SonarGeometry { poses })))
+                    }
+                    _ => Reply::Nack,
+                }
+            }
+            Source::Fiducial { robot, finder } => {
+                let spec = &sim.world.robots[robot].fiducials[finder];
+                match subtype {
+                    1 => Reply::Ack(Body::Fiducial(Fiducial::Geometry(FiducialGeometry {
+                        pose: pose3(spec.pose, 0.0),
+                        size: BBox3d {
+                            sw: 0.05,
+                            sl: 0.05,
+                            sh: 0.05,
+                        },
+                        fiducial_size: BBox2d { sw: 0.4, sl: 0.4 },
+                    }))),
+                    2 => Reply::Ack(Body::Fiducial(Fiducial::Fov(FiducialFov {
+                        min_range: spec.min_range as f32,
+                        max_range: spec.max_range as f32,
+                        view_angle: spec.fov as f32,
+                    }))),
+                    _ => Reply::Nack,
+                }
+            }
+            Source::Simulation => match &request.body {
+                Body::Simulation(SimMsg::Pose2d(asked)) => {
+                    let name = asked.name.as_str();
+                    let pose = match sim.robot_index(&name) {
+                        Some(i) => Some(sim.robots[i].pose),
+                        None => sim
+                            .world
+                            .obstacles
+                            .iter()
+                            .find(|o| o.name == name)
+                            .map(|o| o.pose),
+                    };
+                    match pose {
+                        Some(p) => Reply::Ack(Body::Simulation(SimMsg::Pose2d(SimulationPose2d {
+                            name: asked.name.clone(),
+                            pose: Pose2d::new(p.x, p.y, p.a),
+                        }))),
+                        None => Reply::Nack,
+                    }
+                }
+                Body::Simulation(SimMsg::SetPose2d(set)) => {
+                    let name = set.name.as_str();
+                    let pose = Pose {
+                        x: set.pose.px,
+                        y: set.pose.py,
+                        a: set.pose.pa,
+                    };
+                    if let Some(i) = sim.robot_index(&name) {
+                        sim.robots[i].pose = pose;
+                        Reply::Ack(Body::Empty)
+                    } else if let Some(o) = sim.world.obstacles.iter_mut().find(|o| o.name == name)
+                    {
+                        o.pose = pose;
+                        Reply::Ack(Body::Empty)
+                    } else {
+                        Reply::Nack
+                    }
+                }
+                _ => Reply::Nack,
+            },
+        }
+    }
+
+    /// This step's data message (subtype, body), if the device publishes any.
+    pub fn data(sim: &Simulation, source: Source, scan_id: u32) -> Option<(u8, Body)> {
+        Some(match source {
+            Source::Simulation => return None,
+            Source::Position { robot } => {
+                let r = &sim.robots[robot];
+                let (vx, vy, va) = r.velocity;
+                (
+                    1,
+                    Body::Position2d(Position2d::State(Position2dData {
+                        pos: Pose2d::new(r.pose.x, r.pose.y, r.pose.a),
+                        vel: Pose2d::new(vx, vy, va),
+                        stall: u8::from(r.stall),
+                    })),
+                )
+            }
+            Source::Ranger { robot, ranger } => {
+                let ranges = ranger_scan(sim, robot, &sim.world.robots[robot].rangers[ranger]);
+                (1, Body::Ranger(Ranger::Ranges(RangerRanges { ranges })))
+            }
+            Source::Laser { robot, ranger } => {
+                let spec = &sim.world.robots[robot].rangers[ranger];
+                let c = ranger_config(spec);
+                let ranges = ranger_scan(sim, robot, spec)
+                    .into_iter()
+                    .map(|r| r as f32)
+                    .collect();
+                (
+                    1,
+                    Body::Laser(Laser::Scan(LaserScan {
+                        min_angle: c.min_angle as f32,
+                        max_angle: c.max_angle as f32,
+                        resolution: c.angular_res as f32,
+                        max_range: c.max_range as f32,
+                        ranges,
+                        intensity: Default::default(),
+                        id: scan_id,
+                    })),
+                )
+            }
+            Source::Sonar { robot, ranger } => {
+                let ranges = ranger_scan(sim, robot, &sim.world.robots[robot].rangers[ranger])
+                    .into_iter()
+                    .map(|r| r as f32)
+                    .collect();
+                (1, Body::Sonar(Sonar::Ranges(SonarData { ranges })))
+            }
+            Source::Fiducial { robot, finder } => {
+                let hits = fiducials(sim, robot, &sim.world.robots[robot].fiducials[finder]);
+                let items = hits
+                    .into_iter()
+                    .map(|h| FiducialItem {
+                        id: h.id,
+                        pose: Pose3d {
+                            px: h.x,
+                            py: h.y,
+                            pyaw: h.yaw,
+                            ..Pose3d::default()
+                        },
+                        upose: Pose3d::default(),
+                    })
+                    .collect();
+                (
+                    1,
+                    Body::Fiducial(Fiducial::Scan(FiducialData { fiducials: items })),
+                )
+            }
+        })
+    }
+}
+
+impl Device for SimDevice {
+    fn driver_name(&self) -> &str {
+        &self.served.driver
+    }
+
+    fn on_command(&mut self, command: &Message) {
+        let Source::Position { robot } = self.served.source else {
+            return;
+        };
+        let mut sim = self.sim.lock().expect("simulation");
+        let command = match &command.body {
+            Body::Position2d(Position2d::Velocity(v)) if v.state != 0 => Command::Velocity {
+                vx: v.vel.px,
+                vy: v.vel.py,
+                va: v.vel.pa,
+            },
+            Body::Position2d(Position2d::Velocity(_)) => Command::Velocity {
+                vx: 0.0,
+                vy: 0.0,
+                va: 0.0,
+            },
+            Body::Position2d(Position2d::Position(p)) => Command::GoTo {
+                target: Pose {
+                    x: p.pos.px,
+                    y: p.pos.py,
+                    a: p.pos.pa,
+                },
+                speed: if p.vel.px > 0.0 { p.vel.px } else { 0.5 },
+                turn: if p.vel.pa > 0.0 { p.vel.pa } else { 1.0 },
+            },
+            _ => return,
+        };
+        sim.robots[robot].command = command;
+    }
+
+    fn on_request(&mut self, request: &Message) -> Reply {
+        self.answer(request)
+    }
+}

@@ -1,0 +1,282 @@
+//! Which devices each robot exposes on which port: read from the Player .cfg that runs the
+//! world (`driver ( name "stage" provides [ "6665:position2d:0" … ] model "r0" )`,
+//! `rangertolaser` for a laser), or, without one, one port per robot in world order.
+
+use std::path::Path;
+
+use player_proto::wire::{DevAddr, Interface};
+
+use crate::world::World;
+use crate::worldfile::{Item, Value, WorldFileError, parse_text};
+
+/// Where a served device's data comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Source {
+    Simulation,
+    Position {
+        robot: usize,
+    },
+    Ranger {
+        robot: usize,
+        ranger: usize,
+    },
+    /// A one-sensor ranger seen through Player's `rangertolaser`.
+    Laser {
+        robot: usize,
+        ranger: usize,
+    },
+    /// A sonar ring seen as a `sonar` device.
+    Sonar {
+        robot: usize,
+        ranger: usize,
+    },
+    Fiducial {
+        robot: usize,
+        finder: usize,
+    },
+}
+
+/// A device to serve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ServedDevice {
+    pub port: u16,
+    pub interf: Interface,
+    pub index: u16,
+    /// What DRIVERINFO reports.
+    pub driver: String,
+    pub source: Source,
+}
+
+impl ServedDevice {
+    pub fn addr(&self) -> DevAddr {
+        DevAddr {
+            host: 0,
+            robot: u32::from(self.port),
+            interf: self.interf,
+            index: self.index,
+        }
+    }
+}
+
+const DEFAULT_PORT: u16 = 6665;
+
+fn parse_addr(text: &str) -> Option<(u16, Interface, u16)> {
+    let addr: DevAddr = text.parse().ok()?;
+    let port = if addr.robot == 0 {
+        DEFAULT_PORT
+    } else {
+        u16::try_from(addr.robot).ok()?
+    };
+    Some((port, addr.interf, addr.index))
+}
+
+fn strings(value: Option<&Value>) -> Vec<String> {
+    match value {
+        Some(Value::List(items)) => items
+            .iter()
+            .filter_map(|v| v.as_str().map(str::to_string))
+            .collect(),
+        Some(v) => v.as_str().map(|s| vec![s.to_string()]).unwrap_or_default(),
+        None => Vec::new(),
+    }
+}
+
+/// Reads a .cfg against its world. Drivers the simulator does not provide are reported in
+/// `ignored`.
+pub fn from_cfg(
+    path: &Path,
+    world: &World,
+    ignored: &mut Vec<String>,
+) -> Result<Vec<ServedDevice>, WorldFileError> {
+    let name = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| WorldFileError::at(&name, 1, 1, format!("cannot read: {e}")))?;
+    let mut served: Vec<ServedDevice> = Vec::new();
+    for item in parse_text(&text, &name)? {
+        let Item::Block(block) = item else { continue };
+        if block.kind != "driver" {
+            ignored.push(format!(
+                "ignored: {} at {}:{}",
+                block.kind, block.pos.file, block.pos.line
+            ));
+            continue;
+        }
+        let driver = block
+            .get("name")
+            .and_then(|p| p.value.as_str())
+            .unwrap_or("")
+            .to_string();
+        let provides = strings(block.get("provides").map(|p| &p.value));
+        let requires = strings(block.get("requires").map(|p| &p.value));
+        let report_as = block
+            .get("report_as")
+            .and_then(|p| p.value.as_str())
+            .map(str::to_string);
+        let at = |message: String| {
+            WorldFileError::at(&block.pos.file, block.pos.line, block.pos.col, message)
+        };
+        let mut counts = [0usize; 3];
+        for text in &provides {
+            let (port, interf, index) =
+                parse_addr(text).ok_or_else(|| at(format!("bad device address {text:?}")))?;
+            let source = match (driver.as_str(), interf) {
+                ("stage", Interface::SIMULATION) => Source::Simulation,
+                ("stage", _) => {
+                    let model = block
+                        .get("model")
+                        .and_then(|p| p.value.as_str())
+                        .ok_or_else(|| {
+                            at(format!("stage driver providing {text} needs a model"))
+                        })?;
+                    let robot = world
+                        .robots
+                        .iter()
+                        .position(|r| r.name == model)
+                        .ok_or_else(|| at(format!("no robot {model:?} in the world")))?;
+                    match interf {
+                        Interface::POSITION2D => Source::Position { robot },
+                        Interface::RANGER => {
+                            counts[0] += 1;
+                            let ranger = counts[0] - 1;
+                            if ranger >= world.robots[robot].rangers.len() {
+                                return Err(at(format!(
+                                    "{model} has only {} rangers",
+                                    world.robots[robot].rangers.len()
+                                )));
+                            }
+                            Source::Ranger { robot, ranger }
+                        }
+                        Interface::FIDUCIAL => {
+                            counts[1] += 1;
+                            Source::Fiducial {
+                                robot,
+                                finder: counts[1] - 1,
+                            }
+                        }
+                        other => {
+                            ignored.push(format!(
+                                "ignored: {other} of {model} (not simulated yet) at {}:{}",
+                                block.pos.file, block.pos.line
+                            ));
+                            continue;
+                        }
+                    }
+                }
+                ("rangertolaser" | "rangertosonar", _) => {
+                    let required =
+                        requires
+                            .first()
+                            .and_then(|r| parse_addr(r))
+                            .ok_or_else(|| {
+                                at(format!("{driver} needs requires [ \"port:ranger:N\" ]"))
+                            })?;
+                    let from = served
+                        .iter()
+                        .find(|d| (d.port, d.interf, d.index) == required)
+                        .ok_or_else(|| {
+                            at(format!(
+                                "{driver} requires a ranger no driver provides before it"
+                            ))
+                        })?;
+                    let Source::Ranger { robot, ranger } = from.source else {
+                        return Err(at(format!("{driver} must require a ranger")));
+                    };
+                    if driver == "rangertolaser" {
+                        Source::Laser { robot, ranger }
+                    } else {
+                        Source::Sonar { robot, ranger }
+                    }
+                }
+                _ => {
+                    ignored.push(format!(
+                        "ignored: driver {driver:?} at {}:{}",
+                        block.pos.file, block.pos.line
+                    ));
+                    continue;
+                }
+            };
+            served.push(ServedDevice {
+                port,
+                interf,
+                index,
+                driver: report_as.clone().unwrap_or_else(|| driver.clone()),
+                source,
+            });
+        }
+    }
+    Ok(served)
+}
+
+/// Without a .cfg: robot i on `base + i` with all its devices; the simulation on `base`.
+pub fn default_devices(world: &World, base: u16) -> Vec<ServedDevice> {
+    let mut served = vec![ServedDevice {
+        port: base,
+        interf: Interface::SIMULATION,
+        index: 0,
+        driver: "stage".into(),
+        source: Source::Simulation,
+    }];
+    for (robot, spec) in world.robots.iter().enumerate() {
+        let port = base.saturating_add(u16::try_from(robot).unwrap_or(u16::MAX));
+        let mut add = |interf, index: usize, driver: &str, source| {
+            served.push(ServedDevice {
+                port,
+                interf,
+                index: index as u16,
+                driver: driver.into(),
+                source,
+            });
+        };
+        add(
+            Interface::POSITION2D,
+            0,
+            "stage",
+            Source::Position { robot },
+        );
+        let (mut lasers, mut sonars) = (0, 0);
+        for (ranger, r) in spec.rangers.iter().enumerate() {
+            add(
+                Interface::RANGER,
+                ranger,
+                "stage",
+                Source::Ranger { robot, ranger },
+            );
+            if r.is_laser_like() {
+                add(
+                    Interface::LASER,
+                    lasers,
+                    "rangertolaser",
+                    Source::Laser { robot, ranger },
+                );
+                lasers += 1;
+            } else {
+                add(
+                    Interface::SONAR,
+                    sonars,
+                    "rangertosonar",
+                    Source::Sonar { robot, ranger },
+                );
+                sonars += 1;
+            }
+        }
+        for finder in 0..spec.fiducials.len() {
+            add(
+                Interface::FIDUCIAL,
+                finder,
+                "stage",
+                Source::Fiducial { robot, finder },
+            );
+        }
+    }
+    served
+}
+
+/// Moves every port so that the lowest becomes `base`.
+pub fn shift_ports(devices: &mut [ServedDevice], base: u16) {
+    let Some(lowest) = devices.iter().map(|d| d.port).min() else {
+        return;
+    };
+    for d in devices {
+        d.port = base.saturating_add(d.port - lowest);
+    }
+}

@@ -1,0 +1,181 @@
+//! The simulation: fixed steps, robots driven by velocity or position commands, collisions
+//! that stop a robot and set its stall flag, and sensors by ray casting. Deterministic: the
+//! same world and commands give the same trajectory.
+
+mod geometry;
+mod sensors;
+
+pub use geometry::GroundBox;
+pub use sensors::{FiducialHit, fiducials, on_robot, ranger_scan};
+
+use crate::world::{Drive, Pose, World};
+
+/// What a robot is told to do.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Command {
+    /// Velocity in the robot frame: forward m/s, sideways m/s (omni only), turn rad/s.
+    Velocity { vx: f64, vy: f64, va: f64 },
+    /// Go to this pose (position mode) at most at these speeds.
+    GoTo { target: Pose, speed: f64, turn: f64 },
+}
+
+/// A robot's moving state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RobotState {
+    pub pose: Pose,
+    /// Actual velocity over the last step (robot frame).
+    pub velocity: (f64, f64, f64),
+    pub stall: bool,
+    pub command: Command,
+}
+
+/// The simulated world in motion.
+#[derive(Debug, Clone)]
+pub struct Simulation {
+    pub world: World,
+    pub robots: Vec<RobotState>,
+    /// Simulated seconds since the start.
+    pub time: f64,
+    pub steps: u64,
+}
+
+const STOP: Command = Command::Velocity {
+    vx: 0.0,
+    vy: 0.0,
+    va: 0.0,
+};
+
+impl Simulation {
+    pub fn new(world: World) -> Simulation {
+        let robots = world
+            .robots
+            .iter()
+            .map(|r| RobotState {
+                pose: r.pose,
+                velocity: (0.0, 0.0, 0.0),
+                stall: false,
+                command: STOP,
+            })
+            .collect();
+        Simulation {
+            world,
+            robots,
+            time: 0.0,
+            steps: 0,
+        }
+    }
+
+    /// The robot named `name`.
+    pub fn robot_index(&self, name: &str) -> Option<usize> {
+        self.world.robots.iter().position(|r| r.name == name)
+    }
+
+    /// Robot `i`'s footprint at `pose`.
+    pub fn footprint(&self, i: usize, pose: Pose) -> GroundBox {
+        let spec = &self.world.robots[i];
+        GroundBox {
+            pose,
+            length: spec.size[0],
+            width: spec.size[1],
+        }
+    }
+
+    /// Every solid thing but robot `except`, as boxes.
+    pub fn boxes_except(&self, except: Option<usize>) -> impl Iterator<Item = GroundBox> + '_ {
+        let robots = self
+            .robots
+            .iter()
+            .enumerate()
+            .filter(move |(i, _)| Some(*i) != except)
+            .map(|(i, r)| self.footprint(i, r.pose));
+        let obstacles = self.world.obstacles.iter().map(|o| GroundBox {
+            pose: o.pose,
+            length: o.size[0],
+            width: o.size[1],
+        });
+        robots.chain(obstacles)
+    }
+
+    fn collides(&self, i: usize, pose: Pose) -> bool {
+        let me = self.footprint(i, pose);
+        if let Some(floor) = &self.world.floor
+            && me.outline().iter().any(|&(x, y)| floor.occupied_at(x, y))
+        {
+            return true;
+        }
+        self.boxes_except(Some(i)).any(|b| b.overlaps(&me))
+    }
+
+    /// Advances the world by one step of `world.interval` seconds.
+    pub fn step(&mut self) {
+        let dt = self.world.interval;
+        for i in 0..self.robots.len() {
+            let (vx, vy, va) = self.velocity_for(i);
+            let vy = if self.world.robots[i].drive == Drive::Omni {
+                vy
+            } else {
+                0.0
+            };
+            let p = self.robots[i].pose;
+            let (s, c) = p.a.sin_cos();
+            let next = Pose {
+                x: p.x + (c * vx - s * vy) * dt,
+                y: p.y + (s * vx + c * vy) * dt,
+                a: wrap(p.a + va * dt),
+            };
+            let moving = vx != 0.0 || vy != 0.0 || va != 0.0;
+            if moving && self.collides(i, next) {
+                self.robots[i].stall = true;
+                self.robots[i].velocity = (0.0, 0.0, 0.0);
+            } else {
+                self.robots[i].stall = false;
+                self.robots[i].pose = next;
+                self.robots[i].velocity = (vx, vy, va);
+            }
+        }
+        self.time += dt;
+        self.steps += 1;
+    }
+
+    /// The velocity robot `i` drives at this step.
+    fn velocity_for(&mut self, i: usize) -> (f64, f64, f64) {
+        match self.robots[i].command {
+            Command::Velocity { vx, vy, va } => (vx, vy, va),
+            Command::GoTo {
+                target,
+                speed,
+                turn,
+            } => {
+                let p = self.robots[i].pose;
+                let (dx, dy) = (target.x - p.x, target.y - p.y);
+                let distance = dx.hypot(dy);
+                if distance < 0.02 {
+                    let error = wrap(target.a - p.a);
+                    if error.abs() < 0.01 {
+                        self.robots[i].command = STOP;
+                        return (0.0, 0.0, 0.0);
+                    }
+                    return (0.0, 0.0, (error / self.world.interval).clamp(-turn, turn));
+                }
+                let error = wrap(dy.atan2(dx) - p.a);
+                let va = (error / self.world.interval).clamp(-turn, turn);
+                let vx = if error.abs() < 0.3 {
+                    (distance / self.world.interval).min(speed)
+                } else {
+                    0.0
+                };
+                (vx, 0.0, va)
+            }
+        }
+    }
+}
+
+/// An angle in (-π, π].
+pub fn wrap(a: f64) -> f64 {
+    let w = (a + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI;
+    if w <= -std::f64::consts::PI {
+        w + std::f64::consts::TAU
+    } else {
+        w
+    }
+}

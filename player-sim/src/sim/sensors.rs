@@ -1,0 +1,123 @@
+//! Sensors by ray casting: a ranger's beams against the floorplan, the boxes and the other
+//! robots; fiducial markers within range, field of view and line of sight.
+
+use super::{Simulation, wrap};
+use crate::world::{FiducialSpec, Pose, RangerSpec};
+
+/// `pose` (on the robot) composed with the robot's pose.
+pub fn on_robot(robot: Pose, local: Pose) -> Pose {
+    let (s, c) = robot.a.sin_cos();
+    Pose {
+        x: robot.x + c * local.x - s * local.y,
+        y: robot.y + s * local.x + c * local.y,
+        a: wrap(robot.a + local.a),
+    }
+}
+
+/// Distance to the nearest thing along a ray from robot `from`'s sensor, up to `max`.
+fn cast(sim: &Simulation, from: usize, x: f64, y: f64, angle: f64, max: f64) -> Option<f64> {
+    let floor = sim
+        .world
+        .floor
+        .as_ref()
+        .and_then(|g| g.raycast(x, y, angle, max));
+    let things = sim
+        .boxes_except(Some(from))
+        .filter_map(|b| b.raycast(x, y, angle));
+    floor
+        .into_iter()
+        .chain(things)
+        .filter(|&d| d <= max)
+        .min_by(f64::total_cmp)
+}
+
+/// The readings of robot `robot`'s ranger: for a one-sensor ranger, its samples spread evenly
+/// over the field of view (first at -fov/2); for a ring, one reading per sensor. A beam that
+/// hits nothing reads the maximum range.
+pub fn ranger_scan(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Vec<f64> {
+    let base = on_robot(sim.robots[robot].pose, ranger.pose);
+    let mut out = Vec::new();
+    for sensor in &ranger.sensors {
+        let origin = on_robot(base, sensor.pose);
+        let n = sensor.samples.max(1);
+        let step = if n > 1 {
+            sensor.fov / (n - 1) as f64
+        } else {
+            0.0
+        };
+        let first = if n > 1 { -sensor.fov / 2.0 } else { 0.0 };
+        for i in 0..n {
+            let angle = origin.a + first + i as f64 * step;
+            let range = cast(sim, robot, origin.x, origin.y, angle, sensor.max_range)
+                .unwrap_or(sensor.max_range);
+            out.push(range.max(sensor.min_range));
+        }
+    }
+    out
+}
+
+/// A marker a fiducial finder sees.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FiducialHit {
+    /// 0 beyond the finder's id range.
+    pub id: i32,
+    /// In the finder's frame.
+    pub x: f64,
+    pub y: f64,
+    pub yaw: f64,
+}
+
+impl FiducialHit {
+    pub fn range(&self) -> f64 {
+        self.x.hypot(self.y)
+    }
+
+    pub fn bearing(&self) -> f64 {
+        self.y.atan2(self.x)
+    }
+}
+
+/// Markers (robots and boxes with a fiducial id) robot `robot`'s finder sees.
+pub fn fiducials(sim: &Simulation, robot: usize, finder: &FiducialSpec) -> Vec<FiducialHit> {
+    let at = on_robot(sim.robots[robot].pose, finder.pose);
+    let robots = sim
+        .world
+        .robots
+        .iter()
+        .zip(&sim.robots)
+        .enumerate()
+        .filter(|(i, _)| *i != robot)
+        .filter_map(|(_, (spec, state))| spec.fiducial_id.map(|id| (id, state.pose)));
+    let boxes = sim
+        .world
+        .obstacles
+        .iter()
+        .filter_map(|o| o.fiducial_id.map(|id| (id, o.pose)));
+    let mut hits = Vec::new();
+    for (id, pose) in robots.chain(boxes) {
+        let (dx, dy) = (pose.x - at.x, pose.y - at.y);
+        let range = dx.hypot(dy);
+        let bearing = wrap(dy.atan2(dx) - at.a);
+        if range < finder.min_range || range > finder.max_range || bearing.abs() > finder.fov / 2.0
+        {
+            continue;
+        }
+        // Line of sight: nothing nearer than the marker's own box along the way.
+        let blocked = sim
+            .world
+            .floor
+            .as_ref()
+            .and_then(|g| g.raycast(at.x, at.y, dy.atan2(dx), range))
+            .is_some_and(|d| d < range - 0.3);
+        if blocked {
+            continue;
+        }
+        hits.push(FiducialHit {
+            id: if range <= finder.max_range_id { id } else { 0 },
+            x: range * bearing.cos(),
+            y: range * bearing.sin(),
+            yaw: wrap(pose.a - at.a),
+        });
+    }
+    hits
+}

@@ -1,0 +1,162 @@
+//! From syntax to models: includes read (relative to the including file, loops refused),
+//! `define`d types expanded with inheritance (the base's properties and children first, then
+//! the define's, then the instance's, later ones winning).
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use crate::worldfile::{Block, Item, Pos, Property, WorldFileError, parse_text};
+
+/// Model types Stage itself provides; everything else must be `define`d.
+pub const BUILTIN: &[&str] = &[
+    "model",
+    "position",
+    "ranger",
+    "fiducial",
+    "camera",
+    "blobfinder",
+    "gripper",
+    "actuator",
+    "blinkenlight",
+];
+
+/// A model with its type expanded: `kind` is the builtin type at the root of its `define`s.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Model {
+    /// The builtin type (`position`, `ranger`, …).
+    pub kind: String,
+    /// The type as written (`pioneer2dx`).
+    pub declared: String,
+    pub properties: Vec<Property>,
+    /// Nested models (sensors on a robot).
+    pub children: Vec<Model>,
+    /// Nested non-model blocks (`sensor(...)`, `block(...)`).
+    pub parts: Vec<Block>,
+    pub pos: Pos,
+}
+
+impl Model {
+    pub fn get(&self, name: &str) -> Option<&Property> {
+        self.properties.iter().rev().find(|p| p.name == name)
+    }
+}
+
+/// Every item of a world file and its includes, in order.
+pub fn read_with_includes(path: &Path) -> Result<Vec<Item>, WorldFileError> {
+    let mut chain = Vec::new();
+    read(path, &mut chain, None)
+}
+
+fn read(
+    path: &Path,
+    chain: &mut Vec<PathBuf>,
+    from: Option<&Pos>,
+) -> Result<Vec<Item>, WorldFileError> {
+    let name = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| match from {
+        Some(pos) => WorldFileError::at(
+            &pos.file,
+            pos.line,
+            pos.col,
+            format!("cannot include {name}: {e}"),
+        ),
+        None => WorldFileError::at(&name, 1, 1, format!("cannot read: {e}")),
+    })?;
+    let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+    if chain.contains(&key) {
+        let pos = from.expect("only an include can loop");
+        return Err(WorldFileError::at(
+            &pos.file,
+            pos.line,
+            pos.col,
+            format!("include loop through {name}"),
+        ));
+    }
+    chain.push(key);
+    let mut out = Vec::new();
+    for item in parse_text(&text, &name)? {
+        match item {
+            Item::Include {
+                path: included,
+                pos,
+            } => {
+                let target = path.parent().unwrap_or(Path::new(".")).join(&included);
+                out.extend(read(&target, chain, Some(&pos))?);
+            }
+            other => out.push(other),
+        }
+    }
+    chain.pop();
+    Ok(out)
+}
+
+/// The `define`s of a world.
+#[derive(Debug, Default)]
+pub struct Types {
+    defines: HashMap<String, (String, Block)>,
+}
+
+impl Types {
+    pub fn add(&mut self, name: String, base: String, body: Block) {
+        self.defines.insert(name, (base, body));
+    }
+
+    pub fn is_model_type(&self, kind: &str) -> bool {
+        BUILTIN.contains(&kind) || self.defines.contains_key(kind)
+    }
+
+    /// Expands an instance block into a model.
+    pub fn instantiate(&self, block: &Block) -> Result<Model, WorldFileError> {
+        let mut model = self.expand_type(&block.kind, &block.pos, 0)?;
+        model.declared = block.kind.clone();
+        model.pos = block.pos.clone();
+        self.overlay(&mut model, block)?;
+        Ok(model)
+    }
+
+    fn expand_type(&self, kind: &str, pos: &Pos, depth: usize) -> Result<Model, WorldFileError> {
+        if depth > 32 {
+            return Err(WorldFileError::at(
+                &pos.file,
+                pos.line,
+                pos.col,
+                format!("define chain through {kind} does not end"),
+            ));
+        }
+        if BUILTIN.contains(&kind) {
+            return Ok(Model {
+                kind: kind.to_string(),
+                declared: kind.to_string(),
+                properties: Vec::new(),
+                children: Vec::new(),
+                parts: Vec::new(),
+                pos: pos.clone(),
+            });
+        }
+        let Some((base, body)) = self.defines.get(kind) else {
+            return Err(WorldFileError::at(
+                &pos.file,
+                pos.line,
+                pos.col,
+                format!(
+                    "unknown model type {kind:?} (not built in, not defined; a missing include?)"
+                ),
+            ));
+        };
+        let mut model = self.expand_type(base, &body.pos, depth + 1)?;
+        self.overlay(&mut model, body)?;
+        Ok(model)
+    }
+
+    fn overlay(&self, model: &mut Model, block: &Block) -> Result<(), WorldFileError> {
+        model.properties.extend(block.properties.iter().cloned());
+        for child in &block.children {
+            if self.is_model_type(&child.kind) {
+                model.children.push(self.instantiate(child)?);
+            } else {
+                model.parts.push(child.clone());
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,98 @@
+//! Reading model properties with Stage 4's units and conventions (`pose [x y z a]` with `a` in
+//! degrees, colours by name or `color_rgba`), each error naming the property and where it is.
+
+use super::Pose;
+use super::colors;
+use super::models::Model;
+use crate::worldfile::{Pos, Property, WorldFileError};
+
+pub(super) fn err(pos: &Pos, message: impl Into<String>) -> WorldFileError {
+    WorldFileError::at(&pos.file, pos.line, pos.col, message)
+}
+
+pub(super) fn number(p: &Property) -> Result<f64, WorldFileError> {
+    p.value
+        .as_f64()
+        .ok_or_else(|| err(&p.pos, format!("{} must be a number", p.name)))
+}
+
+pub(super) fn opt_number(m: &Model, name: &str) -> Result<Option<f64>, WorldFileError> {
+    m.get(name).map(number).transpose()
+}
+
+pub(super) fn string(p: &Property) -> Result<&str, WorldFileError> {
+    p.value
+        .as_str()
+        .ok_or_else(|| err(&p.pos, format!("{} must be a \"string\"", p.name)))
+}
+
+pub(super) fn numbers(
+    p: Option<&Property>,
+    at_least: usize,
+    pos: &Pos,
+) -> Result<Vec<f64>, WorldFileError> {
+    let Some(p) = p else {
+        return Err(err(pos, format!("missing a list of {at_least} numbers")));
+    };
+    match p.value.numbers() {
+        Some(n) if n.len() >= at_least => Ok(n),
+        _ => Err(err(
+            &p.pos,
+            format!("{} must be a list of at least {at_least} numbers", p.name),
+        )),
+    }
+}
+
+/// `pose [x y z a]` with `a` in degrees (Stage 4); `[x y a]` is accepted too.
+pub(super) fn pose_from(p: &Property) -> Result<Pose, WorldFileError> {
+    let n = numbers(Some(p), 3, &p.pos)?;
+    let a = if n.len() >= 4 { n[3] } else { n[2] };
+    Ok(Pose {
+        x: n[0],
+        y: n[1],
+        a: a.to_radians(),
+    })
+}
+
+pub(super) fn pose_of(m: &Model) -> Result<Pose, WorldFileError> {
+    m.get("pose")
+        .map(pose_from)
+        .transpose()
+        .map(Option::unwrap_or_default)
+}
+
+pub(super) fn size_of(m: &Model, default: [f64; 3]) -> Result<[f64; 3], WorldFileError> {
+    let Some(p) = m.get("size") else {
+        return Ok(default);
+    };
+    let n = numbers(Some(p), 2, &p.pos)?;
+    Ok([n[0], n[1], n.get(2).copied().unwrap_or(default[2])])
+}
+
+pub(super) fn name_of(m: &Model, default: &str) -> String {
+    m.get("name")
+        .and_then(|p| p.value.as_str())
+        .unwrap_or(default)
+        .to_string()
+}
+
+pub(super) fn color_of(m: &Model) -> Result<[u8; 3], WorldFileError> {
+    if let Some(p) = m.get("color_rgba") {
+        let n = numbers(Some(p), 3, &p.pos)?;
+        let c = |v: f64| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
+        return Ok([c(n[0]), c(n[1]), c(n[2])]);
+    }
+    match m.get("color") {
+        None => Ok([200, 200, 200]),
+        Some(p) => {
+            let name = string(p)?;
+            colors::by_name(name).ok_or_else(|| err(&p.pos, format!("unknown colour {name:?}")))
+        }
+    }
+}
+
+pub(super) fn fiducial_of(m: &Model) -> Result<Option<i32>, WorldFileError> {
+    Ok(opt_number(m, "fiducial_return")?
+        .map(|v| v as i32)
+        .filter(|&v| v != 0))
+}

@@ -1,0 +1,172 @@
+//! player-sim through the real client over TCP, as a Player user would meet it.
+
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use player_proto::client::{Client, ClientOptions};
+use player_proto::interfaces::common::Pose2d;
+use player_proto::interfaces::simulation::{Simulation as SimMsg, SimulationPose2d};
+use player_proto::message::Body;
+use player_proto::wire::{Interface, PlayerString};
+use player_sim::serve::{Running, ServeOptions, serve};
+use player_sim::served::from_cfg;
+use player_sim::sim::Simulation;
+use player_sim::world::{Pose, World};
+
+fn start(world: &str, speedup: f64) -> Running {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../stage-worlds");
+    let world_file = dir.join(world);
+    let world = World::load(&world_file).unwrap();
+    let mut ignored = Vec::new();
+    let devices = from_cfg(&world_file.with_extension("cfg"), &world, &mut ignored).unwrap();
+    let options = ServeOptions {
+        speedup,
+        free_ports: true,
+        ..ServeOptions::default()
+    };
+    serve(Simulation::new(world), devices, options).unwrap()
+}
+
+fn wait_for<T>(what: &str, timeout: Duration, mut get: impl FnMut() -> Option<T>) -> T {
+    let deadline = Instant::now() + timeout;
+    loop {
+        if let Some(v) = get() {
+            return v;
+        }
+        assert!(Instant::now() < deadline, "timed out waiting for {what}");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+}
+
+#[test]
+fn a_commanded_robot_moves_one_metre_in_two_simulated_seconds() {
+    let sim = start("simple.world", 10.0);
+    let client = Client::connect(
+        "127.0.0.1",
+        sim.port(6665).unwrap(),
+        ClientOptions::default(),
+    )
+    .unwrap();
+    let base = client.position2d(0);
+    assert_eq!(base.subscribe().unwrap(), "stage");
+    let (start_state, stamp) = wait_for("odometry", Duration::from_secs(3), || base.state());
+    base.set_velocity(0.5, 0.0, 0.0);
+    // Wait for two simulated seconds after the first state that shows motion.
+    let (moving, moved_at) = wait_for("motion", Duration::from_secs(3), || {
+        base.state().filter(|(s, _)| s.pos.px > start_state.pos.px)
+    });
+    let (later, _) = wait_for("two simulated seconds", Duration::from_secs(5), || {
+        base.state()
+            .filter(|(_, s)| s.server_time >= moved_at.server_time + 2.0)
+    });
+    base.set_velocity(0.0, 0.0, 0.0);
+    let travelled = later.pos.px - moving.pos.px;
+    let elapsed = client.latest(base.addr(), 1).unwrap().server_time - moved_at.server_time;
+    assert!(
+        (travelled - 0.5 * elapsed).abs() < 0.06,
+        "{travelled} m in {elapsed} s"
+    );
+    assert!(stamp.server_time >= 0.0);
+}
+
+#[test]
+fn the_laser_sees_the_wall_and_the_simulation_moves_models() {
+    let sim = start("simple.world", 5.0);
+    let client = Client::connect(
+        "127.0.0.1",
+        sim.port(6665).unwrap(),
+        ClientOptions::default(),
+    )
+    .unwrap();
+    // Put the robot 2.1 m from the east wall face (x = 4.8): its laser, 0.1 m ahead, sees 2 m.
+    let set = SimulationPose2d {
+        name: PlayerString::new("r0"),
+        pose: Pose2d::new(2.7, 0.0, 0.0),
+    };
+    client
+        .request(
+            client.addr(Interface::SIMULATION, 0),
+            2,
+            Body::Simulation(SimMsg::SetPose2d(set)),
+        )
+        .unwrap();
+    let laser = client.laser(0);
+    assert_eq!(laser.subscribe().unwrap(), "rangertolaser");
+    let config = laser.config().unwrap();
+    assert_eq!(config.max_range, 8.0);
+    let geometry = laser.geometry().unwrap();
+    assert!((geometry.pose.px - 0.1).abs() < 1e-9);
+    let (scan, _) = wait_for("a scan from the new pose", Duration::from_secs(3), || {
+        laser
+            .scan()
+            .filter(|(s, _)| (s.ranges[90] - 2.0).abs() < 0.05)
+    });
+    assert_eq!(scan.ranges.len(), 181);
+
+    let ask = SimulationPose2d {
+        name: PlayerString::new("r0"),
+        pose: Pose2d::default(),
+    };
+    let reply = client
+        .request(
+            client.addr(Interface::SIMULATION, 0),
+            1,
+            Body::Simulation(SimMsg::Pose2d(ask)),
+        )
+        .unwrap();
+    let Body::Simulation(SimMsg::Pose2d(p)) = reply.body else {
+        panic!()
+    };
+    assert!((p.pose.px - 2.7).abs() < 0.2);
+    let nobody = SimulationPose2d {
+        name: PlayerString::new("nobody"),
+        pose: Pose2d::default(),
+    };
+    assert!(
+        client
+            .request(
+                client.addr(Interface::SIMULATION, 0),
+                1,
+                Body::Simulation(SimMsg::Pose2d(nobody))
+            )
+            .is_err()
+    );
+}
+
+#[test]
+fn fiducials_and_sonar_rings_of_the_multirobot_world() {
+    let sim = start("multirobot.world", 2.0);
+    // Park r0 facing landmark lm1 (-6, 4) from 3 m: id 1 straight ahead.
+    sim.sim.lock().unwrap().robots[0].pose = Pose {
+        x: -6.0,
+        y: 1.0,
+        a: std::f64::consts::FRAC_PI_2,
+    };
+    let client = Client::connect(
+        "127.0.0.1",
+        sim.port(6665).unwrap(),
+        ClientOptions::default(),
+    )
+    .unwrap();
+    let finder = client.fiducial(0);
+    finder.subscribe().unwrap();
+    let (markers, _) = wait_for("markers", Duration::from_secs(3), || {
+        finder
+            .markers()
+            .filter(|(m, _)| m.fiducials.iter().any(|f| f.id == 1))
+    });
+    let lm1 = markers.fiducials.iter().find(|f| f.id == 1).unwrap();
+    assert!(
+        (lm1.range() - 3.0).abs() < 0.05 && lm1.bearing().abs() < 0.02,
+        "{lm1:?}"
+    );
+    let ring = client.ranger(1);
+    ring.subscribe().unwrap();
+    let (ranges, _) = wait_for("sonar readings", Duration::from_secs(3), || ring.ranges());
+    assert_eq!(ranges.ranges.len(), 8);
+    assert_eq!(
+        client.devices().len(),
+        6,
+        "simulation, position2d, 2 rangers, fiducial, laser; the camera is not simulated yet"
+    );
+}

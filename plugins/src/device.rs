@@ -1,0 +1,168 @@
+//! What a plugin sees of the Player device it was made for: the newest data, commands,
+//! requests and the link state. pv3d implements this over the Player client; tests feed known
+//! data through a small in-memory implementation.
+
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+use player_proto::message::{Body, Message};
+
+/// A data message and how fresh it is.
+#[derive(Debug, Clone)]
+pub struct Sample {
+    pub message: Arc<Message>,
+    /// When the client received it.
+    pub received: Instant,
+    /// Counts messages of this device and subtype; a plugin redraws when it changes.
+    pub seq: u64,
+}
+
+/// The state of the connection to the device's server.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum LinkState {
+    Connecting,
+    Connected,
+    Reconnecting { attempt: u32 },
+    Failed(String),
+}
+
+impl LinkState {
+    pub fn is_connected(&self) -> bool {
+        matches!(self, LinkState::Connected)
+    }
+}
+
+/// Why a request got no useful reply.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum RequestFailure {
+    #[error("the device refused the request (NACK)")]
+    Nack,
+    #[error("no reply within the timeout")]
+    Timeout,
+    #[error("not connected: {0}")]
+    Disconnected(String),
+}
+
+/// What a request came to: the ACK message, or why there is none.
+pub type ReplyOutcome = Result<Arc<Message>, RequestFailure>;
+
+type Poll = Box<dyn FnMut() -> Option<ReplyOutcome> + Send>;
+
+/// A reply that will arrive later; polled from the UI thread, never waited on.
+#[derive(Clone, Default)]
+pub struct ReplyTicket {
+    filled: Arc<Mutex<Option<ReplyOutcome>>>,
+    poll: Option<Arc<Mutex<Poll>>>,
+}
+
+impl std::fmt::Debug for ReplyTicket {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("ReplyTicket")
+    }
+}
+
+impl ReplyTicket {
+    /// A ticket whose outcome is found by asking `poll` (e.g. a client's pending reply).
+    pub fn polled(poll: impl FnMut() -> Option<ReplyOutcome> + Send + 'static) -> ReplyTicket {
+        ReplyTicket {
+            filled: Arc::default(),
+            poll: Some(Arc::new(Mutex::new(Box::new(poll)))),
+        }
+    }
+
+    /// Delivers the outcome (called by whoever talks to the server).
+    pub fn fulfil(&self, outcome: ReplyOutcome) {
+        *self.filled.lock().expect("reply ticket") = Some(outcome);
+    }
+
+    /// Takes the outcome if it has arrived.
+    pub fn try_take(&self) -> Option<ReplyOutcome> {
+        if let Some(outcome) = self.filled.lock().expect("reply ticket").take() {
+            return Some(outcome);
+        }
+        let poll = self.poll.as_ref()?;
+        (poll.lock().expect("reply ticket"))()
+    }
+}
+
+/// Access to one device.
+pub trait DeviceAccess: Send + Sync {
+    /// The newest DATA message of `subtype` this device sent, if any.
+    fn latest(&self, subtype: u8) -> Option<Sample>;
+    /// Sends a command (fire and forget). The subtype comes from the typed body.
+    fn command(&self, body: Body);
+    /// Sends a request; the ticket receives the ACK (or the failure).
+    fn request(&self, subtype: u8, body: Body) -> ReplyTicket;
+    fn link_state(&self) -> LinkState;
+}
+
+/// An in-memory device for tests and demos: data is pushed in, commands and requests are
+/// recorded, requests are answered from a table.
+#[derive(Default)]
+pub struct RecordingDevice {
+    pub data: Mutex<Vec<Sample>>,
+    pub commands: Mutex<Vec<Body>>,
+    pub requests: Mutex<Vec<(u8, Body)>>,
+    pub replies: Mutex<Vec<(u8, ReplyOutcome)>>,
+    pub state: Mutex<Option<LinkState>>,
+    pushed: std::sync::atomic::AtomicU64,
+}
+
+impl RecordingDevice {
+    /// Makes `message` the newest data of its subtype.
+    pub fn push(&self, message: Message) {
+        let mut data = self.data.lock().expect("data");
+        let subtype = message.header.subtype;
+        let seq = self
+            .pushed
+            .fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+            + 1;
+        data.retain(|s| s.message.header.subtype != subtype);
+        data.push(Sample {
+            message: Arc::new(message),
+            received: Instant::now(),
+            seq,
+        });
+    }
+}
+
+impl DeviceAccess for RecordingDevice {
+    fn latest(&self, subtype: u8) -> Option<Sample> {
+        self.data
+            .lock()
+            .expect("data")
+            .iter()
+            .find(|s| s.message.header.subtype == subtype)
+            .cloned()
+    }
+
+    fn command(&self, body: Body) {
+        self.commands.lock().expect("commands").push(body);
+    }
+
+    fn request(&self, subtype: u8, body: Body) -> ReplyTicket {
+        self.requests
+            .lock()
+            .expect("requests")
+            .push((subtype, body));
+        let ticket = ReplyTicket::default();
+        if let Some((_, reply)) = self
+            .replies
+            .lock()
+            .expect("replies")
+            .iter()
+            .find(|(s, _)| *s == subtype)
+        {
+            ticket.fulfil(reply.clone());
+        }
+        ticket
+    }
+
+    fn link_state(&self) -> LinkState {
+        self.state
+            .lock()
+            .expect("state")
+            .clone()
+            .unwrap_or(LinkState::Connected)
+    }
+}

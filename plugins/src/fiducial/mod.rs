@@ -1,0 +1,172 @@
+//! `libpv3d_fiducial`: the markers a fiducial finder detects, drawn where it sees them with
+//! their ids. Each marker is a tagged object (`fiducial`, `id:7`, plus any tag the composition
+//! maps to that id) so that other components can find and click it.
+//!
+//! Parameters: `<parentNode interface="position2d" index="0"/>`; `<tag id="7">person</tag>`
+//! (any number); `color` (#f0c83c).
+
+use std::collections::HashMap;
+
+use glam::{Affine3A, Quat, Vec3};
+use player_proto::interfaces::fiducial::{self, Fiducial};
+use player_proto::message::Body;
+
+use crate::config::{ConfigValueError, PluginConfig};
+use crate::device::ReplyTicket;
+use crate::parent_link::ParentLink;
+use crate::plugin::{Anchors, Plugin, PluginContext};
+use crate::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
+
+const DATA_SCAN: u8 = 1;
+/// Drawn size of a marker, m.
+const MARKER: f32 = 0.3;
+
+pub struct FiducialPlugin {
+    config: PluginConfig,
+    color: Rgba,
+    /// The finder's frame (below the robot when a parent is given).
+    node: NodeId,
+    markers: Vec<NodeId>,
+    parent: ParentLink,
+    geometry_reply: Option<ReplyTicket>,
+    tags: HashMap<i32, Vec<String>>,
+    last_seq: Option<u64>,
+    seen: Vec<(i32, f32)>,
+}
+
+impl FiducialPlugin {
+    pub fn create(
+        config: PluginConfig,
+        ctx: &mut PluginContext<'_>,
+    ) -> Result<Box<dyn Plugin>, ConfigValueError> {
+        let color = config.color("color", Rgba::rgb(240, 200, 60))?;
+        let mut tags: HashMap<i32, Vec<String>> = HashMap::new();
+        for p in config.params.iter().filter(|p| p.name == "tag") {
+            let id = p.attr("id").and_then(|i| i.trim().parse().ok()).ok_or_else(|| ConfigValueError {
+                origin: p.origin.clone(),
+                library: config.library.clone(),
+                param: "tag".into(),
+                message: "needs an id attribute with the marker's number, e.g. <tag id=\"7\">person</tag>".into(),
+            })?;
+            tags.entry(id).or_default().push(p.text.trim().to_string());
+        }
+        let parent = ParentLink::from_config(&config);
+        let node = ctx
+            .scene
+            .add(Object3D::new(format!("fiducial finder {}", config.id)));
+        let geometry_reply = ctx
+            .device
+            .map(|d| d.request(fiducial::REQ_GET_GEOM, Body::Empty));
+        Ok(Box::new(FiducialPlugin {
+            config,
+            color,
+            node,
+            markers: Vec::new(),
+            parent,
+            geometry_reply,
+            tags,
+            last_seq: None,
+            seen: Vec::new(),
+        }))
+    }
+
+    fn place(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+        let mut changed = self.parent.attach(self.node, ctx);
+        if let Some(outcome) = self.geometry_reply.as_ref().and_then(ReplyTicket::try_take) {
+            self.geometry_reply = None;
+            if let Ok(m) = outcome
+                && let Body::Fiducial(Fiducial::Geometry(g)) = &m.body
+                && let Some(n) = ctx.scene.get_mut(self.node)
+            {
+                n.transform = Affine3A::from_rotation_translation(
+                    Quat::from_rotation_z(g.pose.pyaw as f32),
+                    Vec3::new(g.pose.px as f32, g.pose.py as f32, g.pose.pz as f32),
+                );
+                changed = true;
+            }
+        }
+        changed
+    }
+}
+
+impl Plugin for FiducialPlugin {
+    fn save(&self) -> PluginConfig {
+        self.config.clone()
+    }
+
+    fn title(&self) -> String {
+        match &self.config.device {
+            Some(d) => format!("Fiducials {d}"),
+            None => "Fiducials".into(),
+        }
+    }
+
+    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+        let changed = self.place(ctx);
+        let Some(sample) = ctx.device.and_then(|d| d.latest(DATA_SCAN)) else {
+            return changed;
+        };
+        if self.last_seq == Some(sample.seq) {
+            return changed;
+        }
+        self.last_seq = Some(sample.seq);
+        let Body::Fiducial(Fiducial::Scan(data)) = &sample.message.body else {
+            return changed;
+        };
+        for marker in self.markers.drain(..) {
+            ctx.scene.remove(marker);
+        }
+        self.seen.clear();
+        for item in &data.fiducials {
+            let mut object = Object3D::new(format!("marker {}", item.id));
+            object.parent = Some(self.node);
+            object.transform = Affine3A::from_rotation_translation(
+                Quat::from_rotation_z(item.pose.pyaw as f32),
+                Vec3::new(item.pose.px as f32, item.pose.py as f32, 0.0),
+            );
+            let size = Vec3::new(MARKER, MARKER, 0.05);
+            object
+                .geometry
+                .cuboid(Vec3::new(0.0, 0.0, 0.62), size, self.color);
+            let label = if item.id > 0 {
+                format!("#{}", item.id)
+            } else {
+                "?".to_string()
+            };
+            object
+                .geometry
+                .label(Vec3::new(0.0, 0.0, 0.75), label, self.color);
+            object.pick_bounds = Some(Aabb::centred(Vec3::new(0.0, 0.0, 0.62), size));
+            object.tags.push("fiducial".into());
+            object.tags.push(format!("id:{}", item.id));
+            if let Some(extra) = self.tags.get(&item.id) {
+                object.tags.extend(extra.iter().cloned());
+            }
+            self.markers.push(ctx.scene.add(object));
+            self.seen.push((item.id, item.range() as f32));
+        }
+        true
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, _ctx: &mut PluginContext<'_>) {
+        if self.seen.is_empty() {
+            ui.label("no markers in view");
+        }
+        for (id, range) in &self.seen {
+            let tags = self
+                .tags
+                .get(id)
+                .map(|t| format!(" ({})", t.join(", ")))
+                .unwrap_or_default();
+            ui.label(format!("#{id} at {range:.2} m{tags}"));
+        }
+    }
+
+    fn node(&self) -> Option<NodeId> {
+        Some(self.node)
+    }
+
+    fn detach(&mut self, scene: &mut Scene, _anchors: &mut Anchors) {
+        scene.remove(self.node);
+    }
+}

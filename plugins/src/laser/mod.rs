@@ -1,0 +1,182 @@
+//! `libpv3d_laser`: a laser scanner's scans, attached to its robot.
+//!
+//! Parameters (all optional): `<parentNode interface="position2d" index="0"/>` — the device
+//! whose scene node the laser hangs below (same server); `drawPoints` (1), `drawLines` (0),
+//! `fillLaserCspace` (0), `drawLaserCspace` (0) — the free-space polygon filled and outlined;
+//! `color` (#ff5a3c). The laser's pose on the robot comes from its geometry request.
+
+mod scan_geometry;
+
+use std::time::Instant;
+
+use glam::{Affine3A, Quat, Vec3};
+use player_proto::interfaces::laser::{self, Laser};
+use player_proto::message::Body;
+
+pub use scan_geometry::{ScanStyle, endpoints, scan_geometry};
+
+use crate::config::{ConfigValueError, PluginConfig};
+use crate::device::{ReplyTicket, Sample};
+use crate::parent_link::ParentLink;
+use crate::plugin::{Anchors, Plugin, PluginContext};
+use crate::scene::{NodeId, Object3D, Scene};
+
+/// Subtype of `PLAYER_LASER_DATA_SCAN`.
+const DATA_SCAN: u8 = 1;
+
+pub struct LaserPlugin {
+    config: PluginConfig,
+    style: ScanStyle,
+    node: NodeId,
+    parent: ParentLink,
+    geometry_reply: Option<ReplyTicket>,
+    last_seq: Option<u64>,
+    /// Readings in the newest scan, and the nearest return.
+    summary: Option<(usize, Option<f32>, Instant)>,
+}
+
+impl LaserPlugin {
+    pub fn create(
+        config: PluginConfig,
+        ctx: &mut PluginContext<'_>,
+    ) -> Result<Box<dyn Plugin>, ConfigValueError> {
+        let style = ScanStyle {
+            points: config.bool("drawPoints", true)?,
+            lines: config.bool("drawLines", false)?,
+            fill_cspace: config.bool("fillLaserCspace", false)?,
+            draw_cspace: config.bool("drawLaserCspace", false)?,
+            color: config.color("color", ScanStyle::default().color)?,
+            height: 0.0,
+        };
+        let parent = ParentLink::from_config(&config);
+        let name = match &config.device {
+            Some(d) => format!("laser {d}"),
+            None => "laser".to_string(),
+        };
+        let mut object = Object3D::new(name);
+        object.tags.push("laser".into());
+        let node = ctx.scene.add(object);
+        let geometry_reply = ctx
+            .device
+            .map(|d| d.request(laser::REQ_GET_GEOM, Body::Empty));
+        Ok(Box::new(LaserPlugin {
+            config,
+            style,
+            node,
+            parent,
+            geometry_reply,
+            last_seq: None,
+            summary: None,
+        }))
+    }
+
+    fn place_from_geometry(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+        let Some(ticket) = &self.geometry_reply else {
+            return false;
+        };
+        let Some(outcome) = ticket.try_take() else {
+            return false;
+        };
+        self.geometry_reply = None;
+        match outcome.map(|m| m.body.clone()) {
+            Ok(Body::Laser(Laser::Geometry(g))) => {
+                if let Some(node) = ctx.scene.get_mut(self.node) {
+                    node.transform = Affine3A::from_rotation_translation(
+                        Quat::from_rotation_z(g.pose.pyaw as f32),
+                        Vec3::new(g.pose.px as f32, g.pose.py as f32, g.pose.pz as f32),
+                    );
+                }
+                true
+            }
+            Ok(other) => {
+                tracing::warn!(plugin = %self.config.id, "laser geometry reply has an unexpected body: {other:?}");
+                false
+            }
+            Err(e) => {
+                tracing::info!(plugin = %self.config.id, "no laser geometry ({e}); drawing at the robot's origin");
+                false
+            }
+        }
+    }
+
+    fn redraw(&mut self, sample: &Sample, ctx: &mut PluginContext<'_>) -> bool {
+        let Body::Laser(Laser::Scan(scan)) = &sample.message.body else {
+            return false;
+        };
+        let nearest = endpoints(scan)
+            .filter(|(_, hit)| *hit)
+            .map(|(p, _)| p.length())
+            .min_by(f32::total_cmp);
+        self.summary = Some((scan.ranges.len(), nearest, sample.received));
+        let Some(node) = ctx.scene.get_mut(self.node) else {
+            return false;
+        };
+        scan_geometry(scan, &self.style, &mut node.geometry);
+        true
+    }
+}
+
+impl Plugin for LaserPlugin {
+    fn save(&self) -> PluginConfig {
+        let mut config = self.config.clone();
+        let flag = |b: bool| if b { "1" } else { "0" };
+        config.set("drawPoints", flag(self.style.points));
+        config.set("drawLines", flag(self.style.lines));
+        config.set("fillLaserCspace", flag(self.style.fill_cspace));
+        config.set("drawLaserCspace", flag(self.style.draw_cspace));
+        config
+    }
+
+    fn title(&self) -> String {
+        match &self.config.device {
+            Some(d) => format!("Laser {d}"),
+            None => "Laser".into(),
+        }
+    }
+
+    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+        let mut changed = self.place_from_geometry(ctx);
+        changed |= self.parent.attach(self.node, ctx);
+        let sample = ctx.device.and_then(|d| d.latest(DATA_SCAN));
+        if let Some(sample) = sample
+            && self.last_seq != Some(sample.seq)
+        {
+            self.last_seq = Some(sample.seq);
+            changed |= self.redraw(&sample, ctx);
+        }
+        changed
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
+        match self.summary {
+            Some((n, nearest, at)) => {
+                let nearest = nearest.map_or("no return".into(), |r| format!("nearest {r:.2} m"));
+                ui.label(format!(
+                    "{n} readings, {nearest}, {:.1} s old",
+                    ctx.now.saturating_duration_since(at).as_secs_f32()
+                ));
+            }
+            None => {
+                ui.label("no scan yet");
+            }
+        }
+        let before = self.style;
+        ui.checkbox(&mut self.style.points, "points");
+        ui.checkbox(&mut self.style.lines, "lines");
+        ui.checkbox(&mut self.style.fill_cspace, "fill free space");
+        ui.checkbox(&mut self.style.draw_cspace, "outline free space");
+        if before != self.style {
+            // Redraw the newest scan in the new style.
+            self.last_seq = None;
+        }
+    }
+
+    fn node(&self) -> Option<NodeId> {
+        Some(self.node)
+    }
+
+    fn detach(&mut self, scene: &mut Scene, anchors: &mut Anchors) {
+        anchors.withdraw(self.node);
+        scene.remove(self.node);
+    }
+}

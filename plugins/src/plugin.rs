@@ -1,0 +1,143 @@
+//! The component model: a plugin is made from its configuration, fills the scene, shows an
+//! egui panel, offers services, reacts to input, and writes its state back.
+
+use std::collections::HashMap;
+use std::time::Instant;
+
+use glam::Vec3;
+
+use crate::config::{ConfigValueError, PluginConfig};
+use crate::device::DeviceAccess;
+use crate::scene::{NodeId, Scene};
+
+/// Where a device's scene node is, so that other plugins can attach to it (`<parentNode>`):
+/// the laser of robot r0 hangs below r0's position2d node.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct AnchorKey {
+    pub host: String,
+    pub port: u16,
+    pub interface: String,
+    pub index: u16,
+}
+
+/// Scene nodes published by plugins under their device's address.
+#[derive(Debug, Default)]
+pub struct Anchors(HashMap<AnchorKey, NodeId>);
+
+impl Anchors {
+    pub fn publish(&mut self, key: AnchorKey, node: NodeId) {
+        self.0.insert(key, node);
+    }
+
+    pub fn find(&self, key: &AnchorKey) -> Option<NodeId> {
+        self.0.get(key).copied()
+    }
+
+    pub fn withdraw(&mut self, node: NodeId) {
+        self.0.retain(|_, n| *n != node);
+    }
+}
+
+/// What a plugin works with during a call.
+pub struct PluginContext<'a> {
+    pub scene: &'a mut Scene,
+    /// The plugin's own device, when it was made for one.
+    pub device: Option<&'a dyn DeviceAccess>,
+    pub anchors: &'a mut Anchors,
+    pub now: Instant,
+}
+
+/// Input that reached a plugin through the event chain.
+#[derive(Debug, Clone, PartialEq)]
+pub enum InputEvent {
+    /// A click on the ground at this world point.
+    GroundClicked(Vec3),
+    /// A click on a scene object.
+    ObjectClicked(NodeId),
+    /// The window lost focus, or the person asked every robot to stop.
+    StopAll,
+    /// This plugin became (true) or stopped being (false) the active event handler.
+    Activated(bool),
+}
+
+/// Whether a plugin consumed an event (the chain of responsibility stops there).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Handled {
+    Yes,
+    No,
+}
+
+/// An action a plugin offers in the item tree ("Stop", "Reset trail").
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Service {
+    pub name: &'static str,
+    pub description: &'static str,
+}
+
+/// A component of a composition.
+pub trait Plugin: Send {
+    /// The configuration this plugin was made from, with its current state written in.
+    fn save(&self) -> PluginConfig;
+
+    /// A short name for the item tree.
+    fn title(&self) -> String;
+
+    /// Brings the scene up to date with the newest data. Returns whether anything changed.
+    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool;
+
+    /// The plugin's panel in the item tree.
+    fn ui(&mut self, _ui: &mut egui::Ui, _ctx: &mut PluginContext<'_>) {}
+
+    /// Actions offered in the item tree.
+    fn services(&self) -> Vec<Service> {
+        Vec::new()
+    }
+
+    /// Runs one of [`Plugin::services`].
+    fn run_service(&mut self, _name: &str, _ctx: &mut PluginContext<'_>) {}
+
+    /// Input from the event chain.
+    fn on_event(&mut self, _event: &InputEvent, _ctx: &mut PluginContext<'_>) -> Handled {
+        Handled::No
+    }
+
+    /// Whether this plugin can become the active event handler (e.g. a robot to drive).
+    fn can_be_active(&self) -> bool {
+        false
+    }
+
+    /// The scene node that stands for this plugin (picked to select it), if any.
+    fn node(&self) -> Option<NodeId> {
+        None
+    }
+
+    /// Removes the plugin's nodes from the scene.
+    fn detach(&mut self, scene: &mut Scene, anchors: &mut Anchors);
+}
+
+/// Makes a plugin from its configuration.
+pub type Constructor =
+    fn(PluginConfig, &mut PluginContext<'_>) -> Result<Box<dyn Plugin>, ConfigValueError>;
+
+/// The plugins built into the program, by library name (`libpv3d_laser`).
+#[derive(Default)]
+pub struct PluginRegistry {
+    constructors: Vec<(&'static str, Constructor)>,
+}
+
+impl PluginRegistry {
+    pub fn register(&mut self, library: &'static str, constructor: Constructor) {
+        self.constructors.push((library, constructor));
+    }
+
+    pub fn libraries(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.constructors.iter().map(|(l, _)| *l)
+    }
+
+    pub fn constructor(&self, library: &str) -> Option<Constructor> {
+        self.constructors
+            .iter()
+            .find(|(l, _)| *l == library)
+            .map(|(_, c)| *c)
+    }
+}

@@ -1,0 +1,48 @@
+//! A robot's body: a box of its size, a nose showing where it faces, its name, and a ring
+//! around it while it is the active (selected) robot.
+
+use glam::Vec3;
+
+use crate::scene::{Geometry, Rgba};
+
+/// Fills `g` (cleared first) with a body of `size` (length x, width y, height z).
+pub fn body_geometry(g: &mut Geometry, size: Vec3, color: Rgba, active: bool, name: &str) {
+    g.clear();
+    g.cuboid(Vec3::new(0.0, 0.0, size.z / 2.0), size, color);
+    // The nose: a bright triangle on top, pointing forward (+x).
+    let top = size.z + 0.005;
+    let (l, w) = (size.x / 2.0, size.y / 2.0);
+    g.triangle(
+        Vec3::new(l, 0.0, top),
+        Vec3::new(l * 0.2, w * 0.6, top),
+        Vec3::new(l * 0.2, -w * 0.6, top),
+        Rgba::rgb(245, 245, 245),
+    );
+    if active {
+        let radius = size.x.max(size.y) * 0.75;
+        let ring: Vec<Vec3> = (0..32)
+            .map(|i| {
+                let a = i as f32 / 32.0 * std::f32::consts::TAU;
+                Vec3::new(radius * a.cos(), radius * a.sin(), 0.02)
+            })
+            .collect();
+        g.polygon_outline(&ring, Rgba::rgb(250, 200, 60));
+    }
+    g.label(Vec3::new(0.0, 0.0, size.z + 0.1), name, Rgba::WHITE);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_active_robot_gets_a_ring() {
+        let mut g = Geometry::default();
+        body_geometry(&mut g, Vec3::new(0.4, 0.3, 0.2), Rgba::WHITE, false, "r0");
+        assert!(g.lines.is_empty());
+        assert_eq!(g.mesh.len(), 36);
+        assert_eq!(g.labels[0].text, "r0");
+        body_geometry(&mut g, Vec3::new(0.4, 0.3, 0.2), Rgba::WHITE, true, "r0");
+        assert_eq!(g.lines.len(), 64);
+    }
+}

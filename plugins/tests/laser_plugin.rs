@@ -1,0 +1,142 @@
+//! The laser plugin fed known data fills the scene as expected (no GL involved).
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use glam::Vec3;
+use player_proto::interfaces::common::{BBox3d, Pose3d};
+use player_proto::interfaces::laser::{Laser, LaserGeometry, LaserScan};
+use player_proto::message::Message;
+use player_proto::{DevAddr, MsgType};
+use pv3d_plugins::config::{DeviceRef, Param};
+use pv3d_plugins::device::RecordingDevice;
+use pv3d_plugins::plugin::{AnchorKey, Anchors, PluginContext};
+use pv3d_plugins::scene::{Object3D, Scene};
+use pv3d_plugins::{PluginConfig, standard_plugins};
+
+fn laser_config() -> PluginConfig {
+    let mut parent = Param::new("parentNode", "");
+    parent.attributes = vec![
+        ("interface".into(), "position2d".into()),
+        ("index".into(), "0".into()),
+    ];
+    PluginConfig {
+        library: "libpv3d_laser".into(),
+        id: "laser".into(),
+        device: Some(DeviceRef {
+            host: "localhost".into(),
+            port: 6665,
+            addr: "laser:0".parse().unwrap(),
+            driver: "sicklms200".into(),
+        }),
+        params: vec![parent, Param::new("fillLaserCspace", "1")],
+        origin: "test.xml:1:1".into(),
+        ..PluginConfig::default()
+    }
+}
+
+#[test]
+fn scans_become_points_below_the_robot_at_the_geometry_pose() {
+    let device = RecordingDevice::default();
+    let geometry = LaserGeometry {
+        pose: Pose3d {
+            px: 0.2,
+            pz: 0.3,
+            ..Pose3d::default()
+        },
+        size: BBox3d::default(),
+    };
+    let addr: DevAddr = "laser:0".parse().unwrap();
+    device.replies.lock().unwrap().push((
+        1,
+        Ok(Arc::new(Message::typed(
+            addr,
+            MsgType::Ack,
+            Laser::Geometry(geometry),
+        ))),
+    ));
+
+    let mut scene = Scene::new();
+    let mut anchors = Anchors::default();
+    let mut robot = Object3D::new("robot");
+    robot.transform = glam::Affine3A::from_translation(Vec3::new(5.0, 0.0, 0.0));
+    let robot = scene.add(robot);
+    anchors.publish(
+        AnchorKey {
+            host: "localhost".into(),
+            port: 6665,
+            interface: "position2d".into(),
+            index: 0,
+        },
+        robot,
+    );
+
+    let registry = standard_plugins();
+    let create = registry.constructor("libpv3d_laser").unwrap();
+    let mut ctx = PluginContext {
+        scene: &mut scene,
+        device: Some(&device),
+        anchors: &mut anchors,
+        now: Instant::now(),
+    };
+    let mut plugin = create(laser_config(), &mut ctx).unwrap();
+    assert_eq!(
+        device.requests.lock().unwrap().len(),
+        1,
+        "geometry was asked for"
+    );
+
+    let scan = LaserScan {
+        min_angle: 0.0,
+        resolution: std::f32::consts::FRAC_PI_2,
+        max_range: 8.0,
+        ranges: vec![2.0, 1.0],
+        ..LaserScan::default()
+    };
+    device.push(Message::typed(addr, MsgType::Data, Laser::Scan(scan)));
+    assert!(plugin.update(&mut ctx));
+    assert!(!plugin.update(&mut ctx), "nothing new, nothing redrawn");
+
+    let node = plugin.node().unwrap();
+    let object = scene.get(node).unwrap();
+    assert_eq!(object.parent, Some(robot));
+    assert_eq!(object.geometry.points.len(), 2);
+    assert_eq!(object.geometry.triangles.len(), 3, "filled free space");
+    // The first return is 2 m straight ahead of a laser 0.2 m ahead of a robot at x = 5.
+    let world = scene
+        .world_transform(node)
+        .transform_point3(object.geometry.points[0].pos);
+    assert!(
+        (world - Vec3::new(7.2, 0.0, 0.3)).length() < 1e-5,
+        "{world}"
+    );
+
+    let saved = plugin.save();
+    assert_eq!(saved.param("fillLaserCspace").unwrap().text, "1");
+    assert_eq!(saved.param("drawLaserCspace").unwrap().text, "0");
+}
+
+#[test]
+fn bad_parameters_name_the_place() {
+    let mut config = laser_config();
+    config.params.push(Param {
+        origin: "test.xml:7:3".into(),
+        ..Param::new("drawPoints", "sometimes")
+    });
+    let mut scene = Scene::new();
+    let mut anchors = Anchors::default();
+    let mut ctx = PluginContext {
+        scene: &mut scene,
+        device: None,
+        anchors: &mut anchors,
+        now: Instant::now(),
+    };
+    let err = match standard_plugins().constructor("libpv3d_laser").unwrap()(config, &mut ctx) {
+        Err(e) => e.to_string(),
+        Ok(_) => panic!("accepted a bad flag"),
+    };
+    assert!(
+        err.starts_with("test.xml:7:3: <drawPoints> of libpv3d_laser"),
+        "{err}"
+    );
+}

@@ -1,0 +1,67 @@
+//! The robots' status: each server's connection state, and each used device's message rate
+//! and the age of its newest data — so a person sees freshness and lag at a glance.
+
+use std::collections::HashMap;
+use std::time::{Duration, Instant};
+
+use eframe::egui::{self, Color32, Ui};
+use player_proto::client::ConnectionState;
+use player_proto::wire::DevAddr;
+
+use crate::robots::RobotManager;
+
+/// Rates are computed over windows of this length.
+const RATE_WINDOW: Duration = Duration::from_secs(1);
+
+#[derive(Default)]
+pub struct StatusPanel {
+    /// (host, port, device) -> (messages at window start, window start, last rate)
+    rates: HashMap<(String, u16, DevAddr), (u64, Instant, f64)>,
+}
+
+impl StatusPanel {
+    pub fn ui(&mut self, ui: &mut Ui, robots: &RobotManager) {
+        let now = Instant::now();
+        let used = robots.used_devices();
+        egui::Grid::new("robot-status")
+            .striped(true)
+            .show(ui, |ui| {
+                for (host, port, client) in robots.clients() {
+                    let state = client.state();
+                    let color = match state {
+                        ConnectionState::Connected => Color32::from_rgb(110, 200, 120),
+                        ConnectionState::Failed(_) => Color32::from_rgb(230, 90, 80),
+                        _ => Color32::from_rgb(230, 190, 80),
+                    };
+                    ui.colored_label(color, format!("{host}:{port}"));
+                    ui.colored_label(color, state.to_string());
+                    let mut cells = Vec::new();
+                    for (_, _, addr) in used.iter().filter(|(h, p, _)| h == host && *p == port) {
+                        let count = client.stats(*addr).messages;
+                        let entry = self
+                            .rates
+                            .entry((host.to_string(), port, *addr))
+                            .or_insert((count, now, 0.0));
+                        let elapsed = now.duration_since(entry.1);
+                        if elapsed >= RATE_WINDOW {
+                            entry.2 = (count - entry.0) as f64 / elapsed.as_secs_f64();
+                            *entry = (count, now, entry.2);
+                        }
+                        let age = (1..=5u8)
+                            .filter_map(|s| client.latest(*addr, s))
+                            .map(|s| now.saturating_duration_since(s.received))
+                            .min();
+                        let age = age.map_or("no data".to_string(), |a| {
+                            format!("{:.1} s", a.as_secs_f32())
+                        });
+                        cells.push(format!(
+                            "{}:{} {:.0} Hz, {age}",
+                            addr.interf, addr.index, entry.2
+                        ));
+                    }
+                    ui.label(cells.join("   "));
+                    ui.end_row();
+                }
+            });
+    }
+}

@@ -1,0 +1,199 @@
+//! The 3D view widget: camera input (pan, orbit, zoom, switch projection), the scene drawn by
+//! our glow renderer through an egui paint callback, and labels drawn as text on top.
+
+use std::sync::{Arc, Mutex};
+
+use eframe::egui::{self, Color32, Rect, Sense, Ui};
+use eframe::egui_glow;
+use eframe::glow::{self, HasContext};
+use glam::{Vec2, Vec3};
+use pv3d_plugins::scene::Scene;
+
+use crate::render::{Lighting, OrbitCamera, Projection, SceneBatch, SceneRenderer};
+
+/// GL-side state shared with the paint callback (which runs later, during painting).
+#[derive(Default)]
+struct GpuState {
+    renderer: Option<SceneRenderer>,
+    batch: SceneBatch,
+    generation: u64,
+    lighting: Lighting,
+    failed: Option<String>,
+}
+
+/// What the person did in the view this frame, for the event handlers.
+#[derive(Debug, Clone, Default)]
+pub struct ViewInput {
+    /// A primary click: the ray under the pointer (origin, direction) and the ground point.
+    pub clicked: Option<(Vec3, Vec3, Option<Vec3>)>,
+    /// A secondary click, same data.
+    pub secondary_clicked: Option<(Vec3, Vec3, Option<Vec3>)>,
+    /// The ground point under the pointer while hovering.
+    pub hover_ground: Option<Vec3>,
+    /// Whether any camera movement happened.
+    pub camera_moved: bool,
+}
+
+/// The 3D world view of one window.
+#[derive(Default)]
+pub struct View3d {
+    pub camera: OrbitCamera,
+    gpu: Arc<Mutex<GpuState>>,
+    batched_generation: Option<u64>,
+    /// Line segments drawn in the last frame built (for the status line and benchmarks).
+    pub segments: usize,
+    /// Whether the view was fitted to the scene yet (once, when content first appears).
+    framed: bool,
+}
+
+impl View3d {
+    /// Shows the view in all of `ui`'s remaining space.
+    pub fn show(&mut self, ui: &mut Ui, scene: &Scene) -> ViewInput {
+        let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+        let mut input = ViewInput::default();
+        let size = Vec2::new(rect.width(), rect.height());
+        let aspect = size.x / size.y.max(1.0);
+        let to_ndc = |p: egui::Pos2| {
+            Vec2::new(
+                (p.x - rect.left()) / rect.width() * 2.0 - 1.0,
+                1.0 - (p.y - rect.top()) / rect.height() * 2.0,
+            )
+        };
+
+        // Camera: drag with the primary button pans (top) or orbits (perspective), the
+        // secondary button always pans; the wheel zooms.
+        if response.dragged() {
+            let delta = response.drag_delta();
+            let orbit = self.camera.projection == Projection::Perspective
+                && response.dragged_by(egui::PointerButton::Primary)
+                && !ui.input(|i| i.modifiers.shift);
+            if orbit {
+                self.camera.orbit(-delta.x * 0.01, delta.y * 0.01);
+            } else {
+                self.camera.pan_pixels(Vec2::new(delta.x, delta.y), size);
+            }
+            input.camera_moved = true;
+        }
+        if response.hovered() {
+            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+            if scroll != 0.0 {
+                self.camera.zoom((-scroll * 0.002).exp());
+                input.camera_moved = true;
+            }
+        }
+        if let Some(pointer) = response.hover_pos() {
+            input.hover_ground = self.camera.ground_point(to_ndc(pointer), aspect, 0.0);
+        }
+        let ray_at = |p: egui::Pos2| {
+            let (o, d) = self.camera.ray(to_ndc(p), aspect);
+            (o, d, self.camera.ground_point(to_ndc(p), aspect, 0.0))
+        };
+        if response.clicked() {
+            input.clicked = response.interact_pointer_pos().map(ray_at);
+        }
+        if response.secondary_clicked() {
+            input.secondary_clicked = response.interact_pointer_pos().map(ray_at);
+        }
+
+        self.rebuild_batch(scene);
+        if !self.framed {
+            self.frame_scene(scene, aspect);
+        }
+        self.paint(ui, rect);
+        self.paint_labels(ui, rect);
+        input
+    }
+
+    /// Centres the view on what is drawn and zooms so that all of it shows.
+    pub fn frame_scene(&mut self, scene: &Scene, aspect: f32) {
+        let Some((lo, hi)) = crate::render::batch::content_bounds(scene) else {
+            return;
+        };
+        let extent = hi - lo;
+        if extent.x.max(extent.y) < 2.0 {
+            return; // Wait for more than a robot or two.
+        }
+        let half = (extent.y / 2.0).max(extent.x / 2.0 / aspect.max(0.1)) * 1.08;
+        self.camera.centre = glam::Vec3::new((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0, 0.0);
+        self.camera.distance = half / (self.camera.fov_y / 2.0).tan();
+        self.framed = true;
+    }
+
+    fn rebuild_batch(&mut self, scene: &Scene) {
+        if self.batched_generation == Some(scene.generation()) {
+            return;
+        }
+        let mut gpu = self.gpu.lock().expect("gpu state");
+        gpu.batch.rebuild(scene);
+        gpu.generation = scene.generation();
+        let light = scene.lighting();
+        let [r, g, b, a] = light.background.0;
+        gpu.lighting = Lighting {
+            direction: light.direction,
+            ambient: light.ambient,
+            background: [r, g, b, a].map(|c| f32::from(c) / 255.0),
+        };
+        self.segments = gpu.batch.segment_count();
+        self.batched_generation = Some(scene.generation());
+    }
+
+    fn paint(&self, ui: &mut Ui, rect: Rect) {
+        let gpu = self.gpu.clone();
+        let view_proj = self
+            .camera
+            .view_projection(rect.width() / rect.height().max(1.0));
+        let callback = egui_glow::CallbackFn::new(move |info, painter| {
+            let gl = painter.gl();
+            let mut gpu = gpu.lock().expect("gpu state");
+            let state = &mut *gpu;
+            if state.renderer.is_none() && state.failed.is_none() {
+                match SceneRenderer::new(gl) {
+                    Ok(r) => state.renderer = Some(r),
+                    Err(e) => {
+                        tracing::error!("3D view disabled: {e}");
+                        state.failed = Some(e.to_string());
+                    }
+                }
+            }
+            let Some(renderer) = state.renderer.as_mut() else {
+                return;
+            };
+            renderer.upload(gl, &state.batch, state.generation);
+            let clip = info.clip_rect_in_pixels();
+            // SAFETY: egui_glow made this context current and restores its state afterwards.
+            unsafe {
+                gl.enable(glow::SCISSOR_TEST);
+                gl.scissor(
+                    clip.left_px,
+                    clip.from_bottom_px,
+                    clip.width_px,
+                    clip.height_px,
+                );
+            }
+            renderer.draw(gl, view_proj);
+        });
+        ui.painter().add(egui::PaintCallback {
+            rect,
+            callback: Arc::new(callback),
+        });
+    }
+
+    fn paint_labels(&self, ui: &mut Ui, rect: Rect) {
+        let gpu = self.gpu.lock().expect("gpu state");
+        let size = Vec2::new(rect.width(), rect.height());
+        let painter = ui.painter_at(rect);
+        for label in &gpu.batch.labels {
+            let Some(at) = self.camera.to_screen(label.pos, size) else {
+                continue;
+            };
+            let [r, g, b, a] = label.color.0;
+            painter.text(
+                rect.min + egui::vec2(at.x, at.y),
+                egui::Align2::LEFT_BOTTOM,
+                &label.text,
+                egui::FontId::proportional(13.0),
+                Color32::from_rgba_unmultiplied(r, g, b, a),
+            );
+        }
+    }
+}

@@ -1,0 +1,382 @@
+//! The contents of a world window: the plugins made from the composition, the scene they fill,
+//! the item tree, the 3D view, and the chain of responsibility that input flows along
+//! (active event handler first, then the clicked object, then the world).
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use eframe::egui::{self, Ui};
+use pv3d_plugins::config::DeviceRef;
+use pv3d_plugins::device::DeviceAccess;
+use pv3d_plugins::plugin::{Anchors, Handled, InputEvent, Plugin, PluginContext, PluginRegistry};
+use pv3d_plugins::scene::{NodeId, Scene};
+
+use super::plugin_config::{config_from_instance, write_back};
+use super::view3d::View3d;
+use crate::composition::PluginInstance;
+
+/// A plugin and what it was made from.
+struct Slot {
+    plugin: Box<dyn Plugin>,
+    device: Option<Arc<dyn DeviceAccess>>,
+    instance: PluginInstance,
+}
+
+/// Looks up the device access for a plugin's device.
+pub type DeviceLookup<'a> = &'a dyn Fn(&DeviceRef) -> Option<Arc<dyn DeviceAccess>>;
+
+/// One world window's state.
+pub struct Viewer {
+    scene: Scene,
+    anchors: Anchors,
+    slots: Vec<Slot>,
+    pub view: View3d,
+    /// Index of the active event handler (the selected robot).
+    active: Option<usize>,
+    /// Plugins that could not be made, with why.
+    pub errors: Vec<String>,
+    /// Whether the last update or input changed anything that needs a redraw.
+    pub dirty: bool,
+    /// The Player servers, for the status panel.
+    pub robots: Option<Arc<crate::robots::RobotManager>>,
+    status: super::status_panel::StatusPanel,
+    /// Where "Save" writes the composition with the plugins' current state.
+    pub save_target: Option<SaveTarget>,
+    save_message: Option<String>,
+}
+
+/// The composition a session came from and the file its state is saved to.
+pub struct SaveTarget {
+    pub path: std::path::PathBuf,
+    pub composition: crate::composition::Composition,
+}
+
+impl Viewer {
+    /// Makes a plugin for every instance the registry knows. A plugin that fails is reported
+    /// in [`Viewer::errors`] and the others carry on.
+    pub fn new(
+        instances: Vec<PluginInstance>,
+        registry: &PluginRegistry,
+        devices: DeviceLookup<'_>,
+    ) -> Viewer {
+        let mut viewer = Viewer {
+            scene: Scene::new(),
+            anchors: Anchors::default(),
+            slots: Vec::new(),
+            view: View3d::default(),
+            active: None,
+            errors: Vec::new(),
+            dirty: true,
+            robots: None,
+            status: Default::default(),
+            save_target: None,
+            save_message: None,
+        };
+        for instance in instances {
+            let config = config_from_instance(&instance);
+            let Some(create) = registry.constructor(&config.library) else {
+                let known: Vec<&str> = registry.libraries().collect();
+                viewer.errors.push(format!(
+                    "{}: unknown plugin library {:?}; built in: {}",
+                    config.origin,
+                    config.library,
+                    known.join(", ")
+                ));
+                continue;
+            };
+            let device = config.device.as_ref().and_then(devices);
+            let mut ctx = PluginContext {
+                scene: &mut viewer.scene,
+                device: device.as_deref(),
+                anchors: &mut viewer.anchors,
+                now: Instant::now(),
+            };
+            match create(config, &mut ctx) {
+                Ok(plugin) => viewer.slots.push(Slot {
+                    plugin,
+                    device,
+                    instance,
+                }),
+                Err(e) => viewer.errors.push(e.to_string()),
+            }
+        }
+        for e in &viewer.errors {
+            tracing::error!("{e}");
+        }
+        viewer
+    }
+
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    pub fn plugin_count(&self) -> usize {
+        self.slots.len()
+    }
+
+    /// Lets every plugin take its newest data. Returns whether the scene changed.
+    pub fn update(&mut self, now: Instant) -> bool {
+        let mut changed = false;
+        for slot in &mut self.slots {
+            let mut ctx = PluginContext {
+                scene: &mut self.scene,
+                device: slot.device.as_deref(),
+                anchors: &mut self.anchors,
+                now,
+            };
+            changed |= slot.plugin.update(&mut ctx);
+        }
+        self.dirty |= changed;
+        changed
+    }
+
+    /// Sends an event to one plugin.
+    fn send(&mut self, index: usize, event: &InputEvent) -> Handled {
+        let slot = &mut self.slots[index];
+        let mut ctx = PluginContext {
+            scene: &mut self.scene,
+            device: slot.device.as_deref(),
+            anchors: &mut self.anchors,
+            now: Instant::now(),
+        };
+        slot.plugin.on_event(event, &mut ctx)
+    }
+
+    /// Tells every plugin to stop (space key, focus lost, quitting).
+    pub fn stop_all(&mut self) {
+        for i in 0..self.slots.len() {
+            self.send(i, &InputEvent::StopAll);
+        }
+    }
+
+    /// Makes plugin `index` the active event handler (or none).
+    pub fn set_active(&mut self, index: Option<usize>) {
+        if self.active == index {
+            return;
+        }
+        if let Some(old) = self.active {
+            self.send(old, &InputEvent::Activated(false));
+        }
+        self.active = index;
+        if let Some(new) = index {
+            self.send(new, &InputEvent::Activated(true));
+        }
+        self.dirty = true;
+    }
+
+    /// The plugin owning a scene node (the node itself or one of its ancestors).
+    fn owner_of(&self, node: NodeId) -> Option<usize> {
+        let mut current = Some(node);
+        while let Some(id) = current {
+            if let Some(i) = self.slots.iter().position(|s| s.plugin.node() == Some(id)) {
+                return Some(i);
+            }
+            current = self.scene.get(id).and_then(|o| o.parent);
+        }
+        None
+    }
+
+    /// A click in the 3D view, down the chain: active handler, clicked object, world.
+    pub fn click(&mut self, picked: Option<NodeId>, ground: Option<glam::Vec3>) {
+        let owner = picked.and_then(|n| self.owner_of(n));
+        // Clicking another robot selects it.
+        if let Some(o) = owner
+            && self.active != Some(o)
+            && self.slots[o].plugin.can_be_active()
+        {
+            self.set_active(Some(o));
+            return;
+        }
+        let event = match (picked, ground) {
+            (Some(node), _) => InputEvent::ObjectClicked(node),
+            (None, Some(point)) => InputEvent::GroundClicked(point),
+            (None, None) => return,
+        };
+        if let Some(active) = self.active
+            && self.send(active, &event) == Handled::Yes
+        {
+            self.dirty = true;
+            return;
+        }
+        if let Some(o) = owner
+            && self.send(o, &event) == Handled::Yes
+        {
+            self.dirty = true;
+            return;
+        }
+        // The world: a click on empty ground deselects.
+        if picked.is_none() {
+            self.set_active(None);
+        }
+    }
+
+    /// Selects the next robot that can be driven (Tab).
+    pub fn cycle_active(&mut self) {
+        let drivable: Vec<usize> = (0..self.slots.len())
+            .filter(|&i| self.slots[i].plugin.can_be_active())
+            .collect();
+        if drivable.is_empty() {
+            return;
+        }
+        let next = match self
+            .active
+            .and_then(|a| drivable.iter().position(|&i| i == a))
+        {
+            Some(p) => drivable[(p + 1) % drivable.len()],
+            None => drivable[0],
+        };
+        self.set_active(Some(next));
+    }
+
+    /// The whole window: item tree on the left, 3D view in the middle.
+    pub fn ui(&mut self, ui: &mut Ui) {
+        self.handle_keys(ui);
+        egui::Panel::left("item-tree")
+            .resizable(true)
+            .default_size(230.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.item_tree(ui));
+            });
+        if let Some(robots) = self.robots.clone() {
+            egui::Panel::bottom("robot-status")
+                .resizable(true)
+                .show(ui, |ui| self.status.ui(ui, &robots));
+        }
+        egui::CentralPanel::default()
+            .frame(egui::Frame::NONE)
+            .show(ui, |ui| {
+                let input = self.view.show(ui, &self.scene);
+                if input.camera_moved {
+                    self.dirty = true;
+                }
+                if let Some((origin, dir, ground)) = input.clicked {
+                    let picked = self.scene.pick(origin, dir).map(|(n, _)| n);
+                    self.click(picked, ground);
+                }
+            });
+    }
+
+    fn handle_keys(&mut self, ui: &mut Ui) {
+        let (space, tab, t, focus_lost) = ui.input(|i| {
+            let focus_lost = i
+                .events
+                .iter()
+                .any(|e| matches!(e, egui::Event::WindowFocused(false)));
+            (
+                i.key_pressed(egui::Key::Space),
+                i.key_pressed(egui::Key::Tab),
+                i.key_pressed(egui::Key::T),
+                focus_lost,
+            )
+        });
+        let typing = ui.ctx().egui_wants_keyboard_input();
+        if focus_lost || (space && !typing) {
+            self.stop_all();
+        }
+        if tab && !typing {
+            self.cycle_active();
+        }
+        if t && !typing {
+            self.view.camera.toggle_projection();
+            self.dirty = true;
+        }
+    }
+
+    fn item_tree(&mut self, ui: &mut Ui) {
+        ui.heading("Components");
+        for error in &self.errors {
+            ui.colored_label(egui::Color32::from_rgb(230, 90, 80), error);
+        }
+        let now = Instant::now();
+        let mut activate = None;
+        for (i, slot) in self.slots.iter_mut().enumerate() {
+            let active = self.active == Some(i);
+            let mut title = slot.plugin.title();
+            if active {
+                title.push_str("  (active)");
+            }
+            egui::CollapsingHeader::new(title)
+                .id_salt(("plugin", i))
+                .show(ui, |ui| {
+                    let mut ctx = PluginContext {
+                        scene: &mut self.scene,
+                        device: slot.device.as_deref(),
+                        anchors: &mut self.anchors,
+                        now,
+                    };
+                    slot.plugin.ui(ui, &mut ctx);
+                    for service in slot.plugin.services() {
+                        if ui
+                            .button(service.name)
+                            .on_hover_text(service.description)
+                            .clicked()
+                        {
+                            slot.plugin.run_service(service.name, &mut ctx);
+                        }
+                    }
+                    if slot.plugin.can_be_active() && !active && ui.button("Select").clicked() {
+                        activate = Some(i);
+                    }
+                });
+        }
+        if let Some(i) = activate {
+            self.set_active(Some(i));
+        }
+        if let Some(target) = &self.save_target {
+            ui.separator();
+            if ui
+                .button("Save")
+                .on_hover_text(format!(
+                    "write the composition with the current state to {}",
+                    target.path.display()
+                ))
+                .clicked()
+            {
+                self.save_message = Some(match self.save_now() {
+                    Ok(path) => format!("saved to {}", path.display()),
+                    Err(e) => format!("not saved: {e}"),
+                });
+            }
+            if let Some(message) = &self.save_message {
+                ui.small(message);
+            }
+        }
+        ui.separator();
+        ui.small("drag: pan/orbit · wheel: zoom · T: top/perspective · Tab: next robot · Space: stop all");
+    }
+
+    /// Writes the composition, with every plugin's current state, to the save target.
+    pub fn save_now(&self) -> std::io::Result<std::path::PathBuf> {
+        let Some(target) = &self.save_target else {
+            return Err(std::io::Error::other("no file to save to (use --save-to)"));
+        };
+        let text = crate::composition::emit_document(&target.composition, &self.save());
+        std::fs::write(&target.path, text)?;
+        tracing::info!("composition saved to {}", target.path.display());
+        Ok(target.path.clone())
+    }
+
+    /// The composition's plugin elements with every plugin's current state written back.
+    pub fn save(&self) -> Vec<PluginInstance> {
+        self.slots
+            .iter()
+            .map(|slot| {
+                let mut instance = slot.instance.clone();
+                write_back(&mut instance.element, &slot.plugin.save());
+                instance
+            })
+            .collect()
+    }
+}
+
+impl Drop for Viewer {
+    fn drop(&mut self) {
+        // Leave no robot moving when the window goes away, and keep what the person set up.
+        self.stop_all();
+        if self.save_target.is_some()
+            && let Err(e) = self.save_now()
+        {
+            tracing::error!("could not save the composition on exit: {e}");
+        }
+    }
+}

@@ -1,0 +1,188 @@
+//! The viewer in a real window (eframe + glow), and the same viewer offscreen for
+//! `--screenshot` with no X server.
+//!
+//! Redraw policy: the robot threads call a waker when data arrives; the waker asks egui for a
+//! repaint *within* the redraw interval, so however many messages arrive the UI runs at most
+//! once per interval, and not at all while nothing changes. Input repaints at once.
+
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use eframe::egui;
+use image::RgbaImage;
+
+use super::headless_ui::HeadlessUi;
+use super::viewer::Viewer;
+
+/// When the window redraws.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum RedrawPolicy {
+    /// At most once per interval, and only when data arrived or the person acted.
+    OnChange { interval: Duration },
+    /// Continuously (the old behaviour, for comparison).
+    WhenIdle,
+}
+
+/// Wakes the UI from other threads; set once the window exists.
+#[derive(Clone, Default)]
+pub struct UiWaker {
+    ctx: Arc<Mutex<Option<(egui::Context, Duration)>>>,
+}
+
+impl UiWaker {
+    /// New data arrived: schedule a repaint within the redraw interval.
+    pub fn wake(&self) {
+        if let Some((ctx, interval)) = self.ctx.lock().expect("waker").as_ref() {
+            ctx.request_repaint_after(*interval);
+        }
+    }
+
+    fn install(&self, ctx: egui::Context, interval: Duration) {
+        *self.ctx.lock().expect("waker") = Some((ctx, interval));
+    }
+}
+
+/// A screenshot to take, then quit.
+#[derive(Debug, Clone)]
+pub struct ScreenshotRequest {
+    pub path: PathBuf,
+    /// Seconds to let the composition run first.
+    pub after: Duration,
+}
+
+struct WindowApp {
+    viewer: Viewer,
+    policy: RedrawPolicy,
+    screenshot: Option<ScreenshotRequest>,
+    started: Instant,
+    shot_requested: bool,
+    shot_done: Arc<Mutex<Option<Result<(), String>>>>,
+    on_frame: Box<dyn FnMut(&mut Viewer)>,
+}
+
+impl eframe::App for WindowApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        (self.on_frame)(&mut self.viewer);
+        self.viewer.update(Instant::now());
+        self.viewer.ui(ui);
+        self.viewer.dirty = false;
+        if self.policy == RedrawPolicy::WhenIdle {
+            ui.ctx().request_repaint();
+        }
+        self.take_screenshot(ui.ctx());
+    }
+
+    fn on_exit(&mut self, _gl: Option<&eframe::glow::Context>) {
+        self.viewer.stop_all();
+    }
+}
+
+impl WindowApp {
+    fn take_screenshot(&mut self, ctx: &egui::Context) {
+        let Some(request) = &self.screenshot else {
+            return;
+        };
+        if let Some(result) = self.shot_done.lock().expect("screenshot").take() {
+            match result {
+                Ok(()) => tracing::info!("screenshot written to {}", request.path.display()),
+                Err(e) => tracing::error!("screenshot failed: {e}"),
+            }
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+            return;
+        }
+        if self.shot_requested {
+            ctx.request_repaint_after(Duration::from_millis(50));
+            return;
+        }
+        if self.started.elapsed() < request.after {
+            ctx.request_repaint_after(Duration::from_millis(100));
+            return;
+        }
+        self.shot_requested = true;
+        let path = request.path.clone();
+        let done = self.shot_done.clone();
+        let waker = ctx.clone();
+        ctx.request_screenshot(move |image| {
+            let [w, h] = image.size;
+            let bytes: Vec<u8> = image.pixels.iter().flat_map(|c| c.to_array()).collect();
+            let result = RgbaImage::from_raw(w as u32, h as u32, bytes)
+                .ok_or_else(|| "screenshot has the wrong size".to_string())
+                .and_then(|img| img.save(&path).map_err(|e| e.to_string()));
+            *done.lock().expect("screenshot") = Some(result);
+            waker.request_repaint();
+        });
+    }
+}
+
+/// Options of a window.
+pub struct WindowOptions {
+    pub title: String,
+    pub size: (u32, u32),
+    pub policy: RedrawPolicy,
+    pub screenshot: Option<ScreenshotRequest>,
+}
+
+/// Runs the viewer in a window until it is closed. `on_frame` runs before every UI pass
+/// (e.g. to step an embedded simulation's bookkeeping).
+pub fn run_window(
+    viewer: Viewer,
+    options: WindowOptions,
+    waker: UiWaker,
+    on_frame: Box<dyn FnMut(&mut Viewer)>,
+) -> Result<(), String> {
+    let interval = match options.policy {
+        RedrawPolicy::OnChange { interval } => interval,
+        RedrawPolicy::WhenIdle => Duration::ZERO,
+    };
+    let native = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title(&options.title)
+            .with_inner_size([options.size.0 as f32, options.size.1 as f32]),
+        depth_buffer: 24,
+        ..Default::default()
+    };
+    let app = WindowApp {
+        viewer,
+        policy: options.policy,
+        screenshot: options.screenshot,
+        started: Instant::now(),
+        shot_requested: false,
+        shot_done: Arc::default(),
+        on_frame,
+    };
+    eframe::run_native(
+        &options.title,
+        native,
+        Box::new(move |cc| {
+            waker.install(cc.egui_ctx.clone(), interval);
+            Ok(Box::new(app))
+        }),
+    )
+    .map_err(|e| e.to_string())
+}
+
+/// Runs the viewer offscreen for `after`, redrawing at `interval`, and returns the last frame.
+pub fn headless_screenshot(
+    viewer: &mut Viewer,
+    size: (u32, u32),
+    after: Duration,
+    interval: Duration,
+    mut on_frame: impl FnMut(&mut Viewer),
+) -> Result<RgbaImage, String> {
+    let mut ui = HeadlessUi::new(size.0, size.1).map_err(|e| e.to_string())?;
+    let started = Instant::now();
+    loop {
+        on_frame(viewer);
+        viewer.update(Instant::now());
+        ui.run(|ui| viewer.ui(ui));
+        if started.elapsed() >= after {
+            break;
+        }
+        std::thread::sleep(interval.min(after.saturating_sub(started.elapsed())));
+    }
+    // Two more passes so that layouts settle with the final data.
+    ui.run(|ui| viewer.ui(ui));
+    ui.run(|ui| viewer.ui(ui));
+    Ok(ui.read_pixels())
+}

@@ -1,0 +1,109 @@
+//! Turning handlers into plugin instances: every device a server reports that fits a handler's
+//! mask gets a copy of the handler's templates, with the template's `<playerDeviceMask>`
+//! replaced by the found device's address (the paper's Fig. 4 and 5).
+
+use super::device_mask::FoundDevice;
+use super::error::SourcePos;
+use super::model::{Composition, read_mask};
+use super::xml_tree::{Element, Node};
+
+/// A plugin to create: its configuration element and, when it came from a handler, the device
+/// it was made for.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PluginInstance {
+    pub element: Element,
+    pub device: Option<FoundDevice>,
+}
+
+impl PluginInstance {
+    pub fn library(&self) -> &str {
+        self.element.attr("library").unwrap_or_default()
+    }
+
+    pub fn id(&self) -> &str {
+        self.element.attr("id").unwrap_or_default()
+    }
+}
+
+/// All plugin instances of a composition for the devices the servers reported: first the
+/// handlers' (in handler, then device order), then the plugins named outright. Ids are made
+/// unique by appending the device address where a template is used more than once.
+pub fn instantiate(composition: &Composition, devices: &[FoundDevice]) -> Vec<PluginInstance> {
+    let mut instances = Vec::new();
+    for handler in &composition.handlers {
+        for device in devices.iter().filter(|d| handler.mask.matches(d)) {
+            for template in &handler.templates {
+                instances.push(PluginInstance {
+                    element: bind_template(template, device),
+                    device: Some(device.clone()),
+                });
+            }
+        }
+    }
+    for plugin in &composition.plugins {
+        instances.push(PluginInstance {
+            element: plugin.clone(),
+            device: None,
+        });
+    }
+    make_ids_unique(&mut instances);
+    instances
+}
+
+/// A copy of `template` whose `<playerDeviceMask>` is the concrete address of `device`.
+fn bind_template(template: &Element, device: &FoundDevice) -> Element {
+    let mut plugin = template.clone();
+    let address = device_address_element(
+        device,
+        template.child("playerDeviceMask").map(|m| m.pos.clone()),
+    );
+    let existing = plugin
+        .children
+        .iter()
+        .position(|n| matches!(n, Node::Element(e) if e.name == "playerDeviceMask"));
+    match existing {
+        Some(i) => plugin.children[i] = Node::Element(address),
+        None => plugin.children.insert(0, Node::Element(address)),
+    }
+    plugin
+}
+
+fn device_address_element(device: &FoundDevice, pos: Option<SourcePos>) -> Element {
+    let mut element = Element::new("playerDeviceMask", pos.unwrap_or_else(SourcePos::generated));
+    element.set_attr("host", device.host.clone());
+    element.set_attr("port", device.port.to_string());
+    element.set_attr("interface", device.addr.interf.to_string());
+    element.set_attr("driver", device.driver.clone());
+    element.set_attr("index", device.addr.index.to_string());
+    element
+}
+
+fn make_ids_unique(instances: &mut [PluginInstance]) {
+    let ids: Vec<String> = instances.iter().map(|i| i.id().to_string()).collect();
+    let mut used: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
+    for (instance, id) in instances.iter_mut().zip(&ids) {
+        let base = if id.is_empty() {
+            instance
+                .library()
+                .trim_start_matches("libpv3d_")
+                .to_string()
+        } else {
+            id.clone()
+        };
+        let shared = ids.iter().filter(|other| *other == id).count() > 1;
+        if id.is_empty() || shared {
+            // robot1, robot2, ...: short, stable for a given device order, and readable.
+            let n = used.entry(base.clone()).or_insert(0);
+            *n += 1;
+            instance.element.set_attr("id", format!("{base}{n}"));
+        }
+    }
+}
+
+/// The concrete device a plugin element's `<playerDeviceMask>` names, if it names one fully
+/// (interface and index; host and port default to the first server).
+pub fn bound_mask(element: &Element) -> Option<super::device_mask::DeviceMask> {
+    element
+        .child("playerDeviceMask")
+        .and_then(|m| read_mask(m).ok())
+}

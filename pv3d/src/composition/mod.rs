@@ -1,0 +1,24 @@
+//! Compositions: the XML files that say which Player servers to use and which plugins to make
+//! of their devices.
+//!
+//! `pv3d a.xml b.xml` loads each file (expanding `xi:include`s relative to the including file),
+//! merges them, and, once the servers have reported their devices, [`instantiate`]s the
+//! handlers' plugin templates for every device that fits a mask. Every error names
+//! file:line:column.
+
+mod device_mask;
+mod emit;
+mod error;
+mod include;
+mod instantiate;
+mod model;
+mod parsers;
+mod xml_tree;
+
+pub use device_mask::{DeviceMask, FoundDevice, MaskError};
+pub use emit::{emit_document, to_xml_string};
+pub use error::{ConfigError, SourcePos};
+pub use instantiate::{PluginInstance, bound_mask, instantiate};
+pub use model::{ClientDecl, Composition, DEFAULT_PORT, ExtensionElement, MaskHandler};
+pub use parsers::ParserRegistry;
+pub use xml_tree::{Attribute, Element, Node, parse_str};

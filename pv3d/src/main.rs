@@ -1,0 +1,169 @@
+//! `pv3d a.xml b.xml …` — compose Player devices into a 3D viewer.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use anyhow::{Context, Result, bail};
+use clap::Parser;
+use pv3d::app::{
+    RedrawPolicy, ScreenshotRequest, UiWaker, Viewer, WindowOptions, headless_screenshot,
+    run_window,
+};
+use pv3d::composition::{Composition, ParserRegistry, emit_document, instantiate};
+use pv3d::robots::RobotManager;
+
+/// Player Viewer 3D: compose Player devices into a 3D viewer and tele-operation tool.
+#[derive(Parser, Debug)]
+#[command(version, about)]
+struct Cli {
+    /// Composition files (`<pv3d>` documents or lone `<plugin>` templates), merged in order.
+    files: Vec<PathBuf>,
+
+    /// Simulate stage-worlds/multirobot.world in-process and show it with
+    /// configs/multirobot.pv3d.xml (or the compositions given): no Player server needed.
+    #[arg(long)]
+    demo: bool,
+
+    /// Write the composition the handlers produced to this file and exit.
+    #[arg(long, value_name = "OUT.xml")]
+    emit_config: Option<PathBuf>,
+
+    /// Run the composition, wait `--after` seconds, write the window to this PNG and exit.
+    #[arg(long, value_name = "OUT.png")]
+    screenshot: Option<PathBuf>,
+
+    /// Seconds to run before taking the screenshot.
+    #[arg(long, default_value_t = 2.0, value_name = "SECONDS")]
+    after: f64,
+
+    /// Render offscreen (no window, no X server needed). Implied by --screenshot when no
+    /// DISPLAY is set.
+    #[arg(long)]
+    headless: bool,
+
+    /// Window size, WIDTHxHEIGHT.
+    #[arg(long, default_value = "1280x800", value_parser = parse_size)]
+    size: (u32, u32),
+
+    /// Redraw at most this often while data arrives, in seconds.
+    #[arg(long, default_value_t = 0.10, value_name = "SECONDS")]
+    redraw_interval: f64,
+
+    /// Redraw continuously instead of only when something changed.
+    #[arg(long)]
+    redraw_when_idle: bool,
+
+    /// Write the composition with the plugins' current state here on exit and on "Save".
+    #[arg(long, value_name = "OUT.xml")]
+    save_to: Option<PathBuf>,
+
+    /// Seconds to wait for the Player servers' device lists before building the scene.
+    #[arg(long, default_value_t = 3.0, value_name = "SECONDS")]
+    connect_timeout: f64,
+}
+
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let (w, h) = text
+        .split_once('x')
+        .ok_or("expected WIDTHxHEIGHT, e.g. 1280x800")?;
+    let w: u32 = w.parse().map_err(|_| format!("bad width {w:?}"))?;
+    let h: u32 = h.parse().map_err(|_| format!("bad height {h:?}"))?;
+    if !(64..=8192).contains(&w) || !(64..=8192).contains(&h) {
+        return Err("width and height must be from 64 to 8192".into());
+    }
+    Ok((w, h))
+}
+
+fn main() -> Result<()> {
+    player_proto::logging::init("info");
+    let mut cli = Cli::parse();
+    if cli.demo && cli.files.is_empty() {
+        cli.files.push(pv3d::demo::composition_file());
+    }
+    if cli.files.is_empty() {
+        bail!("no composition given: try `pv3d --demo` or `pv3d configs/single-laser.pv3d.xml`");
+    }
+    if !(0.001..=10.0).contains(&cli.redraw_interval) {
+        bail!("--redraw-interval must be from 0.001 to 10 seconds");
+    }
+
+    let parsers = ParserRegistry::default();
+    let mut composition = Composition::load_files(&cli.files, &parsers)?;
+    // Kept alive for as long as the viewer runs.
+    let _demo = if cli.demo {
+        Some(pv3d::demo::start(&mut composition)?)
+    } else {
+        None
+    };
+    let waker = UiWaker::default();
+    let wake = waker.clone();
+    let robots = Arc::new(RobotManager::start(
+        &composition.clients,
+        Some(Arc::new(move || wake.wake())),
+    ));
+    robots.wait_for_handshakes(Duration::from_secs_f64(
+        cli.connect_timeout.clamp(0.0, 60.0),
+    ));
+    let devices = robots.devices();
+    let instances = instantiate(&composition, &devices);
+
+    if let Some(out) = &cli.emit_config {
+        std::fs::write(out, emit_document(&composition, &instances))
+            .with_context(|| format!("writing {}", out.display()))?;
+        eprintln!("wrote {} ({} plugins)", out.display(), instances.len());
+        return Ok(());
+    }
+
+    let registry = pv3d_plugins::standard_plugins();
+    let lookup = robots.clone();
+    let mut viewer = Viewer::new(instances, &registry, &|device| lookup.device(device));
+    if !composition.clients.is_empty() {
+        viewer.robots = Some(robots);
+    }
+    if let Some(path) = &cli.save_to {
+        viewer.save_target = Some(pv3d::app::viewer::SaveTarget {
+            path: path.clone(),
+            composition: composition.clone(),
+        });
+    }
+    let interval = Duration::from_secs_f64(cli.redraw_interval);
+    let after = Duration::from_secs_f64(cli.after.max(0.0));
+    let no_display =
+        std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none();
+
+    match &cli.screenshot {
+        Some(path) if cli.headless || no_display => {
+            let mut viewer = viewer;
+            let started = Instant::now();
+            let image = headless_screenshot(&mut viewer, cli.size, after, interval, |_| {})
+                .map_err(anyhow::Error::msg)?;
+            image
+                .save(path)
+                .with_context(|| format!("writing {}", path.display()))?;
+            eprintln!(
+                "wrote {} after {:.1} s",
+                path.display(),
+                started.elapsed().as_secs_f64()
+            );
+            Ok(())
+        }
+        _ => {
+            let options = WindowOptions {
+                title: "pv3d".into(),
+                size: cli.size,
+                policy: if cli.redraw_when_idle {
+                    RedrawPolicy::WhenIdle
+                } else {
+                    RedrawPolicy::OnChange { interval }
+                },
+                screenshot: cli
+                    .screenshot
+                    .clone()
+                    .map(|path| ScreenshotRequest { path, after }),
+            };
+            run_window(viewer, options, UiWaker::default(), Box::new(|_| {}))
+                .map_err(anyhow::Error::msg)
+        }
+    }
+}

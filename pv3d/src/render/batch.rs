@@ -1,0 +1,141 @@
+//! Turning the scene into a few big vertex arrays in world space, so the whole scene draws in
+//! four GL calls however many robots there are. Buffers are reused from frame to frame.
+
+use bytemuck::{Pod, Zeroable};
+use glam::{Affine3A, Vec3};
+use pv3d_plugins::scene::{Label, Scene, Vertex};
+
+/// A coloured vertex as the GPU reads it: 16 bytes.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Pod, Zeroable)]
+pub struct GpuVertex {
+    pub pos: [f32; 3],
+    pub color: [u8; 4],
+}
+
+/// A lit vertex as the GPU reads it: 28 bytes.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Pod, Zeroable)]
+pub struct GpuMeshVertex {
+    pub pos: [f32; 3],
+    pub normal: [f32; 3],
+    pub color: [u8; 4],
+}
+
+/// The scene flattened for drawing.
+#[derive(Debug, Default)]
+pub struct SceneBatch {
+    pub lines: Vec<GpuVertex>,
+    pub points: Vec<GpuVertex>,
+    pub triangles: Vec<GpuVertex>,
+    pub mesh: Vec<GpuMeshVertex>,
+    /// Labels with world-space positions, drawn as text over the 3D view.
+    pub labels: Vec<Label>,
+}
+
+impl SceneBatch {
+    /// Refills the arrays from `scene`, keeping their capacity.
+    pub fn rebuild(&mut self, scene: &Scene) {
+        self.lines.clear();
+        self.points.clear();
+        self.triangles.clear();
+        self.mesh.clear();
+        self.labels.clear();
+        for (id, object) in scene.iter() {
+            let g = &object.geometry;
+            if g.is_empty() || !scene.is_shown(id) {
+                continue;
+            }
+            let to_world = scene.world_transform(id);
+            append(&mut self.lines, &g.lines, &to_world);
+            append(&mut self.points, &g.points, &to_world);
+            append(&mut self.triangles, &g.triangles, &to_world);
+            self.mesh.extend(g.mesh.iter().map(|v| {
+                GpuMeshVertex {
+                    pos: to_world.transform_point3(v.pos).to_array(),
+                    normal: to_world
+                        .transform_vector3(v.normal)
+                        .normalize_or_zero()
+                        .to_array(),
+                    color: v.color.0,
+                }
+            }));
+            self.labels.extend(g.labels.iter().map(|l| Label {
+                pos: to_world.transform_point3(l.pos),
+                ..l.clone()
+            }));
+        }
+    }
+
+    /// Line segments in the batch.
+    pub fn segment_count(&self) -> usize {
+        self.lines.len() / 2
+    }
+}
+
+fn append(out: &mut Vec<GpuVertex>, vertices: &[Vertex], to_world: &Affine3A) {
+    if *to_world == Affine3A::IDENTITY {
+        out.extend(vertices.iter().map(|v| GpuVertex {
+            pos: v.pos.to_array(),
+            color: v.color.0,
+        }));
+    } else {
+        out.extend(vertices.iter().map(|v| GpuVertex {
+            pos: to_world.transform_point3(v.pos).to_array(),
+            color: v.color.0,
+        }));
+    }
+}
+
+/// The lowest and highest corner of the solid things in the scene (meshes, lines and points;
+/// not flat fills such as the ground plane, nor objects tagged `grid`), for framing the view.
+pub fn content_bounds(scene: &Scene) -> Option<(Vec3, Vec3)> {
+    let mut bounds: Option<(Vec3, Vec3)> = None;
+    for (id, object) in scene.iter() {
+        if object.has_tag("grid") || !scene.is_shown(id) {
+            continue;
+        }
+        let to_world = scene.world_transform(id);
+        let g = &object.geometry;
+        let points = g
+            .lines
+            .iter()
+            .chain(&g.points)
+            .map(|v| v.pos)
+            .chain(g.mesh.iter().map(|v| v.pos));
+        for p in points {
+            let p = to_world.transform_point3(p);
+            bounds = Some(match bounds {
+                None => (p, p),
+                Some((lo, hi)) => (lo.min(p), hi.max(p)),
+            });
+        }
+    }
+    bounds
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use pv3d_plugins::scene::{Object3D, Rgba};
+
+    #[test]
+    fn geometry_lands_in_world_space() {
+        let mut scene = Scene::new();
+        let mut robot = Object3D::new("robot");
+        robot.transform = Affine3A::from_translation(Vec3::new(1.0, 2.0, 0.0));
+        robot.geometry.line(Vec3::ZERO, Vec3::X, Rgba::WHITE);
+        let robot = scene.add(robot);
+        let mut hidden = Object3D::new("hidden");
+        hidden.parent = Some(robot);
+        hidden.visible = false;
+        hidden.geometry.point(Vec3::ZERO, Rgba::WHITE);
+        scene.add(hidden);
+
+        let mut batch = SceneBatch::default();
+        batch.rebuild(&scene);
+        assert_eq!(batch.segment_count(), 1);
+        assert_eq!(batch.lines[1].pos, [2.0, 2.0, 0.0]);
+        assert!(batch.points.is_empty(), "hidden objects are not drawn");
+    }
+}

@@ -1,0 +1,346 @@
+//! Our own glow renderer of the scene batch: one program for flat-coloured lines, points and
+//! triangles, one for lit meshes; one vertex buffer per primitive kind, re-uploaded only when
+//! the scene changed.
+
+use std::sync::Arc;
+
+use eframe::glow::{self, HasContext};
+use glam::{Mat4, Vec3};
+
+use super::batch::{GpuMeshVertex, GpuVertex, SceneBatch};
+
+const FLAT_VERTEX: &str = r#"
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec4 a_color;
+uniform mat4 u_view_proj;
+uniform float u_point_size;
+out vec4 v_color;
+void main() {
+    gl_Position = u_view_proj * vec4(a_pos, 1.0);
+    gl_PointSize = u_point_size;
+    v_color = a_color;
+}
+"#;
+
+const FLAT_FRAGMENT: &str = r#"
+in vec4 v_color;
+out vec4 f_color;
+void main() { f_color = v_color; }
+"#;
+
+const LIT_VERTEX: &str = r#"
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec4 a_color;
+uniform mat4 u_view_proj;
+out vec4 v_color;
+out vec3 v_normal;
+void main() {
+    gl_Position = u_view_proj * vec4(a_pos, 1.0);
+    v_color = a_color;
+    v_normal = a_normal;
+}
+"#;
+
+const LIT_FRAGMENT: &str = r#"
+in vec4 v_color;
+in vec3 v_normal;
+uniform vec3 u_light_dir;
+uniform float u_ambient;
+out vec4 f_color;
+void main() {
+    float diffuse = max(dot(normalize(v_normal), normalize(u_light_dir)), 0.0);
+    f_color = vec4(v_color.rgb * (u_ambient + (1.0 - u_ambient) * diffuse), v_color.a);
+}
+"#;
+
+/// How the view is lit and cleared; the lights plugin sets these.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Lighting {
+    pub direction: Vec3,
+    pub ambient: f32,
+    pub background: [f32; 4],
+}
+
+impl Default for Lighting {
+    fn default() -> Self {
+        Lighting {
+            direction: Vec3::new(0.4, -0.3, 1.0),
+            ambient: 0.35,
+            background: [0.11, 0.12, 0.14, 1.0],
+        }
+    }
+}
+
+/// A vertex buffer and its layout.
+struct Buffer {
+    vao: glow::VertexArray,
+    vbo: glow::Buffer,
+    count: i32,
+}
+
+/// Why the renderer could not be created.
+#[derive(Debug, thiserror::Error)]
+#[error("OpenGL setup failed: {0}")]
+pub struct RendererError(pub String);
+
+/// Draws a [`SceneBatch`] with glow.
+pub struct SceneRenderer {
+    flat: glow::Program,
+    lit: glow::Program,
+    lines: Buffer,
+    points: Buffer,
+    triangles: Buffer,
+    mesh: Buffer,
+    /// Scene generation last uploaded; `None` forces an upload.
+    uploaded: Option<u64>,
+    pub point_size: f32,
+    pub lighting: Lighting,
+}
+
+impl SceneRenderer {
+    /// Compiles the shaders (GLSL 330 core, or 300 es on GLES) and creates the buffers.
+    pub fn new(gl: &glow::Context) -> Result<SceneRenderer, RendererError> {
+        let header = if gl.version().is_embedded {
+            "#version 300 es\nprecision mediump float;\n"
+        } else {
+            "#version 330 core\n"
+        };
+        // SAFETY: plain GL object creation on the current context.
+        unsafe {
+            let flat = program(gl, header, FLAT_VERTEX, FLAT_FRAGMENT)?;
+            let lit = program(gl, header, LIT_VERTEX, LIT_FRAGMENT)?;
+            Ok(SceneRenderer {
+                flat,
+                lit,
+                lines: flat_buffer(gl)?,
+                points: flat_buffer(gl)?,
+                triangles: flat_buffer(gl)?,
+                mesh: mesh_buffer(gl)?,
+                uploaded: None,
+                point_size: 3.0,
+                lighting: Lighting::default(),
+            })
+        }
+    }
+
+    /// Uploads the batch if the scene changed since the last upload.
+    pub fn upload(&mut self, gl: &glow::Context, batch: &SceneBatch, generation: u64) {
+        if self.uploaded == Some(generation) {
+            return;
+        }
+        // SAFETY: buffers were created on this context; slices are plain old data.
+        unsafe {
+            fill(
+                gl,
+                &mut self.lines,
+                bytemuck::cast_slice(&batch.lines),
+                batch.lines.len(),
+            );
+            fill(
+                gl,
+                &mut self.points,
+                bytemuck::cast_slice(&batch.points),
+                batch.points.len(),
+            );
+            fill(
+                gl,
+                &mut self.triangles,
+                bytemuck::cast_slice(&batch.triangles),
+                batch.triangles.len(),
+            );
+            fill(
+                gl,
+                &mut self.mesh,
+                bytemuck::cast_slice(&batch.mesh),
+                batch.mesh.len(),
+            );
+        }
+        self.uploaded = Some(generation);
+    }
+
+    /// Forgets what was uploaded (e.g. after a context change).
+    pub fn invalidate(&mut self) {
+        self.uploaded = None;
+    }
+
+    /// Clears the current viewport (colour and depth, within the scissor box the caller set)
+    /// and draws everything uploaded.
+    pub fn draw(&self, gl: &glow::Context, view_proj: Mat4) {
+        let matrix = view_proj.to_cols_array();
+        let bg = self.lighting.background;
+        // SAFETY: programs and buffers belong to this context; uniforms match the shaders.
+        unsafe {
+            gl.clear_color(bg[0], bg[1], bg[2], bg[3]);
+            gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT);
+            gl.enable(glow::DEPTH_TEST);
+            gl.depth_func(glow::LEQUAL);
+            gl.depth_mask(true);
+            gl.disable(glow::CULL_FACE);
+            gl.enable(glow::BLEND);
+            gl.blend_func(glow::SRC_ALPHA, glow::ONE_MINUS_SRC_ALPHA);
+            if !gl.version().is_embedded {
+                gl.enable(glow::PROGRAM_POINT_SIZE);
+            }
+
+            gl.use_program(Some(self.lit));
+            gl.uniform_matrix_4_f32_slice(
+                gl.get_uniform_location(self.lit, "u_view_proj").as_ref(),
+                false,
+                &matrix,
+            );
+            let light = self.lighting.direction.normalize_or_zero();
+            gl.uniform_3_f32(
+                gl.get_uniform_location(self.lit, "u_light_dir").as_ref(),
+                light.x,
+                light.y,
+                light.z,
+            );
+            gl.uniform_1_f32(
+                gl.get_uniform_location(self.lit, "u_ambient").as_ref(),
+                self.lighting.ambient,
+            );
+            draw_buffer(gl, &self.mesh, glow::TRIANGLES);
+
+            gl.use_program(Some(self.flat));
+            gl.uniform_matrix_4_f32_slice(
+                gl.get_uniform_location(self.flat, "u_view_proj").as_ref(),
+                false,
+                &matrix,
+            );
+            gl.uniform_1_f32(
+                gl.get_uniform_location(self.flat, "u_point_size").as_ref(),
+                self.point_size,
+            );
+            // Translucent fills first without writing depth, so lines on them stay visible.
+            gl.depth_mask(false);
+            draw_buffer(gl, &self.triangles, glow::TRIANGLES);
+            gl.depth_mask(true);
+            draw_buffer(gl, &self.lines, glow::LINES);
+            draw_buffer(gl, &self.points, glow::POINTS);
+
+            gl.bind_vertex_array(None);
+            gl.use_program(None);
+            gl.disable(glow::DEPTH_TEST);
+        }
+    }
+
+    /// Frees the GL objects.
+    pub fn destroy(&self, gl: &glow::Context) {
+        // SAFETY: objects belong to this context and are not used afterwards.
+        unsafe {
+            gl.delete_program(self.flat);
+            gl.delete_program(self.lit);
+            for b in [&self.lines, &self.points, &self.triangles, &self.mesh] {
+                gl.delete_vertex_array(b.vao);
+                gl.delete_buffer(b.vbo);
+            }
+        }
+    }
+}
+
+unsafe fn program(
+    gl: &glow::Context,
+    header: &str,
+    vertex: &str,
+    fragment: &str,
+) -> Result<glow::Program, RendererError> {
+    // SAFETY: the caller holds a current context.
+    unsafe {
+        let program = gl.create_program().map_err(RendererError)?;
+        let mut shaders = Vec::new();
+        for (kind, source) in [
+            (glow::VERTEX_SHADER, vertex),
+            (glow::FRAGMENT_SHADER, fragment),
+        ] {
+            let shader = gl.create_shader(kind).map_err(RendererError)?;
+            gl.shader_source(shader, &format!("{header}{source}"));
+            gl.compile_shader(shader);
+            if !gl.get_shader_compile_status(shader) {
+                return Err(RendererError(format!(
+                    "shader: {}",
+                    gl.get_shader_info_log(shader)
+                )));
+            }
+            gl.attach_shader(program, shader);
+            shaders.push(shader);
+        }
+        gl.link_program(program);
+        if !gl.get_program_link_status(program) {
+            return Err(RendererError(format!(
+                "link: {}",
+                gl.get_program_info_log(program)
+            )));
+        }
+        for shader in shaders {
+            gl.detach_shader(program, shader);
+            gl.delete_shader(shader);
+        }
+        Ok(program)
+    }
+}
+
+unsafe fn new_buffer(gl: &glow::Context) -> Result<Buffer, RendererError> {
+    // SAFETY: the caller holds a current context.
+    unsafe {
+        let vao = gl.create_vertex_array().map_err(RendererError)?;
+        let vbo = gl.create_buffer().map_err(RendererError)?;
+        gl.bind_vertex_array(Some(vao));
+        gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
+        Ok(Buffer { vao, vbo, count: 0 })
+    }
+}
+
+unsafe fn flat_buffer(gl: &glow::Context) -> Result<Buffer, RendererError> {
+    // SAFETY: the caller holds a current context; the layout matches GpuVertex.
+    unsafe {
+        let buffer = new_buffer(gl)?;
+        let stride = std::mem::size_of::<GpuVertex>() as i32;
+        gl.enable_vertex_attrib_array(0);
+        gl.vertex_attrib_pointer_f32(0, 3, glow::FLOAT, false, stride, 0);
+        gl.enable_vertex_attrib_array(1);
+        gl.vertex_attrib_pointer_f32(1, 4, glow::UNSIGNED_BYTE, true, stride, 12);
+        gl.bind_vertex_array(None);
+        Ok(buffer)
+    }
+}
+
+unsafe fn mesh_buffer(gl: &glow::Context) -> Result<Buffer, RendererError> {
+    // SAFETY: the caller holds a current context; the layout matches GpuMeshVertex.
+    unsafe {
+        let buffer = new_buffer(gl)?;
+        let stride = std::mem::size_of::<GpuMeshVertex>() as i32;
+        gl.enable_vertex_attrib_array(0);
+        gl.vertex_attrib_pointer_f32(0, 3, glow::FLOAT, false, stride, 0);
+        gl.enable_vertex_attrib_array(1);
+        gl.vertex_attrib_pointer_f32(1, 3, glow::FLOAT, false, stride, 12);
+        gl.enable_vertex_attrib_array(2);
+        gl.vertex_attrib_pointer_f32(2, 4, glow::UNSIGNED_BYTE, true, stride, 24);
+        gl.bind_vertex_array(None);
+        Ok(buffer)
+    }
+}
+
+unsafe fn fill(gl: &glow::Context, buffer: &mut Buffer, bytes: &[u8], count: usize) {
+    // SAFETY: the caller holds a current context and the buffer belongs to it.
+    unsafe {
+        gl.bind_buffer(glow::ARRAY_BUFFER, Some(buffer.vbo));
+        gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, bytes, glow::DYNAMIC_DRAW);
+        gl.bind_buffer(glow::ARRAY_BUFFER, None);
+    }
+    buffer.count = i32::try_from(count).unwrap_or(i32::MAX);
+}
+
+unsafe fn draw_buffer(gl: &glow::Context, buffer: &Buffer, mode: u32) {
+    if buffer.count == 0 {
+        return;
+    }
+    // SAFETY: the caller holds a current context with the matching program bound.
+    unsafe {
+        gl.bind_vertex_array(Some(buffer.vao));
+        gl.draw_arrays(mode, 0, buffer.count);
+    }
+}
+
+/// Shares the renderer between the UI thread's paint callbacks.
+pub type SharedRenderer = Arc<std::sync::Mutex<Option<SceneRenderer>>>;

@@ -1,0 +1,7 @@
+//! Player servers: the shared client per server and plugins' access to their devices.
+
+mod device_link;
+mod manager;
+
+pub use device_link::ClientDevice;
+pub use manager::RobotManager;

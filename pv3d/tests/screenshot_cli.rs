@@ -1,0 +1,188 @@
+//! `pv3d --screenshot` end to end: the binary loads a composition, runs it offscreen and writes
+//! a PNG whose pixels show what the composition says.
+
+use std::path::Path;
+use std::process::Command;
+
+fn pv3d() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_pv3d"))
+}
+
+#[test]
+fn a_ground_and_grid_composition_is_drawn_with_its_axes() {
+    let dir = tempfile::tempdir().unwrap();
+    let composition = dir.path().join("ground.xml");
+    std::fs::write(
+        &composition,
+        r#"<pv3d>
+  <plugin library="libpv3d_lights"><background>#101820</background></plugin>
+  <plugin library="libpv3d_ground"/>
+  <plugin library="libpv3d_grid"/>
+</pv3d>"#,
+    )
+    .unwrap();
+    let png = dir.path().join("shot.png");
+    let out = pv3d()
+        .arg(&composition)
+        .args([
+            "--headless",
+            "--after",
+            "0.1",
+            "--size",
+            "640x400",
+            "--screenshot",
+        ])
+        .arg(&png)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let image = image::open(&png).unwrap().to_rgba8();
+    assert_eq!(image.dimensions(), (640, 400));
+    // The 3D view fills the space right of the item tree; its centre is the world origin,
+    // where the red x axis runs horizontally and the green y axis vertically.
+    let (x0, x1) = (image.width() / 2, image.width());
+    let view_centre_x = (230 + x1) / 2;
+    let row = image.height() / 2;
+    let red_on_row = (x0..x1).any(|x| {
+        let p = image.get_pixel(x, row);
+        p[0] > 140 && p[1] < 100
+    });
+    // Lines are one pixel wide; allow for rounding of the panel's edge.
+    let green_in_column = (view_centre_x - 3..=view_centre_x + 3).any(|x| {
+        (0..image.height())
+            .filter(|&y| {
+                let p = image.get_pixel(x, y);
+                p[1] > 130 && p[0] < 100
+            })
+            .count()
+            > image.height() as usize / 2
+    });
+    assert!(red_on_row, "x axis drawn across the middle row");
+    assert!(green_in_column, "y axis drawn down the middle column");
+}
+
+#[test]
+fn a_broken_composition_fails_with_file_line_col() {
+    let dir = tempfile::tempdir().unwrap();
+    let composition = dir.path().join("broken.xml");
+    std::fs::write(&composition, "<pv3d>\n  <plugin librar=\"x\"/>\n</pv3d>").unwrap();
+    let out = pv3d().arg(&composition).arg("--headless").output().unwrap();
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("broken.xml:2:11: unknown attribute librar"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn emit_config_writes_a_loadable_composition() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_file = dir.path().join("emitted.xml");
+    let configs = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/single-laser.pv3d.xml");
+    let out = pv3d()
+        .arg(&configs)
+        .arg("--emit-config")
+        .arg(&out_file)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let emitted = std::fs::read_to_string(&out_file).unwrap();
+    assert!(
+        emitted.contains("<playerClient host=\"localhost\" port=\"6665\"/>"),
+        "{emitted}"
+    );
+    assert!(emitted.contains("libpv3d_ground"), "{emitted}");
+}
+
+#[test]
+fn the_demo_shows_the_arena_robots_and_their_lasers() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("demo.png");
+    let out = pv3d()
+        .args([
+            "--demo",
+            "--headless",
+            "--after",
+            "2.5",
+            "--size",
+            "1000x700",
+            "--screenshot",
+        ])
+        .arg(&png)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let image = image::open(&png).unwrap().to_rgba8();
+    let count =
+        |test: &dyn Fn(&image::Rgba<u8>) -> bool| image.pixels().filter(|p| test(p)).count();
+    let walls = count(&|p| {
+        (130..=175).contains(&p[0])
+            && (p[0] as i32 - p[2] as i32).abs() < 20
+            && (p[0] as i32 - p[1] as i32).abs() < 12
+    });
+    let robots = count(&|p| p[2] > 150 && p[0] < 110 && p[1] > 90 && p[1] < 190);
+    let lasers = count(&|p| p[0] > 200 && (70..=120).contains(&p[1]) && p[2] < 90);
+    assert!(walls > 3000, "the arena's walls: {walls} pixels");
+    assert!(robots > 5 * 40, "five robot bodies: {robots} pixels");
+    assert!(lasers > 300, "laser returns: {lasers} pixels");
+}
+
+#[test]
+fn the_plugins_state_is_written_back_on_exit() {
+    let dir = tempfile::tempdir().unwrap();
+    let saved = dir.path().join("session.pv3d.xml");
+    let out = pv3d()
+        .args([
+            "--demo",
+            "--headless",
+            "--after",
+            "0.5",
+            "--size",
+            "640x400",
+            "--screenshot",
+        ])
+        .arg(dir.path().join("s.png"))
+        .arg("--save-to")
+        .arg(&saved)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&saved).unwrap();
+    // Handlers were applied: one plugin per device, each with its state written in.
+    assert_eq!(
+        text.matches("library=\"libpv3d_position2d\"").count(),
+        5,
+        "{text}"
+    );
+    assert!(
+        text.contains("<maxSpeed>0.5</maxSpeed>")
+            && text.contains("<trailLength>200</trailLength>"),
+        "{text}"
+    );
+    assert!(
+        text.contains("<drawPoints>1</drawPoints>")
+            && text.contains("<fillLaserCspace>1</fillLaserCspace>"),
+        "{text}"
+    );
+    let reloaded =
+        pv3d::composition::Composition::load(&saved, &pv3d::composition::ParserRegistry::default())
+            .unwrap();
+    assert_eq!(reloaded.plugins.len(), text.matches("<plugin ").count());
+}

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs what building, running and testing pv3d needs on a fresh Debian machine.
+# Rust (cargo, rustc 1.95) is expected to be there already; everything else comes from Debian.
+set -euo pipefail
+
+packages=(
+  # xmllint validates configs/ against the Relax NG schema in the tests.
+  libxml2-utils
+  # Mesa's software OpenGL through EGL: screenshots and rendering tests with no X server.
+  libegl1 libegl-mesa0 libgl1-mesa-dri
+  # A real window with no display: Xvfb, plus what winit loads at run time.
+  xvfb xauth libglx-mesa0 libx11-xcb1 libxcursor1 libxi6 libxkbcommon-x11-0
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+command -v cargo >/dev/null || { echo "cargo not found: install Rust 1.95 first" >&2; exit 1; }
