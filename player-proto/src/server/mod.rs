@@ -99,6 +99,9 @@ pub enum ServerError {
     },
 }
 
+/// How long dropping a [`Server`] waits for its sessions and listeners to close.
+const SHUTDOWN_WAIT: std::time::Duration = std::time::Duration::from_secs(2);
+
 /// A running server; stops when dropped.
 pub struct Server {
     ports: Vec<u16>,
@@ -226,7 +229,15 @@ impl Server {
             {
                 session.close();
             }
-            runtime.shutdown_background();
+            // Outside an async context, wait (briefly) for the workers to drop every task, so
+            // the listening sockets are closed when this returns and the ports can be bound
+            // again at once — a restarted server on the same port is what a client reconnects to.
+            // Inside one, blocking is not allowed: let the runtime wind down on its own.
+            if tokio::runtime::Handle::try_current().is_ok() {
+                runtime.shutdown_background();
+            } else {
+                runtime.shutdown_timeout(SHUTDOWN_WAIT);
+            }
         }
     }
 }
