@@ -7,10 +7,10 @@ use std::time::{Duration, Instant};
 use anyhow::{Context, Result, bail};
 use clap::Parser;
 use pv3d::app::{
-    RedrawPolicy, ScreenshotRequest, UiWaker, Viewer, WindowOptions, headless_screenshot,
+    Composer, RedrawPolicy, ScreenshotRequest, UiWaker, Viewer, WindowOptions, headless_screenshot,
     run_window,
 };
-use pv3d::composition::{Composition, ParserRegistry, emit_document, instantiate};
+use pv3d::composition::{Composition, ParserRegistry, emit_document};
 use pv3d::robots::RobotManager;
 
 /// Player Viewer 3D: compose Player devices into a 3D viewer and tele-operation tool.
@@ -105,8 +105,8 @@ fn main() -> Result<()> {
     robots.wait_for_handshakes(Duration::from_secs_f64(
         cli.connect_timeout.clamp(0.0, 60.0),
     ));
-    let devices = robots.devices();
-    let instances = instantiate(&composition, &devices);
+    let mut composer = Composer::new(composition.clone());
+    let instances = composer.initial(&robots);
 
     if let Some(out) = &cli.emit_config {
         std::fs::write(out, emit_document(&composition, &instances))
@@ -117,9 +117,10 @@ fn main() -> Result<()> {
 
     let registry = pv3d_plugins::standard_plugins();
     let lookup = robots.clone();
-    let mut viewer = Viewer::new(instances, &registry, &|device| lookup.device(device));
+    let mut viewer = Viewer::new(instances, registry, &|device| lookup.device(device));
     if !composition.clients.is_empty() {
         viewer.robots = Some(robots);
+        viewer.composer = Some(composer);
     }
     if let Some(path) = &cli.save_to {
         viewer.save_target = Some(pv3d::app::viewer::SaveTarget {
@@ -162,8 +163,7 @@ fn main() -> Result<()> {
                     .clone()
                     .map(|path| ScreenshotRequest { path, after }),
             };
-            run_window(viewer, options, UiWaker::default(), Box::new(|_| {}))
-                .map_err(anyhow::Error::msg)
+            run_window(viewer, options, waker, Box::new(|_| {})).map_err(anyhow::Error::msg)
         }
     }
 }

@@ -11,6 +11,7 @@ use pv3d_plugins::device::DeviceAccess;
 use pv3d_plugins::plugin::{Anchors, Handled, InputEvent, Plugin, PluginContext, PluginRegistry};
 use pv3d_plugins::scene::{NodeId, Scene};
 
+use super::composer::Composer;
 use super::plugin_config::{config_from_instance, write_back};
 use super::view3d::View3d;
 use crate::composition::PluginInstance;
@@ -30,6 +31,8 @@ pub struct Viewer {
     scene: Scene,
     anchors: Anchors,
     slots: Vec<Slot>,
+    /// Makes the plugins of servers that answer after the start.
+    registry: PluginRegistry,
     pub view: View3d,
     /// Index of the active event handler (the selected robot).
     active: Option<usize>,
@@ -39,6 +42,8 @@ pub struct Viewer {
     pub dirty: bool,
     /// The Player servers, for the status panel.
     pub robots: Option<Arc<crate::robots::RobotManager>>,
+    /// Turns the handlers into plugins for servers that answer late (needs `robots`).
+    pub composer: Option<Composer>,
     status: super::status_panel::StatusPanel,
     /// Where "Save" writes the composition with the plugins' current state.
     pub save_target: Option<SaveTarget>,
@@ -56,27 +61,37 @@ impl Viewer {
     /// in [`Viewer::errors`] and the others carry on.
     pub fn new(
         instances: Vec<PluginInstance>,
-        registry: &PluginRegistry,
+        registry: PluginRegistry,
         devices: DeviceLookup<'_>,
     ) -> Viewer {
         let mut viewer = Viewer {
             scene: Scene::new(),
             anchors: Anchors::default(),
             slots: Vec::new(),
+            registry,
             view: View3d::default(),
             active: None,
             errors: Vec::new(),
             dirty: true,
             robots: None,
+            composer: None,
             status: Default::default(),
             save_target: None,
             save_message: None,
         };
-        for instance in instances {
+        viewer.add_plugins(instances, devices);
+        viewer
+    }
+
+    /// Makes and adds a plugin for each instance; an id already in use gets a suffix.
+    pub fn add_plugins(&mut self, instances: Vec<PluginInstance>, devices: DeviceLookup<'_>) {
+        let first_error = self.errors.len();
+        for mut instance in instances {
+            self.make_id_unique(&mut instance);
             let config = config_from_instance(&instance);
-            let Some(create) = registry.constructor(&config.library) else {
-                let known: Vec<&str> = registry.libraries().collect();
-                viewer.errors.push(format!(
+            let Some(create) = self.registry.constructor(&config.library) else {
+                let known: Vec<&str> = self.registry.libraries().collect();
+                self.errors.push(format!(
                     "{}: unknown plugin library {:?}; built in: {}",
                     config.origin,
                     config.library,
@@ -86,24 +101,49 @@ impl Viewer {
             };
             let device = config.device.as_ref().and_then(devices);
             let mut ctx = PluginContext {
-                scene: &mut viewer.scene,
+                scene: &mut self.scene,
                 device: device.as_deref(),
-                anchors: &mut viewer.anchors,
+                anchors: &mut self.anchors,
                 now: Instant::now(),
             };
             match create(config, &mut ctx) {
-                Ok(plugin) => viewer.slots.push(Slot {
+                Ok(plugin) => self.slots.push(Slot {
                     plugin,
                     device,
                     instance,
                 }),
-                Err(e) => viewer.errors.push(e.to_string()),
+                Err(e) => self.errors.push(e.to_string()),
             }
         }
-        for e in &viewer.errors {
+        for e in &self.errors[first_error..] {
             tracing::error!("{e}");
         }
-        viewer
+        self.dirty = true;
+    }
+
+    fn make_id_unique(&self, instance: &mut PluginInstance) {
+        let taken = |id: &str| self.slots.iter().any(|s| s.instance.id() == id);
+        let id = instance.id().to_string();
+        if id.is_empty() || !taken(&id) {
+            return;
+        }
+        let unique = (2..)
+            .map(|n| format!("{id}-{n}"))
+            .find(|candidate| !taken(candidate))
+            .expect("some suffix is free");
+        instance.element.set_attr("id", unique);
+    }
+
+    /// Adds the plugins of servers that answered since the last call (see [`Composer`]).
+    fn compose_arrivals(&mut self) {
+        let (Some(composer), Some(robots)) = (self.composer.as_mut(), self.robots.clone()) else {
+            return;
+        };
+        let arrivals = composer.arrivals(&robots);
+        if !arrivals.is_empty() {
+            tracing::info!("{} plugins for servers that answered late", arrivals.len());
+            self.add_plugins(arrivals, &|device| robots.device(device));
+        }
     }
 
     pub fn scene(&self) -> &Scene {
@@ -116,6 +156,7 @@ impl Viewer {
 
     /// Lets every plugin take its newest data. Returns whether the scene changed.
     pub fn update(&mut self, now: Instant) -> bool {
+        self.compose_arrivals();
         let mut changed = false;
         for slot in &mut self.slots {
             let mut ctx = PluginContext {
