@@ -37,16 +37,29 @@ pub enum DemoError {
 
 /// Starts the demo world on free ports and points the composition's Player clients at them.
 pub fn start(composition: &mut Composition) -> Result<Running, DemoError> {
-    let world_file = demo_root().join("stage-worlds/multirobot.world");
-    let world = World::load(&world_file)?;
+    serve_world(
+        &demo_root().join("stage-worlds/multirobot.world"),
+        composition,
+        ServeOptions::default(),
+    )
+}
+
+/// Serves a Stage world (with the `.cfg` beside it) on free ports and points every Player
+/// client of the composition whose port the world configures at the port it got.
+pub fn serve_world(
+    world_file: &Path,
+    composition: &mut Composition,
+    options: ServeOptions,
+) -> Result<Running, DemoError> {
+    let world = World::load(world_file)?;
     let mut ignored = Vec::new();
     let devices = from_cfg(&world_file.with_extension("cfg"), &world, &mut ignored)?;
     for note in ignored {
-        tracing::info!("demo world: {note}");
+        tracing::info!("{}: {note}", world_file.display());
     }
     let options = ServeOptions {
         free_ports: true,
-        ..ServeOptions::default()
+        ..options
     };
     let running = serve(Simulation::new(world), devices, options)?;
     for client in &mut composition.clients {

@@ -1,1 +1,88 @@
-//! Shared helpers for the workspace integration tests (see `tests/tests/`).
+//! Shared helpers for the workspace integration tests (see `tests/tests/`): a Stage world
+//! served by player-sim over real TCP, and a pv3d viewer built from a composition against it,
+//! exactly as `pv3d` builds one (robot manager, composer, standard plugins) but without a
+//! window, so a test can click and step it.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use player_sim::serve::{Running, ServeOptions};
+use pv3d::app::{Composer, Viewer};
+use pv3d::composition::{Composition, ParserRegistry};
+use pv3d::robots::RobotManager;
+
+/// The checkout's top folder.
+pub fn repo_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("tests/ lies in the checkout")
+        .to_path_buf()
+}
+
+/// Loads compositions given relative to the checkout.
+pub fn load(files: &[&str]) -> Composition {
+    let paths: Vec<PathBuf> = files.iter().map(|f| repo_root().join(f)).collect();
+    Composition::load_files(&paths, &ParserRegistry::default())
+        .unwrap_or_else(|e| panic!("{files:?} should load: {e}"))
+}
+
+/// A viewer with its robots, as `pv3d` makes it.
+pub fn viewer_for(composition: &Composition) -> Viewer {
+    let robots = Arc::new(RobotManager::start(&composition.clients, None));
+    robots.wait_for_handshakes(Duration::from_secs(5));
+    let mut composer = Composer::new(composition.clone());
+    let instances = composer.initial(&robots);
+    let lookup = robots.clone();
+    let mut viewer = Viewer::new(instances, pv3d_plugins::standard_plugins(), &|device| {
+        lookup.device(device)
+    });
+    viewer.robots = Some(robots);
+    viewer.composer = Some(composer);
+    viewer
+}
+
+/// Serves `world` (relative to the checkout) on free ports for `composition`.
+pub fn serve(world: &str, composition: &mut Composition, speedup: f64) -> Running {
+    let options = ServeOptions {
+        speedup,
+        ..ServeOptions::default()
+    };
+    pv3d::demo::serve_world(&repo_root().join(world), composition, options)
+        .unwrap_or_else(|e| panic!("{world} should serve: {e}"))
+}
+
+/// Updates the viewer every 20 ms, as the window does, until `done` holds; panics naming
+/// `what` after `timeout`.
+pub fn run_until(
+    viewer: &mut Viewer,
+    what: &str,
+    timeout: Duration,
+    mut done: impl FnMut(&mut Viewer) -> bool,
+) {
+    let deadline = Instant::now() + timeout;
+    loop {
+        viewer.update(Instant::now());
+        if done(viewer) {
+            return;
+        }
+        assert!(Instant::now() < deadline, "timed out waiting for {what}");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+/// The simulated pose (x, y, heading) of robot `index`.
+pub fn sim_pose(running: &Running, index: usize) -> (f64, f64, f64) {
+    let sim = running.sim.lock().expect("simulation");
+    let pose = sim.robots[index].pose;
+    (pose.x, pose.y, pose.a)
+}
+
+/// Updates the viewer every 20 ms, as the window does, for `duration`.
+pub fn run_for(viewer: &mut Viewer, duration: Duration) {
+    let until = Instant::now() + duration;
+    while Instant::now() < until {
+        viewer.update(Instant::now());
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
