@@ -19,6 +19,8 @@ pub mod ground;
 pub mod laser;
 pub mod parent_link;
 pub mod position2d;
+pub mod ranger;
+pub mod sonar;
 
 /// Every plugin built into pv3d, by library name.
 pub fn standard_plugins() -> PluginRegistry {
@@ -29,5 +31,7 @@ pub fn standard_plugins() -> PluginRegistry {
     registry.register("libpv3d_laser", laser::LaserPlugin::create);
     registry.register("libpv3d_position2d", position2d::Position2dPlugin::create);
     registry.register("libpv3d_fiducial", fiducial::FiducialPlugin::create);
+    registry.register("libpv3d_sonar", sonar::SonarPlugin::create);
+    registry.register("libpv3d_ranger", ranger::RangerPlugin::create);
     registry
 }

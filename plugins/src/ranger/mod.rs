@@ -1,0 +1,272 @@
+//! `libpv3d_ranger`: a ranger device — what Stage 4 serves for lasers and sonar rings —
+//! drawn laser-like (a scan) or sonar-like (a cone per element), attached to its robot.
+//!
+//! Parameters (all optional): `<parentNode interface="position2d" index="0"/>`; `visible` (1);
+//! the laser plugin's `drawPoints` (1), `drawLines` (0), `fillLaserCspace` (0),
+//! `drawLaserCspace` (0), `color` (#ff5a3c for scans); and the cone parameters of
+//! [`crate::sonar::cone_params`]. The device's pose and its elements' poses come from the
+//! geometry request, the angles and maximum range from the config request.
+
+mod shape;
+
+use std::time::Instant;
+
+use glam::{Affine3A, Quat, Vec3};
+use player_proto::interfaces::common::Pose3d;
+use player_proto::interfaces::ranger::{self, Ranger, RangerConfig, RangerGeometry};
+use player_proto::message::Body;
+
+pub use shape::{RangerShape, ranger_geometry};
+
+use crate::config::{ConfigValueError, PluginConfig};
+use crate::device::{ReplyOutcome, ReplyTicket, Sample};
+use crate::laser::ScanStyle;
+use crate::parent_link::ParentLink;
+use crate::plugin::{Anchors, Plugin, PluginContext};
+use crate::scene::{NodeId, Object3D, Scene};
+use crate::sonar::cone_params::{cone_style_from_config, cone_style_ui, write_cone_style};
+use crate::sonar::cones::{ConeStyle, Transducer};
+
+/// Subtype of `PLAYER_RANGER_DATA_RANGE`.
+const DATA_RANGES: u8 = 1;
+
+pub struct RangerPlugin {
+    config: PluginConfig,
+    scan_style: ScanStyle,
+    cone_style: ConeStyle,
+    visible: bool,
+    node: NodeId,
+    parent: ParentLink,
+    geometry_reply: Option<ReplyTicket>,
+    config_reply: Option<ReplyTicket>,
+    /// Element poses in the node's frame (empty for a single-element device: its pose is part
+    /// of the node's transform).
+    elements: Vec<Transducer>,
+    device_config: Option<RangerConfig>,
+    ranges: Vec<f64>,
+    shape: RangerShape,
+    last_seq: Option<u64>,
+    received: Option<Instant>,
+    redraw_needed: bool,
+}
+
+impl RangerPlugin {
+    pub fn create(
+        config: PluginConfig,
+        ctx: &mut PluginContext<'_>,
+    ) -> Result<Box<dyn Plugin>, ConfigValueError> {
+        let scan_style = ScanStyle {
+            points: config.bool("drawPoints", true)?,
+            lines: config.bool("drawLines", false)?,
+            fill_cspace: config.bool("fillLaserCspace", false)?,
+            draw_cspace: config.bool("drawLaserCspace", false)?,
+            color: config.color("color", ScanStyle::default().color)?,
+            height: 0.0,
+        };
+        let cone_style = cone_style_from_config(&config)?;
+        let visible = config.bool("visible", true)?;
+        let parent = ParentLink::from_config(&config);
+        let name = match &config.device {
+            Some(d) => format!("ranger {d}"),
+            None => "ranger".to_string(),
+        };
+        let mut object = Object3D::new(name);
+        object.tags.push("ranger".into());
+        object.visible = visible;
+        let node = ctx.scene.add(object);
+        let (geometry_reply, config_reply) = match ctx.device {
+            Some(d) => (
+                Some(d.request(ranger::REQ_GET_GEOM, Body::Empty)),
+                Some(d.request(ranger::REQ_GET_CONFIG, Body::Empty)),
+            ),
+            None => (None, None),
+        };
+        Ok(Box::new(RangerPlugin {
+            config,
+            scan_style,
+            cone_style,
+            visible,
+            node,
+            parent,
+            geometry_reply,
+            config_reply,
+            elements: Vec::new(),
+            device_config: None,
+            ranges: Vec::new(),
+            shape: RangerShape::Empty,
+            last_seq: None,
+            received: None,
+            redraw_needed: false,
+        }))
+    }
+
+    fn take_replies(&mut self, scene: &mut Scene) {
+        if let Some(outcome) = take(&mut self.geometry_reply) {
+            match body_of(outcome) {
+                Ok(Body::Ranger(Ranger::Geometry(g))) => self.adopt_geometry(&g, scene),
+                other => self.note_failure("geometry", other),
+            }
+        }
+        if let Some(outcome) = take(&mut self.config_reply) {
+            match body_of(outcome) {
+                Ok(Body::Ranger(Ranger::Config(c))) => {
+                    self.device_config = Some(c);
+                    self.redraw_needed = true;
+                }
+                other => self.note_failure("config", other),
+            }
+        }
+    }
+
+    fn note_failure(&self, what: &str, outcome: Result<Body, String>) {
+        match outcome {
+            Ok(body) => {
+                tracing::warn!(plugin = %self.config.id, "ranger {what} reply has an unexpected body: {body:?}");
+            }
+            Err(e) => tracing::info!(plugin = %self.config.id, "no ranger {what} ({e})"),
+        }
+    }
+
+    /// Places the node at the device's pose (and a single element's pose), and keeps several
+    /// elements' poses for their cones.
+    fn adopt_geometry(&mut self, geometry: &RangerGeometry, scene: &mut Scene) {
+        let mut transform = pose_transform(&geometry.pose);
+        self.elements.clear();
+        match geometry.element_poses.as_slice() {
+            [] => {}
+            [single] => transform *= pose_transform(single),
+            several => self.elements.extend(several.iter().map(Transducer::from)),
+        }
+        if let Some(object) = scene.get_mut(self.node) {
+            object.transform = transform;
+        }
+        self.redraw_needed = true;
+    }
+
+    fn take_ranges(&mut self, sample: &Sample) {
+        if let Body::Ranger(Ranger::Ranges(data)) = &sample.message.body {
+            self.ranges.clone_from(&data.ranges);
+            self.received = Some(sample.received);
+            self.redraw_needed = true;
+        }
+    }
+
+    fn redraw(&mut self, scene: &mut Scene) -> bool {
+        let Some(object) = scene.get_mut(self.node) else {
+            return false;
+        };
+        self.shape = ranger_geometry(
+            &self.ranges,
+            &self.elements,
+            self.device_config.as_ref(),
+            &self.scan_style,
+            &self.cone_style,
+            &mut object.geometry,
+        );
+        object.visible = self.visible;
+        true
+    }
+}
+
+fn take(ticket: &mut Option<ReplyTicket>) -> Option<ReplyOutcome> {
+    let outcome = ticket.as_ref()?.try_take()?;
+    *ticket = None;
+    Some(outcome)
+}
+
+fn body_of(outcome: ReplyOutcome) -> Result<Body, String> {
+    outcome.map(|m| m.body.clone()).map_err(|e| e.to_string())
+}
+
+/// A Player pose as a transform (roll, pitch and yaw applied in that order).
+fn pose_transform(pose: &Pose3d) -> Affine3A {
+    Affine3A::from_rotation_translation(
+        Quat::from_euler(
+            glam::EulerRot::ZYX,
+            pose.pyaw as f32,
+            pose.ppitch as f32,
+            pose.proll as f32,
+        ),
+        Vec3::new(pose.px as f32, pose.py as f32, pose.pz as f32),
+    )
+}
+
+impl Plugin for RangerPlugin {
+    fn save(&self) -> PluginConfig {
+        let mut config = self.config.clone();
+        let flag = |b: bool| if b { "1" } else { "0" };
+        config.set("drawPoints", flag(self.scan_style.points));
+        config.set("drawLines", flag(self.scan_style.lines));
+        config.set("fillLaserCspace", flag(self.scan_style.fill_cspace));
+        config.set("drawLaserCspace", flag(self.scan_style.draw_cspace));
+        write_cone_style(&self.cone_style, &mut config);
+        config.set("visible", flag(self.visible));
+        config
+    }
+
+    fn title(&self) -> String {
+        match &self.config.device {
+            Some(d) => format!("Ranger {d}"),
+            None => "Ranger".into(),
+        }
+    }
+
+    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+        let mut changed = self.parent.attach(self.node, ctx);
+        self.take_replies(ctx.scene);
+        if let Some(sample) = ctx.device.and_then(|d| d.latest(DATA_RANGES))
+            && self.last_seq != Some(sample.seq)
+        {
+            self.last_seq = Some(sample.seq);
+            self.take_ranges(&sample);
+        }
+        if self.redraw_needed {
+            self.redraw_needed = false;
+            changed |= self.redraw(ctx.scene);
+        }
+        changed
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
+        let age = self.received.map_or(String::new(), |at| {
+            format!(
+                ", {:.1} s old",
+                ctx.now.saturating_duration_since(at).as_secs_f32()
+            )
+        });
+        let what = match self.shape {
+            RangerShape::Cones => format!("{} readings as cones{age}", self.ranges.len()),
+            RangerShape::Scan => format!("{} readings as a scan{age}", self.ranges.len()),
+            RangerShape::WaitingForConfig => "waiting for the ranger's angles (config)".into(),
+            RangerShape::Empty => "no readings yet".into(),
+        };
+        ui.label(what);
+        let before = (self.scan_style, self.visible);
+        ui.checkbox(&mut self.visible, "visible");
+        match self.shape {
+            RangerShape::Cones => {
+                if cone_style_ui(ui, &mut self.cone_style) {
+                    self.redraw_needed = true;
+                }
+            }
+            _ => {
+                ui.checkbox(&mut self.scan_style.points, "points");
+                ui.checkbox(&mut self.scan_style.lines, "lines");
+                ui.checkbox(&mut self.scan_style.fill_cspace, "fill free space");
+                ui.checkbox(&mut self.scan_style.draw_cspace, "outline free space");
+            }
+        }
+        if before != (self.scan_style, self.visible) {
+            self.redraw_needed = true;
+        }
+    }
+
+    fn node(&self) -> Option<NodeId> {
+        Some(self.node)
+    }
+
+    fn detach(&mut self, scene: &mut Scene, anchors: &mut Anchors) {
+        anchors.withdraw(self.node);
+        scene.remove(self.node);
+    }
+}

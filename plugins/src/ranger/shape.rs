@@ -1,0 +1,138 @@
+//! How a ranger's readings are drawn. Stage 4 serves both lasers and sonar rings as `ranger`,
+//! so the shape is decided from what the device reports:
+//!
+//! * several elements (one pose each, one reading each) — sonar-like: one cone per element;
+//! * one element and many readings over an angle — laser-like: drawn exactly as the laser
+//!   plugin draws a scan (points, lines, free space), through its scan geometry code;
+//! * one element and one reading — a single cone (an IR or sonar range finder).
+
+use player_proto::interfaces::laser::LaserScan;
+use player_proto::interfaces::ranger::RangerConfig;
+
+use crate::laser::{ScanStyle, scan_geometry};
+use crate::scene::Geometry;
+use crate::sonar::cones::{ConeStyle, Transducer, cone_geometry};
+
+/// Widest opening a per-element configured angle may have and still be taken as the cone width;
+/// beyond it the configured angles describe something else and the `coneAngle` parameter wins.
+const WIDEST_CONE: f64 = std::f64::consts::PI;
+
+/// What [`ranger_geometry`] drew.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RangerShape {
+    /// One cone per element.
+    Cones,
+    /// A laser-like scan.
+    Scan,
+    /// Readings over an angle, but the angles are not known yet (no config).
+    WaitingForConfig,
+    /// No readings.
+    Empty,
+}
+
+/// Fills `geometry` (cleared first) with `ranges` drawn in the shape the device calls for.
+/// `elements` are the element poses in the drawing's frame; a single element's pose is
+/// expected to be folded into the node's transform by the caller and is not applied here.
+pub fn ranger_geometry(
+    ranges: &[f64],
+    elements: &[Transducer],
+    config: Option<&RangerConfig>,
+    scan_style: &ScanStyle,
+    cone_style: &ConeStyle,
+    geometry: &mut Geometry,
+) -> RangerShape {
+    geometry.clear();
+    if ranges.is_empty() {
+        return RangerShape::Empty;
+    }
+    let ranges_f32: Vec<f32> = ranges.iter().map(|&r| r as f32).collect();
+    if elements.len() > 1 || ranges.len() == 1 {
+        let single = [Transducer {
+            origin: glam::Vec3::ZERO,
+            yaw: 0.0,
+        }];
+        let elements = if elements.len() > 1 {
+            elements
+        } else {
+            &single
+        };
+        let mut style = *cone_style;
+        if let Some(c) = config {
+            let width = c.max_angle - c.min_angle;
+            if width > 0.0 && width <= WIDEST_CONE {
+                style.width = width as f32;
+            }
+        }
+        cone_geometry(elements, &ranges_f32, &style, geometry);
+        return RangerShape::Cones;
+    }
+    let Some(config) = config else {
+        return RangerShape::WaitingForConfig;
+    };
+    let scan = LaserScan {
+        min_angle: config.min_angle as f32,
+        max_angle: config.max_angle as f32,
+        resolution: beam_spacing(config, ranges.len()) as f32,
+        max_range: config.max_range as f32,
+        ranges: ranges_f32,
+        ..LaserScan::default()
+    };
+    scan_geometry(&scan, scan_style, geometry);
+    RangerShape::Scan
+}
+
+/// The angle between readings: the configured resolution, or — when a driver leaves it zero —
+/// the configured field of view spread over the readings that came.
+fn beam_spacing(config: &RangerConfig, readings: usize) -> f64 {
+    if config.angular_res > 0.0 && config.angular_res.is_finite() {
+        return config.angular_res;
+    }
+    let span = config.max_angle - config.min_angle;
+    if readings > 1 && span.is_finite() {
+        span / (readings - 1) as f64
+    } else {
+        0.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn laser_config() -> RangerConfig {
+        RangerConfig {
+            min_angle: -std::f64::consts::FRAC_PI_2,
+            max_angle: std::f64::consts::FRAC_PI_2,
+            angular_res: 0.0,
+            max_range: 8.0,
+            ..RangerConfig::default()
+        }
+    }
+
+    #[test]
+    fn a_zero_resolution_is_spread_over_the_field_of_view() {
+        let mut g = Geometry::default();
+        let shape = ranger_geometry(
+            &[1.0, 1.0, 1.0],
+            &[],
+            Some(&laser_config()),
+            &ScanStyle::default(),
+            &ConeStyle::default(),
+            &mut g,
+        );
+        assert_eq!(shape, RangerShape::Scan);
+        assert!((g.points[2].pos - glam::Vec3::new(0.0, 1.0, 0.0)).length() < 1e-5);
+    }
+
+    #[test]
+    fn without_config_a_scan_waits_and_a_single_reading_is_a_cone() {
+        let mut g = Geometry::default();
+        let style = (ScanStyle::default(), ConeStyle::default());
+        let shape = ranger_geometry(&[1.0, 2.0], &[], None, &style.0, &style.1, &mut g);
+        assert_eq!(shape, RangerShape::WaitingForConfig);
+        assert!(g.is_empty());
+        let shape = ranger_geometry(&[1.0], &[], None, &style.0, &style.1, &mut g);
+        assert_eq!(shape, RangerShape::Cones);
+        assert!(!g.triangles.is_empty());
+    }
+}

@@ -1,0 +1,231 @@
+//! `libpv3d_sonar`: a sonar ring as one cone per transducer, each as long as its reading,
+//! attached to its robot.
+//!
+//! Parameters (all optional): `<parentNode interface="position2d" index="0"/>` — the device
+//! whose scene node the cones hang below (same server); `visible` (1); and the cone parameters
+//! of [`cone_params`]. The transducers' poses come from the sonar geometry request (or pushed
+//! geometry data); until it answers, or if it fails, they are assumed evenly spaced on a ring.
+
+pub mod cone_params;
+pub mod cones;
+
+use std::time::Instant;
+
+use player_proto::interfaces::sonar::{self, Sonar};
+use player_proto::message::Body;
+
+use crate::config::{ConfigValueError, PluginConfig};
+use crate::device::{ReplyTicket, Sample};
+use crate::parent_link::ParentLink;
+use crate::plugin::{Anchors, Plugin, PluginContext};
+use crate::scene::{NodeId, Object3D, Scene};
+use cone_params::{cone_style_from_config, cone_style_ui, write_cone_style};
+use cones::{ConeStyle, Transducer, cone_geometry, evenly_spaced};
+
+/// Subtype of `PLAYER_SONAR_DATA_RANGES`.
+const DATA_RANGES: u8 = 1;
+/// Subtype of `PLAYER_SONAR_DATA_GEOM` (geometry pushed as data by some drivers).
+const DATA_GEOM: u8 = 2;
+/// Radius of the ring transducers are assumed on while their poses are unknown, m.
+const ASSUMED_RING_RADIUS: f32 = 0.2;
+/// Readings kept from one message: Player's own limit on sonar transducers.
+const MAX_TRANSDUCERS: usize = 64;
+
+/// Where the transducer poses came from, for the panel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum PoseSource {
+    Assumed,
+    Device,
+}
+
+pub struct SonarPlugin {
+    config: PluginConfig,
+    style: ConeStyle,
+    visible: bool,
+    node: NodeId,
+    parent: ParentLink,
+    geometry_reply: Option<ReplyTicket>,
+    transducers: Vec<Transducer>,
+    pose_source: PoseSource,
+    ranges: Vec<f32>,
+    last_seq: Option<u64>,
+    last_geom_seq: Option<u64>,
+    received: Option<Instant>,
+    redraw_needed: bool,
+}
+
+impl SonarPlugin {
+    pub fn create(
+        config: PluginConfig,
+        ctx: &mut PluginContext<'_>,
+    ) -> Result<Box<dyn Plugin>, ConfigValueError> {
+        let style = cone_style_from_config(&config)?;
+        let visible = config.bool("visible", true)?;
+        let parent = ParentLink::from_config(&config);
+        let name = match &config.device {
+            Some(d) => format!("sonar {d}"),
+            None => "sonar".to_string(),
+        };
+        let mut object = Object3D::new(name);
+        object.tags.push("sonar".into());
+        object.visible = visible;
+        let node = ctx.scene.add(object);
+        let geometry_reply = ctx
+            .device
+            .map(|d| d.request(sonar::REQ_GET_GEOM, Body::Empty));
+        Ok(Box::new(SonarPlugin {
+            config,
+            style,
+            visible,
+            node,
+            parent,
+            geometry_reply,
+            transducers: Vec::new(),
+            pose_source: PoseSource::Assumed,
+            ranges: Vec::new(),
+            last_seq: None,
+            last_geom_seq: None,
+            received: None,
+            redraw_needed: false,
+        }))
+    }
+
+    /// Takes the transducer poses from the geometry reply, once it has come.
+    fn take_geometry_reply(&mut self) {
+        let Some(outcome) = self.geometry_reply.as_ref().and_then(|t| t.try_take()) else {
+            return;
+        };
+        self.geometry_reply = None;
+        match outcome.map(|m| m.body.clone()) {
+            Ok(Body::Sonar(Sonar::Geometry(g))) => self.adopt_poses(&g.poses),
+            Ok(other) => {
+                tracing::warn!(plugin = %self.config.id, "sonar geometry reply has an unexpected body: {other:?}");
+            }
+            Err(e) => {
+                tracing::info!(plugin = %self.config.id, "no sonar geometry ({e}); transducers assumed evenly spaced");
+            }
+        }
+    }
+
+    fn take_geometry_data(&mut self, sample: Option<Sample>) {
+        let Some(sample) = sample else { return };
+        if self.last_geom_seq == Some(sample.seq) {
+            return;
+        }
+        self.last_geom_seq = Some(sample.seq);
+        if let Body::Sonar(Sonar::GeometryData(g)) = &sample.message.body {
+            self.adopt_poses(&g.poses);
+        }
+    }
+
+    fn adopt_poses(&mut self, poses: &[player_proto::interfaces::common::Pose3d]) {
+        self.transducers = poses
+            .iter()
+            .take(MAX_TRANSDUCERS)
+            .map(Transducer::from)
+            .collect();
+        self.pose_source = PoseSource::Device;
+        self.redraw_needed = true;
+    }
+
+    fn take_ranges(&mut self, sample: &Sample) {
+        if let Body::Sonar(Sonar::Ranges(data)) = &sample.message.body {
+            self.ranges.clear();
+            self.ranges
+                .extend(data.ranges.iter().take(MAX_TRANSDUCERS).copied());
+            self.received = Some(sample.received);
+            self.redraw_needed = true;
+        }
+    }
+
+    fn redraw(&mut self, scene: &mut Scene) -> bool {
+        if self.pose_source == PoseSource::Assumed && self.transducers.len() != self.ranges.len() {
+            self.transducers = evenly_spaced(self.ranges.len(), ASSUMED_RING_RADIUS);
+        }
+        let Some(object) = scene.get_mut(self.node) else {
+            return false;
+        };
+        cone_geometry(
+            &self.transducers,
+            &self.ranges,
+            &self.style,
+            &mut object.geometry,
+        );
+        object.visible = self.visible;
+        true
+    }
+}
+
+impl Plugin for SonarPlugin {
+    fn save(&self) -> PluginConfig {
+        let mut config = self.config.clone();
+        write_cone_style(&self.style, &mut config);
+        config.set("visible", if self.visible { "1" } else { "0" });
+        config
+    }
+
+    fn title(&self) -> String {
+        match &self.config.device {
+            Some(d) => format!("Sonar {d}"),
+            None => "Sonar".into(),
+        }
+    }
+
+    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+        let mut changed = self.parent.attach(self.node, ctx);
+        self.take_geometry_reply();
+        if let Some(device) = ctx.device {
+            self.take_geometry_data(device.latest(DATA_GEOM));
+            if let Some(sample) = device.latest(DATA_RANGES)
+                && self.last_seq != Some(sample.seq)
+            {
+                self.last_seq = Some(sample.seq);
+                self.take_ranges(&sample);
+            }
+        }
+        if self.redraw_needed {
+            self.redraw_needed = false;
+            changed |= self.redraw(ctx.scene);
+        }
+        changed
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
+        match self.received {
+            Some(at) => {
+                let nearest = self
+                    .ranges
+                    .iter()
+                    .copied()
+                    .filter(|r| r.is_finite() && *r > 0.0)
+                    .min_by(f32::total_cmp);
+                let nearest = nearest.map_or("no return".into(), |r| format!("nearest {r:.2} m"));
+                ui.label(format!(
+                    "{} transducers, {nearest}, {:.1} s old",
+                    self.ranges.len(),
+                    ctx.now.saturating_duration_since(at).as_secs_f32()
+                ));
+            }
+            None => {
+                ui.label("no readings yet");
+            }
+        }
+        if self.pose_source == PoseSource::Assumed {
+            ui.label("poses unknown: drawn evenly spaced");
+        }
+        let visible_before = self.visible;
+        ui.checkbox(&mut self.visible, "visible");
+        if cone_style_ui(ui, &mut self.style) || visible_before != self.visible {
+            self.redraw_needed = true;
+        }
+    }
+
+    fn node(&self) -> Option<NodeId> {
+        Some(self.node)
+    }
+
+    fn detach(&mut self, scene: &mut Scene, anchors: &mut Anchors) {
+        anchors.withdraw(self.node);
+        scene.remove(self.node);
+    }
+}

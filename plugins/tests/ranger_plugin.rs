@@ -1,0 +1,221 @@
+//! The ranger plugin fed known data draws a laser-like ranger as a scan and a sonar-like one
+//! (Stage's sonar ring) as one cone per element, at the poses its geometry reports.
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use glam::Vec3;
+use player_proto::interfaces::common::{BBox3d, Pose3d};
+use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry, RangerRanges};
+use player_proto::message::Message;
+use player_proto::{DevAddr, MsgType};
+use pv3d_plugins::config::{DeviceRef, Param};
+use pv3d_plugins::device::RecordingDevice;
+use pv3d_plugins::plugin::{AnchorKey, Anchors, Plugin, PluginContext};
+use pv3d_plugins::scene::{NodeId, Object3D, Scene};
+use pv3d_plugins::sonar::cones::ARC_SEGMENTS;
+use pv3d_plugins::{PluginConfig, standard_plugins};
+
+fn addr() -> DevAddr {
+    "ranger:1".parse().unwrap()
+}
+
+fn ranger_config(params: Vec<Param>) -> PluginConfig {
+    let mut parent = Param::new("parentNode", "");
+    parent.attributes = vec![("interface".into(), "position2d".into())];
+    let mut all = vec![parent];
+    all.extend(params);
+    PluginConfig {
+        library: "libpv3d_ranger".into(),
+        id: "ranger".into(),
+        device: Some(DeviceRef {
+            host: "localhost".into(),
+            port: 6665,
+            addr: addr(),
+            driver: "stage".into(),
+        }),
+        params: all,
+        origin: "test.xml:1:1".into(),
+        ..PluginConfig::default()
+    }
+}
+
+fn answer(device: &RecordingDevice, geometry: RangerGeometry, config: RangerConfig) {
+    let ack = |body: Ranger| Ok(Arc::new(Message::typed(addr(), MsgType::Ack, body)));
+    let mut replies = device.replies.lock().unwrap();
+    replies.push((1, ack(Ranger::Geometry(geometry))));
+    replies.push((5, ack(Ranger::Config(config))));
+}
+
+fn push_ranges(device: &RecordingDevice, ranges: Vec<f64>) {
+    device.push(Message::typed(
+        addr(),
+        MsgType::Data,
+        Ranger::Ranges(RangerRanges { ranges }),
+    ));
+}
+
+/// Makes the plugin in a scene with a robot at (5, 0) facing +x; returns the robot's node.
+fn run(
+    device: &RecordingDevice,
+    params: Vec<Param>,
+    feed: impl FnOnce(&RecordingDevice),
+) -> (Scene, NodeId, NodeId, Box<dyn Plugin>) {
+    let mut scene = Scene::new();
+    let mut anchors = Anchors::default();
+    let mut robot = Object3D::new("robot");
+    robot.transform = glam::Affine3A::from_translation(Vec3::new(5.0, 0.0, 0.0));
+    let robot = scene.add(robot);
+    anchors.publish(
+        AnchorKey {
+            host: "localhost".into(),
+            port: 6665,
+            interface: "position2d".into(),
+            index: 0,
+        },
+        robot,
+    );
+    let mut ctx = PluginContext {
+        scene: &mut scene,
+        device: Some(device),
+        anchors: &mut anchors,
+        now: Instant::now(),
+    };
+    let create = standard_plugins().constructor("libpv3d_ranger").unwrap();
+    let mut plugin = match create(ranger_config(params), &mut ctx) {
+        Ok(p) => p,
+        Err(e) => panic!("{e}"),
+    };
+    let asked: Vec<u8> = device
+        .requests
+        .lock()
+        .unwrap()
+        .iter()
+        .map(|r| r.0)
+        .collect();
+    assert_eq!(asked, vec![1, 5], "geometry and config asked for");
+    feed(device);
+    assert!(plugin.update(&mut ctx));
+    assert!(!plugin.update(&mut ctx), "nothing new, nothing redrawn");
+    let node = plugin.node().unwrap();
+    (scene, robot, node, plugin)
+}
+
+#[test]
+fn a_laser_like_ranger_is_drawn_as_the_laser_plugin_draws_a_scan() {
+    let device = RecordingDevice::default();
+    answer(
+        &device,
+        RangerGeometry {
+            pose: Pose3d {
+                px: 0.05,
+                pz: 0.2,
+                ..Pose3d::default()
+            },
+            size: BBox3d::default(),
+            element_poses: vec![Pose3d::default()],
+            element_sizes: vec![BBox3d::default()],
+        },
+        RangerConfig {
+            min_angle: -std::f64::consts::FRAC_PI_2,
+            max_angle: std::f64::consts::FRAC_PI_2,
+            angular_res: std::f64::consts::FRAC_PI_2,
+            max_range: 8.0,
+            ..RangerConfig::default()
+        },
+    );
+    let params = vec![Param::new("fillLaserCspace", "1")];
+    let (scene, robot, node, plugin) = run(&device, params, |d| {
+        push_ranges(d, vec![1.0, 2.0, 8.0]);
+    });
+    let object = scene.get(node).unwrap();
+    assert_eq!(object.parent, Some(robot));
+    assert_eq!(
+        object.geometry.points.len(),
+        2,
+        "the 8 m reading is no return"
+    );
+    assert_eq!(object.geometry.triangles.len(), 2 * 3, "free space filled");
+    let world = |p: Vec3| scene.world_transform(node).transform_point3(p);
+    // First reading: 1 m to the right of a ranger 5 cm ahead of the robot, 20 cm up.
+    let first = world(object.geometry.points[0].pos);
+    assert!(
+        (first - Vec3::new(5.05, -1.0, 0.2)).length() < 1e-5,
+        "{first}"
+    );
+    let second = world(object.geometry.points[1].pos);
+    assert!(
+        (second - Vec3::new(7.05, 0.0, 0.2)).length() < 1e-5,
+        "{second}"
+    );
+    assert_eq!(plugin.save().param("fillLaserCspace").unwrap().text, "1");
+}
+
+#[test]
+fn a_sonar_ring_served_as_ranger_is_one_cone_per_element() {
+    let device = RecordingDevice::default();
+    // Stage's sonar ring of stage-worlds/robots.inc: 8 elements, 15° each.
+    let element_poses: Vec<Pose3d> = (0..8)
+        .map(|i| {
+            let yaw = f64::from(i) * std::f64::consts::FRAC_PI_4;
+            Pose3d {
+                px: 0.2 * yaw.cos(),
+                py: 0.2 * yaw.sin(),
+                pyaw: yaw,
+                ..Pose3d::default()
+            }
+        })
+        .collect();
+    let fov = 15f64.to_radians();
+    answer(
+        &device,
+        RangerGeometry {
+            pose: Pose3d::default(),
+            size: BBox3d::default(),
+            element_sizes: vec![BBox3d::default(); 8],
+            element_poses,
+        },
+        RangerConfig {
+            min_angle: -fov / 2.0,
+            max_angle: fov / 2.0,
+            angular_res: fov,
+            max_range: 5.0,
+            ..RangerConfig::default()
+        },
+    );
+    let (scene, _, node, _) = run(&device, vec![Param::new("coneAngle", "60")], |d| {
+        push_ranges(d, vec![1.0, 1.0, 3.0, 1.0, 1.0, 1.0, 1.0, 1.0]);
+    });
+    let g = &scene.get(node).unwrap().geometry;
+    assert_eq!(g.triangles.len(), 8 * ARC_SEGMENTS * 3, "eight cones");
+    assert!(g.points.is_empty(), "not drawn as a scan");
+    // The third element looks along +y from (0, 0.2): its cone reaches (0, 3.2) and is the
+    // device's 15° wide (its config wins over the 60° coneAngle default).
+    let cone = &g.triangles[2 * ARC_SEGMENTS * 3..3 * ARC_SEGMENTS * 3];
+    let tip = cone[(ARC_SEGMENTS / 2) * 3 + 1].pos;
+    assert!((tip - Vec3::new(0.0, 3.2, 0.0)).length() < 1e-4, "{tip}");
+    let edge = cone[1].pos - Vec3::new(0.0, 0.2, 0.0);
+    let opening = edge.angle_between(Vec3::Y).to_degrees();
+    assert!((opening - 7.5).abs() < 1e-2, "half opening {opening}°");
+}
+
+#[test]
+fn readings_before_the_config_wait_for_it() {
+    let device = RecordingDevice::default();
+    let mut scene = Scene::new();
+    let mut anchors = Anchors::default();
+    let mut ctx = PluginContext {
+        scene: &mut scene,
+        device: Some(&device),
+        anchors: &mut anchors,
+        now: Instant::now(),
+    };
+    let create = standard_plugins().constructor("libpv3d_ranger").unwrap();
+    let Ok(mut plugin) = create(ranger_config(vec![]), &mut ctx) else {
+        panic!("default config refused");
+    };
+    push_ranges(&device, vec![1.0; 181]);
+    plugin.update(&mut ctx);
+    let node = plugin.node().unwrap();
+    assert!(ctx.scene.get(node).unwrap().geometry.is_empty());
+}
