@@ -273,3 +273,48 @@ fn a_server_that_is_not_player_fails_for_good() {
         .to_string();
     assert!(err.contains("not a Player server"), "{err}");
 }
+
+#[test]
+fn a_server_that_stalls_after_connecting_is_detected_and_left() {
+    let (port, connections) = scripted(|stream, n| {
+        if n == 0 {
+            // Stall: accept the subscription, then never send a byte again (not even the
+            // reply to the liveness probe) until the client gives up on us.
+            let mut sink = [0u8; 4096];
+            let until = Instant::now() + Duration::from_secs(10);
+            while Instant::now() < until {
+                match stream.read(&mut sink) {
+                    Ok(0) => return,
+                    Ok(_) => {}
+                    Err(e) if e.kind() == std::io::ErrorKind::WouldBlock => {}
+                    Err(e) if e.kind() == std::io::ErrorKind::TimedOut => {}
+                    Err(_) => return,
+                }
+            }
+        } else {
+            let bytes = scan_bytes();
+            while stream.write_all(&bytes).is_ok() {
+                std::thread::sleep(Duration::from_millis(10));
+            }
+        }
+    });
+    let options = ClientOptions {
+        stall_timeout: Some(Duration::from_millis(300)),
+        ..quick()
+    };
+    let client = Client::connect("127.0.0.1", port, options).unwrap();
+    client.laser(0).subscribe().unwrap();
+    assert_eq!(client.state(), ConnectionState::Connected);
+    wait_for("the stall to be noticed", Duration::from_secs(3), || {
+        client.last_disconnect().is_some()
+    });
+    let why = client.last_disconnect().unwrap();
+    assert!(why.contains("stalled"), "{why}");
+    wait_for(
+        "data from the next connection",
+        Duration::from_secs(5),
+        || client.laser(0).scan().is_some(),
+    );
+    assert!(connections.load(Ordering::SeqCst) >= 2);
+    assert_eq!(client.state(), ConnectionState::Connected);
+}

@@ -18,9 +18,11 @@
 //! base.set_velocity(0.3, 0.0, 0.1);
 //! ```
 
+mod liveness;
 mod multi;
 mod options;
 mod proxies;
+mod replace_rule;
 mod requests;
 mod robot_thread;
 mod shared;
@@ -37,10 +39,11 @@ pub use options::{Backoff, ClientOptions, DataMode, Notifier};
 pub use proxies::{
     CameraProxy, FiducialProxy, LaserProxy, Position2dProxy, RangerProxy, SonarProxy,
 };
+pub use replace_rule::{ReplaceAction, ReplaceRule};
 pub use requests::RequestError;
 pub use shared::{ConnectionState, DeviceInfo, DeviceStats, Stamped};
 
-use crate::interfaces::player::{self, DeviceReq, Player};
+use crate::interfaces::player::{self, DataModeReq, DeviceReq, Player};
 use crate::message::{Body, Message};
 use crate::wire::{Banner, DevAddr, Interface, MsgType, PlayerString};
 use robot_thread::Command;
@@ -100,7 +103,7 @@ impl Client {
     /// Starts the robot thread and returns at once; the thread keeps trying to connect (see
     /// [`Client::state`]). Use this when an unreachable robot must not hold anything up.
     pub fn spawn(host: &str, port: u16, options: ClientOptions) -> Result<Client, ConnectError> {
-        let shared = Arc::new(Shared::default());
+        let shared = Arc::new(Shared::new(options.data_mode, options.replace_old_data));
         let (commands, receiver) = unbounded_channel();
         let thread = {
             let (host, options, shared) = (host.to_string(), options.clone(), shared.clone());
@@ -173,6 +176,69 @@ impl Client {
     /// The devices the server reported, with driver names (from the last handshake).
     pub fn devices(&self) -> Vec<DeviceInfo> {
         self.shared.devices.lock().expect("devices").clone()
+    }
+
+    /// Why the last connection ended (the server closed it, stalled, sent garbage …), if one
+    /// has ended.
+    pub fn last_disconnect(&self) -> Option<String> {
+        self.shared
+            .last_disconnect
+            .lock()
+            .expect("last disconnect")
+            .clone()
+    }
+
+    /// The data mode in force (or to be restored on the next connection).
+    pub fn data_mode(&self) -> DataMode {
+        *self.shared.data_mode.lock().expect("data mode")
+    }
+
+    /// Switches between PUSH and PULL at run time. The mode is remembered before the request
+    /// goes out, so it is restored after a reconnect even if this request fails because the
+    /// server is away at the moment.
+    pub fn set_data_mode(&self, mode: DataMode) -> Result<(), RequestError> {
+        *self.shared.data_mode.lock().expect("data mode") = mode;
+        let body = DataModeReq {
+            mode: match mode {
+                DataMode::Push => player::DATAMODE_PUSH,
+                DataMode::Pull => player::DATAMODE_PULL,
+            },
+        };
+        self.request(
+            DevAddr::local(Interface::PLAYER, 0),
+            player::REQ_DATAMODE,
+            Body::Player(Player::DataMode(body)),
+        )
+        .map(|_| ())
+    }
+
+    /// The replace rules in force, in the order the server tries them.
+    pub fn replace_rules(&self) -> Vec<ReplaceRule> {
+        self.shared
+            .replace_rules
+            .lock()
+            .expect("replace rules")
+            .clone()
+    }
+
+    /// Adds a replace rule to this connection's queue on the server. Remembered like the data
+    /// mode and replayed in order after a reconnect.
+    ///
+    /// The server tries rules in the order they were added and the first match decides, so a
+    /// narrow rule added after a broader one that matches the same messages (such as the
+    /// default of [`ClientOptions::replace_old_data`]) has no effect; re-adding a rule with
+    /// the same filters changes its action instead.
+    pub fn add_replace_rule(&self, rule: ReplaceRule) -> Result<(), RequestError> {
+        replace_rule::remember(
+            &mut self.shared.replace_rules.lock().expect("replace rules"),
+            rule,
+        );
+        self.request(
+            DevAddr::local(Interface::PLAYER, 0),
+            player::REQ_ADD_REPLACE_RULE,
+            Body::Player(Player::AddReplaceRule(rule.to_request())),
+        )
+        .map(|_| ())
     }
 
     /// Messages from the server that could not be used (undecodable, replies to nothing).

@@ -7,8 +7,10 @@ use std::time::Duration;
 use crate::wire::DEFAULT_MAX_BODY;
 
 /// PUSH (data as soon as it is published) or PULL (data on request).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum DataMode {
+    /// The server default.
+    #[default]
     Push,
     Pull,
 }
@@ -59,6 +61,14 @@ pub struct ClientOptions {
     pub max_body: usize,
     /// Requests waiting for a reply at once; more are refused at once.
     pub max_pending_requests: usize,
+    /// Liveness check, off by default. When set and nothing has arrived for this long, the
+    /// client sends a device-list request — which a Player server always answers, whatever
+    /// its devices do — and if still nothing arrives within the same time again, the server
+    /// is taken for stalled: the connection is dropped and re-established (state
+    /// `Reconnecting`, [`super::Client::last_disconnect`] says why). Silence alone is never
+    /// enough, because a Player server legitimately sends nothing while no device has data.
+    /// Choose it longer than the biggest message takes to arrive.
+    pub stall_timeout: Option<Duration>,
     pub notifier: Option<Notifier>,
 }
 
@@ -72,6 +82,7 @@ impl Default for ClientOptions {
             backoff: Backoff::default(),
             max_body: DEFAULT_MAX_BODY,
             max_pending_requests: 256,
+            stall_timeout: None,
             notifier: None,
         }
     }
@@ -86,6 +97,8 @@ impl fmt::Debug for ClientOptions {
             .field("replace_old_data", &self.replace_old_data)
             .field("backoff", &self.backoff)
             .field("max_body", &self.max_body)
+            .field("max_pending_requests", &self.max_pending_requests)
+            .field("stall_timeout", &self.stall_timeout)
             .field("notifier", &self.notifier.is_some())
             .finish()
     }

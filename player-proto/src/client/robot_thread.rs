@@ -12,12 +12,11 @@ use tokio::net::tcp::{OwnedReadHalf, OwnedWriteHalf};
 use tokio::sync::mpsc::UnboundedReceiver;
 use tokio::time::Instant;
 
+use super::liveness::{Liveness, Verdict};
 use super::options::{ClientOptions, DataMode};
 use super::requests::{PendingRequests, ReplySender, RequestError};
 use super::shared::{ConnectionState, DeviceInfo, Shared};
-use crate::interfaces::player::{
-    self, AddReplaceRuleReq, DataModeReq, DeviceReq, DriverInfo, Player,
-};
+use crate::interfaces::player::{self, DataModeReq, DeviceReq, DriverInfo, Player};
 use crate::message::{Body, Message};
 use crate::transport::{Incoming, MessageReader, TransportError, write_message};
 use crate::wire::{DevAddr, FrameDecoder, Interface, MsgType, PlayerString};
@@ -102,6 +101,9 @@ impl Robot {
                 }
                 Err(end) => end,
             };
+            if let End::Lost(why) | End::Fatal(why) = &end {
+                *self.shared.last_disconnect.lock().expect("last disconnect") = Some(why.clone());
+            }
             match end {
                 End::Shutdown => return,
                 End::Fatal(why) => {
@@ -197,12 +199,15 @@ impl Robot {
         let mut pending = PendingRequests::default();
         let mut pulls: Vec<std::sync::mpsc::Sender<Result<usize, RequestError>>> = Vec::new();
         let mut data_in_round = 0usize;
+        let mut liveness = Liveness::new(self.options.stall_timeout);
         let end = loop {
-            let deadline = pending
-                .next_deadline()
+            let deadline = [pending.next_deadline(), liveness.deadline()]
+                .into_iter()
+                .flatten()
+                .min()
                 .unwrap_or_else(|| Instant::now() + Duration::from_secs(3600));
             tokio::select! {
-                incoming = link.reader.read() => match incoming {
+                incoming = link.reader.read() => match liveness.heard(incoming) {
                     Ok(Incoming::Message(message)) => match message.header.msg_type {
                         MsgType::Data => {
                             data_in_round += 1;
@@ -252,7 +257,23 @@ impl Robot {
                         }
                     }
                 },
-                _ = tokio::time::sleep_until(deadline) => pending.expire(Instant::now()),
+                _ = tokio::time::sleep_until(deadline) => {
+                    let now = Instant::now();
+                    pending.expire(now);
+                    match liveness.check(now) {
+                        Verdict::Alive => {}
+                        Verdict::Stalled(why) => break End::Lost(why),
+                        Verdict::Probe => {
+                            // The reply is consumed by the pending table and goes nowhere.
+                            let (reply, _) = std::sync::mpsc::channel();
+                            let probe = Message::new(DevAddr::local(Interface::PLAYER, 0), MsgType::Req, player::REQ_DEVLIST, Body::Empty);
+                            pending.add((Interface::PLAYER, 0, player::REQ_DEVLIST), liveness.timeout(), reply);
+                            if let Err(e) = write_message(&mut link.writer, &probe, &mut link.scratch).await {
+                                break End::Lost(e.to_string());
+                            }
+                        }
+                    }
+                }
             }
         };
         let why = match &end {
@@ -318,11 +339,12 @@ impl Robot {
 
     async fn handshake(&mut self, link: &mut Link) -> Result<(), End> {
         let server = DevAddr::local(Interface::PLAYER, 0);
-        let mode = match self.options.data_mode {
+        let req = |subtype, body| Message::new(server, MsgType::Req, subtype, body);
+        // What the handle asked for last: the connect-time options, or what was set since.
+        let mode = match *self.shared.data_mode.lock().expect("data mode") {
             DataMode::Push => player::DATAMODE_PUSH,
             DataMode::Pull => player::DATAMODE_PULL,
         };
-        let req = |subtype, body| Message::new(server, MsgType::Req, subtype, body);
         self.call(
             link,
             req(
@@ -331,19 +353,13 @@ impl Robot {
             ),
         )
         .await?;
-        if self.options.replace_old_data {
-            let rule = AddReplaceRuleReq {
-                interf: -1,
-                index: -1,
-                msg_type: i32::from(MsgType::Data.code()),
-                subtype: -1,
-                replace: player::REPLACE_RULE_REPLACE,
-            };
+        let rules = self.shared.replace_rules.lock().expect("rules").clone();
+        for rule in rules {
             self.call(
                 link,
                 req(
                     player::REQ_ADD_REPLACE_RULE,
-                    Body::Player(Player::AddReplaceRule(rule)),
+                    Body::Player(Player::AddReplaceRule(rule.to_request())),
                 ),
             )
             .await?;

@@ -6,6 +6,8 @@ use std::fmt;
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
+use super::options::DataMode;
+use super::replace_rule::ReplaceRule;
 use crate::message::Message;
 use crate::wire::{Banner, DevAddr, Interface};
 
@@ -69,6 +71,13 @@ pub(crate) struct Shared {
     pub devices: Mutex<Vec<DeviceInfo>>,
     /// What the user subscribed to, restored after a reconnect.
     pub subscriptions: Mutex<HashSet<(Interface, u16)>>,
+    /// The data mode asked for last, restored after a reconnect.
+    pub data_mode: Mutex<DataMode>,
+    /// The replace rules asked for, in the order the server applies them; restored after a
+    /// reconnect in that order.
+    pub replace_rules: Mutex<Vec<ReplaceRule>>,
+    /// Why the last connection ended (lost, stalled, refused), for a status line.
+    pub last_disconnect: Mutex<Option<String>>,
     /// Newest DATA per (interface, index, subtype), subscribed devices only: bounded by the
     /// subscriptions, whatever the server sends.
     pub latest: Mutex<HashMap<DataKey, Stamped>>,
@@ -78,6 +87,20 @@ pub(crate) struct Shared {
 }
 
 impl Shared {
+    /// Fresh state seeded with the connect-time data mode and replace rule.
+    pub fn new(data_mode: DataMode, replace_old_data: bool) -> Shared {
+        let shared = Shared::default();
+        *shared.data_mode.lock().expect("data mode") = data_mode;
+        if replace_old_data {
+            shared
+                .replace_rules
+                .lock()
+                .expect("replace rules")
+                .push(ReplaceRule::newest_data());
+        }
+        shared
+    }
+
     pub fn set_state(&self, state: ConnectionState) {
         *self.state.lock().expect("state") = Some(state);
     }
