@@ -4,11 +4,14 @@
 
 /// Declares a struct whose wire form is its fields' encodings in declaration order, exactly as
 /// Player's generator serialises a C struct.
+///
+/// A field written `pub x: T [max N]` is one of Player's few bounded arrays (`T x[N]` with a
+/// count): its XDR length is checked against `N` before anything is decoded or allocated.
 macro_rules! xdr_struct {
     (
         $(#[$meta:meta])*
         pub struct $name:ident {
-            $( $(#[$field_meta:meta])* pub $field:ident : $ty:ty ),* $(,)?
+            $( $(#[$field_meta:meta])* pub $field:ident : $ty:ty $([max $max:expr])? ),* $(,)?
         }
     ) => {
         $(#[$meta])*
@@ -27,6 +30,10 @@ macro_rules! xdr_struct {
                 body: &::bytes::Bytes,
             ) -> $crate::wire::xdr::XdrResult<'a, Self> {
                 $(
+                    $(
+                        $crate::wire::xdr::check_max_length(input, $max)
+                            .map_err(|e| $crate::wire::xdr::in_field(e, stringify!($name), stringify!($field)))?;
+                    )?
                     let (input, $field) = <$ty as $crate::wire::xdr::Xdr>::decode(input, body)
                         .map_err(|e| $crate::wire::xdr::in_field(e, stringify!($name), stringify!($field)))?;
                 )*

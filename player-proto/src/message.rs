@@ -174,6 +174,9 @@ impl fmt::Display for XdrFault {
                 f,
                 "array length {length} cannot fit in the {remaining} bytes left"
             ),
+            XdrFault::LengthAboveMax { length, max } => {
+                write!(f, "array length {length} exceeds its maximum {max}")
+            }
             XdrFault::Malformed => f.write_str("malformed value"),
         }
     }
@@ -185,6 +188,16 @@ pub struct Message {
     /// The header as received, or as it will be sent; `size` is recomputed on encoding.
     pub header: Header,
     pub body: Body,
+    /// Bytes after the end of a typed body but within the header's `size`, kept verbatim and
+    /// re-encoded after the body.
+    ///
+    /// Player's own decoder skips such bytes silently, so a server may send them (a driver
+    /// built against a newer interface definition that appended fields, or padding). Dropping
+    /// them would make a recorder or relay (`playerdump`, the replaying server) change the
+    /// stream; refusing them would lose data a Player client accepts. Keeping them makes every
+    /// accepted message re-encode byte for byte, and a non-empty `trailing` reports them.
+    /// Empty for messages built here.
+    pub trailing: Bytes,
 }
 
 impl Message {
@@ -201,6 +214,7 @@ impl Message {
                 size,
             },
             body,
+            trailing: Bytes::new(),
         }
     }
 
@@ -230,35 +244,44 @@ impl Message {
             return Ok(Message {
                 header,
                 body: Body::Empty,
+                trailing: Bytes::new(),
             });
         }
         let class = header.msg_type.class();
         let typed = Body::decode_typed(header.addr.interf, class, header.subtype, &body);
-        let body = match typed {
-            None => Body::Unknown(body),
+        let (typed, trailing) = match typed {
+            None => (Body::Unknown(body), Bytes::new()),
+            Some(Ok((typed, 0))) => (typed, Bytes::new()),
             Some(Ok((typed, trailing))) => {
-                if trailing > 0 {
-                    // Player's own decoder skips these silently; so do we, but say so.
-                    tracing::debug!(%header, trailing, "body has trailing bytes");
-                }
-                typed
+                tracing::debug!(%header, trailing, "body has trailing bytes; kept verbatim");
+                (typed, body.slice(body.len() - trailing..))
             }
             Some(Err(err)) => return Err(DecodeError::from_xdr(header, &body, err)),
         };
-        Ok(Message { header, body })
+        Ok(Message {
+            header,
+            body: typed,
+            trailing,
+        })
+    }
+
+    /// Length of the body as it travels: the typed body and any trailing bytes.
+    pub fn body_len(&self) -> usize {
+        self.body.encoded_len() + self.trailing.len()
     }
 
     /// Encoded length, header included.
     pub fn encoded_len(&self) -> usize {
-        HEADER_LEN + self.body.encoded_len()
+        HEADER_LEN + self.body_len()
     }
 
-    /// Appends header and body; the header's `size` is the body's encoded length.
+    /// Appends header, body and trailing bytes; the header's `size` is their length.
     pub fn encode<B: BufMut>(&self, out: &mut B) {
         let mut header = self.header;
-        header.size = u32::try_from(self.body.encoded_len()).expect("body above 4 GiB");
+        header.size = u32::try_from(self.body_len()).expect("body above 4 GiB");
         header.encode(out);
         self.body.encode(out);
+        out.put_slice(&self.trailing);
     }
 
     /// The wire bytes in one buffer.

@@ -7,6 +7,8 @@
 use super::common::{BBox3d, Pose2d, Pose3d};
 use crate::wire::Opaque;
 
+/// `PLAYER_LASER_MAX_FILTER_PARAMS`.
+pub const MAX_FILTER_PARAMS: u32 = 8;
 pub const FILTER_MEDIAN: u8 = 1;
 pub const FILTER_EDGE: u8 = 2;
 pub const FILTER_RANGE: u8 = 3;
@@ -97,7 +99,8 @@ xdr_struct! {
     /// `player_laser_set_filter_config_t`: at most 8 parameters.
     pub struct LaserFilter {
         pub filter_type: u8,
-        pub parameters: Vec<f32>,
+        #[cfg_attr(any(test, feature = "proptest"), proptest(strategy = "proptest::collection::vec(proptest::arbitrary::any::<f32>(), 0..=8)"))]
+        pub parameters: Vec<f32> [max MAX_FILTER_PARAMS],
     }
 }
 

@@ -4,6 +4,15 @@
 use super::common::U32Value;
 use crate::wire::{DevAddr, Opaque, PlayerString};
 
+/// `PLAYER_MAX_DEVICES`: devices in one device list.
+pub const MAX_DEVICES: u32 = 4096;
+/// `PLAYER_MAX_DRIVER_STRING_LEN`: driver name bytes, NUL included.
+pub const MAX_DRIVER_NAME: u32 = 64;
+/// `PLAYER_KEYLEN`: authentication key bytes.
+pub const MAX_AUTH_KEY: u32 = 32;
+/// Host name bytes in a name-service request.
+pub const MAX_NAMESERVICE_NAME: u32 = 64;
+
 /// `PLAYER_OPEN_MODE`: subscribe.
 pub const OPEN_MODE: u8 = 1;
 /// `PLAYER_CLOSE_MODE`: unsubscribe.
@@ -36,7 +45,7 @@ pub const SYNCH_OVERFLOW: u8 = 2;
 xdr_struct! {
     /// `player_device_devlist_t`: the devices served on the connection's port.
     pub struct DevList {
-        pub devices: Vec<DevAddr>,
+        pub devices: Vec<DevAddr> [max MAX_DEVICES],
     }
 }
 
@@ -45,7 +54,7 @@ xdr_struct! {
     /// driver's name (`"stage"`, `"sicklms200"`).
     pub struct DriverInfo {
         pub addr: DevAddr,
-        pub driver_name: PlayerString,
+        pub driver_name: PlayerString [max MAX_DRIVER_NAME],
     }
 }
 
@@ -55,7 +64,7 @@ xdr_struct! {
     pub struct DeviceReq {
         pub addr: DevAddr,
         pub access: u8,
-        pub driver_name: PlayerString,
+        pub driver_name: PlayerString [max MAX_DRIVER_NAME],
     }
 }
 
@@ -69,14 +78,15 @@ xdr_struct! {
 xdr_struct! {
     /// `player_device_auth_req_t` (not implemented by the TCP server: always NACKed).
     pub struct AuthReq {
-        pub auth_key: Opaque,
+        #[cfg_attr(any(test, feature = "proptest"), proptest(strategy = "proptest::strategy::Strategy::prop_map(proptest::collection::vec(proptest::arbitrary::any::<u8>(), 0..=32), Opaque::from)"))]
+        pub auth_key: Opaque [max MAX_AUTH_KEY],
     }
 }
 
 xdr_struct! {
     /// `player_device_nameservice_req_t` (not implemented by the TCP server: always NACKed).
     pub struct NameServiceReq {
-        pub name: PlayerString,
+        pub name: PlayerString [max MAX_NAMESERVICE_NAME],
         pub port: u16,
     }
 }

@@ -112,6 +112,16 @@ pub struct Header {
 pub enum HeaderError {
     #[error("message type {0} is not one of Player's six (1 DATA .. 6 NACK)")]
     BadType(u32),
+    /// A field Player declares narrower than its 4 wire bytes (interface and index are
+    /// 16-bit, subtype 8-bit) holds a value that does not fit. Player would keep the low bits
+    /// and so route the message to some other device; we refuse it, so that every header we
+    /// accept re-encodes to the bytes it came from.
+    #[error("header field {field} = {value} does not fit its {bits} bits")]
+    FieldOutOfRange {
+        field: &'static str,
+        value: u32,
+        bits: u32,
+    },
 }
 
 impl Header {
@@ -123,15 +133,26 @@ impl Header {
             .ok()
             .and_then(MsgType::from_code)
             .ok_or(HeaderError::BadType(type_code))?;
+        let narrow = |field: &'static str, at: usize, bits: u32| {
+            let value = word(at);
+            if value >> bits == 0 {
+                Ok(value)
+            } else {
+                Err(HeaderError::FieldOutOfRange { field, value, bits })
+            }
+        };
+        let interf = narrow("interf", 8, 16)? as u16;
+        let index = narrow("index", 12, 16)? as u16;
+        let subtype = narrow("subtype", 20, 8)? as u8;
         Ok(Header {
             addr: DevAddr {
                 host: word(0),
                 robot: word(4),
-                interf: super::Interface(word(8) as u16),
-                index: word(12) as u16,
+                interf: super::Interface(interf),
+                index,
             },
             msg_type,
-            subtype: word(20) as u8,
+            subtype,
             timestamp: f64::from_be_bytes(raw[24..32].try_into().expect("8 bytes")),
             seq: word(32),
             size: word(36),
@@ -196,5 +217,28 @@ mod tests {
         let mut raw = LASER_HEADER;
         raw[19] = 7;
         assert_eq!(Header::decode(&raw), Err(HeaderError::BadType(7)));
+    }
+
+    #[test]
+    fn refuses_narrow_fields_that_overflow_instead_of_truncating() {
+        for (at, field, bits) in [(8, "interf", 16), (12, "index", 16), (20, "subtype", 8)] {
+            let mut raw = LASER_HEADER;
+            raw[at..at + 4].copy_from_slice(&0x0001_0006u32.to_be_bytes());
+            assert_eq!(
+                Header::decode(&raw),
+                Err(HeaderError::FieldOutOfRange {
+                    field,
+                    value: 0x0001_0006,
+                    bits
+                })
+            );
+        }
+        // The widest values that fit are kept and re-encode identically.
+        let mut raw = LASER_HEADER;
+        raw[8..12].copy_from_slice(&[0, 0, 0xff, 0xff]);
+        raw[20..24].copy_from_slice(&[0, 0, 0, 0xff]);
+        let mut out = Vec::new();
+        Header::decode(&raw).unwrap().encode(&mut out);
+        assert_eq!(out, raw);
     }
 }

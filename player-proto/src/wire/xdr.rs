@@ -31,6 +31,9 @@ pub enum XdrFault {
     LengthAboveCount { count: u32, length: u32 },
     /// An array length that cannot fit in the bytes that are left: refused before allocating.
     LengthBeyondBody { length: u32, remaining: usize },
+    /// A bounded array (`T x[MAX]` with a count, e.g. a device list of at most 4096) whose
+    /// length exceeds its maximum; Player's decoder refuses it too.
+    LengthAboveMax { length: u32, max: u32 },
     /// Any other combinator failure.
     Malformed,
 }
@@ -94,6 +97,27 @@ pub fn in_field<'a>(
     field: &'static str,
 ) -> nom::Err<XdrError<'a>> {
     err.map(|e| e.in_field(within, field))
+}
+
+/// Checks the XDR length of the counted array at the front of `input` (count word, then
+/// length word) against the array's declared maximum, before anything is decoded. Like
+/// Player's decoder it judges the inner length; the outer count of a fixed array is ignored
+/// there. Input too short to hold the two words passes: decoding the array reports that.
+pub fn check_max_length(input: &[u8], max: u32) -> Result<(), nom::Err<XdrError<'_>>> {
+    let Some(length_at) = input.get(4..) else {
+        return Ok(());
+    };
+    let Some(word) = length_at.get(..4) else {
+        return Ok(());
+    };
+    let length = u32::from_be_bytes(word.try_into().expect("4 bytes"));
+    if length > max {
+        return Err(nom::Err::Error(XdrError::new(
+            length_at,
+            XdrFault::LengthAboveMax { length, max },
+        )));
+    }
+    Ok(())
 }
 
 /// A value with a Player XDR encoding.
