@@ -5,6 +5,7 @@
 //! * [`config`] — plugin parameters with defaults and errors that say where.
 //! * [`device`] — what a plugin sees of its Player device.
 
+pub mod camera;
 pub mod config;
 pub mod device;
 pub mod plugin;
@@ -33,5 +34,6 @@ pub fn standard_plugins() -> PluginRegistry {
     registry.register("libpv3d_fiducial", fiducial::FiducialPlugin::create);
     registry.register("libpv3d_sonar", sonar::SonarPlugin::create);
     registry.register("libpv3d_ranger", ranger::RangerPlugin::create);
+    registry.register("libpv3d_camera", camera::CameraPlugin::create);
     registry
 }

@@ -88,6 +88,11 @@ pub trait Plugin: Send {
     /// The plugin's panel in the item tree.
     fn ui(&mut self, _ui: &mut egui::Ui, _ctx: &mut PluginContext<'_>) {}
 
+    /// Windows of the plugin's own (a camera's image), drawn every frame through egui: a
+    /// plugin never touches OpenGL. Called once per frame for every plugin, after the main
+    /// window's panels.
+    fn windows(&mut self, _egui_ctx: &egui::Context, _ctx: &mut PluginContext<'_>) {}
+
     /// Actions offered in the item tree.
     fn services(&self) -> Vec<Service> {
         Vec::new()

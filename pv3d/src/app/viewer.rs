@@ -295,6 +295,17 @@ impl Viewer {
                     self.click(picked, ground);
                 }
             });
+        // Plugins' own windows (a camera's image), through egui.
+        let (egui_ctx, now) = (ui.ctx().clone(), Instant::now());
+        for slot in &mut self.slots {
+            let mut ctx = PluginContext {
+                scene: &mut self.scene,
+                device: slot.device.as_deref(),
+                anchors: &mut self.anchors,
+                now,
+            };
+            slot.plugin.windows(&egui_ctx, &mut ctx);
+        }
     }
 
     fn handle_keys(&mut self, ui: &mut Ui) {

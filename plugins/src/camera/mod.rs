@@ -1,0 +1,91 @@
+//! `libpv3d_camera`: a camera's image in its own window (raw formats and JPEG), with its frame
+//! rate and age.
+//!
+//! Parameters (all optional): `showWindow` (1) — whether the window is open; the person can
+//! close and reopen it from the plugin's panel, and the choice is written back on save.
+//! Frames are decoded in [`Plugin::update`] only when a new one arrives ([`frames`]); the
+//! window is drawn by [`Plugin::windows`] through egui, never OpenGL.
+
+pub mod frames;
+pub mod window;
+
+use crate::config::{ConfigValueError, PluginConfig};
+use crate::plugin::{Anchors, Plugin, PluginContext};
+use crate::scene::Scene;
+use frames::{CameraFrames, Offered};
+use window::CameraWindow;
+
+/// Subtype of `PLAYER_CAMERA_DATA_STATE`.
+const DATA_STATE: u8 = 1;
+
+pub struct CameraPlugin {
+    config: PluginConfig,
+    frames: CameraFrames,
+    window: CameraWindow,
+    show_window: bool,
+}
+
+impl CameraPlugin {
+    pub fn create(
+        config: PluginConfig,
+        _ctx: &mut PluginContext<'_>,
+    ) -> Result<Box<dyn Plugin>, ConfigValueError> {
+        let show_window = config.bool("showWindow", true)?;
+        Ok(Box::new(CameraPlugin {
+            config,
+            frames: CameraFrames::default(),
+            window: CameraWindow::default(),
+            show_window,
+        }))
+    }
+
+    /// The frames received so far (for the panel and for tests).
+    pub fn frames(&self) -> &CameraFrames {
+        &self.frames
+    }
+}
+
+impl Plugin for CameraPlugin {
+    fn save(&self) -> PluginConfig {
+        let mut config = self.config.clone();
+        config.set("showWindow", if self.show_window { "1" } else { "0" });
+        config
+    }
+
+    fn title(&self) -> String {
+        match &self.config.device {
+            Some(d) => format!("Camera {d}"),
+            None => "Camera".into(),
+        }
+    }
+
+    /// Takes the newest frame. The scene does not change: the image lives in its window.
+    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+        if let Some(sample) = ctx.device.and_then(|d| d.latest(DATA_STATE))
+            && let Offered::Failed(reason) = self.frames.offer(&sample)
+        {
+            tracing::debug!(plugin = %self.config.id, "camera frame not shown: {reason}");
+        }
+        false
+    }
+
+    fn ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
+        ui.label(self.frames.summary(ctx.now));
+        ui.checkbox(&mut self.show_window, "show image window");
+    }
+
+    fn windows(&mut self, egui_ctx: &egui::Context, ctx: &mut PluginContext<'_>) {
+        let id = format!("{}#{}", self.config.id, self.config.origin);
+        let title = self.title();
+        self.window.show(
+            egui_ctx,
+            &id,
+            &title,
+            &self.frames,
+            ctx.now,
+            &mut self.show_window,
+        );
+    }
+
+    fn detach(&mut self, _scene: &mut Scene, _anchors: &mut Anchors) {}
+}

@@ -1,0 +1,118 @@
+//! The camera's own window: the newest frame as an egui texture, with its size, frame rate
+//! and age. A separate native window (an immediate viewport) where the backend has them; a
+//! window inside the main one otherwise (headless rendering, backends without viewports).
+//! No OpenGL here: egui uploads the texture.
+
+use std::borrow::Cow;
+use std::time::{Duration, Instant};
+
+use image::RgbaImage;
+use image::imageops::FilterType;
+
+use crate::camera::frames::CameraFrames;
+
+/// How often an open window repaints to keep the age current while no frame comes.
+const AGE_TICK: Duration = Duration::from_millis(250);
+
+/// The texture of one camera and which frame it holds.
+#[derive(Default)]
+pub struct CameraWindow {
+    texture: Option<egui::TextureHandle>,
+    uploaded_version: u64,
+}
+
+impl CameraWindow {
+    /// Hands egui the newest frame if it is not the one already uploaded.
+    fn upload(&mut self, ctx: &egui::Context, name: &str, frames: &CameraFrames) {
+        let Some(image) = frames.image() else { return };
+        if self.texture.is_some() && self.uploaded_version == frames.version() {
+            return;
+        }
+        let max_side = ctx.input(|i| i.max_texture_side);
+        let fitted = fit_within(image, max_side);
+        let color = egui::ColorImage::from_rgba_unmultiplied(
+            [fitted.width() as usize, fitted.height() as usize],
+            fitted.as_raw(),
+        );
+        let options = egui::TextureOptions::LINEAR;
+        match &mut self.texture {
+            Some(texture) => texture.set(color, options),
+            None => self.texture = Some(ctx.load_texture(name, color, options)),
+        }
+        self.uploaded_version = frames.version();
+    }
+
+    /// Shows the window this pass. `open` turns false when the person closes it.
+    pub fn show(
+        &mut self,
+        ctx: &egui::Context,
+        id: &str,
+        title: &str,
+        frames: &CameraFrames,
+        now: Instant,
+        open: &mut bool,
+    ) {
+        if !*open {
+            return;
+        }
+        self.upload(ctx, id, frames);
+        let size = frames
+            .image()
+            .map_or(egui::vec2(320.0, 240.0), |i| {
+                egui::vec2(i.width() as f32, i.height() as f32)
+            })
+            .min(egui::vec2(1024.0, 768.0));
+        let builder = egui::ViewportBuilder::default()
+            .with_title(title)
+            .with_inner_size(size + egui::vec2(16.0, 40.0));
+        let summary = frames.summary(now);
+        let texture = self.texture.as_ref();
+        let viewport = egui::ViewportId::from_hash_of(("pv3d-camera", id));
+        let closed = ctx.show_viewport_immediate(viewport, builder, |ui, class| {
+            let contents = |ui: &mut egui::Ui| {
+                ui.label(&summary);
+                if let Some(texture) = texture {
+                    ui.add(egui::Image::from_texture(texture).shrink_to_fit());
+                }
+            };
+            if class == egui::ViewportClass::EmbeddedWindow {
+                contents(ui);
+            } else {
+                egui::CentralPanel::default().show(ui, contents);
+            }
+            ui.input(|i| i.viewport().close_requested())
+        });
+        if closed {
+            *open = false;
+        }
+        ctx.request_repaint_after(AGE_TICK);
+    }
+}
+
+/// The image scaled down (keeping its aspect) so that neither side exceeds `max_side`, the
+/// largest texture the backend takes; borrowed as it is when it already fits.
+pub fn fit_within(image: &RgbaImage, max_side: usize) -> Cow<'_, RgbaImage> {
+    let (w, h) = (image.width() as usize, image.height() as usize);
+    let longest = w.max(h);
+    if longest <= max_side || max_side == 0 {
+        return Cow::Borrowed(image);
+    }
+    let scale = max_side as f64 / longest as f64;
+    let nw = ((w as f64 * scale).floor() as u32).clamp(1, max_side as u32);
+    let nh = ((h as f64 * scale).floor() as u32).clamp(1, max_side as u32);
+    Cow::Owned(image::imageops::resize(image, nw, nh, FilterType::Triangle))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frames_larger_than_a_texture_are_scaled_down_keeping_their_aspect() {
+        let image = RgbaImage::new(4096, 1024);
+        let fitted = fit_within(&image, 2048);
+        assert_eq!((fitted.width(), fitted.height()), (2048, 512));
+        let small = RgbaImage::new(640, 480);
+        assert!(matches!(fit_within(&small, 2048), Cow::Borrowed(_)));
+    }
+}
