@@ -3,6 +3,7 @@
 
 use std::sync::{Arc, Mutex};
 
+use player_proto::interfaces::camera::Camera;
 use player_proto::interfaces::common::{BBox2d, BBox3d, Pose2d, Pose3d};
 use player_proto::interfaces::fiducial::{
     Fiducial, FiducialData, FiducialFov, FiducialGeometry, FiducialItem,
@@ -15,6 +16,7 @@ use player_proto::interfaces::sonar::{Sonar, SonarData, SonarGeometry};
 use player_proto::message::{Body, Message};
 use player_proto::server::{Device, Reply};
 
+use crate::camera_frames::camera_data;
 use crate::served::{ServedDevice, Source};
 use crate::sim::{Command, Simulation, fiducials, ranger_scan};
 use crate::world::{Pose, RangerSpec, SensorSpec};
@@ -151,6 +153,16 @@ impl SimDevice {
                     _ => Reply::Nack,
                 }
             }
+            Source::Camera {
+                robot,
+                camera,
+                jpeg_quality,
+            } => match subtype {
+                player_proto::interfaces::camera::REQ_GET_IMAGE => Reply::Ack(Body::Camera(
+                    Camera::Image(camera_data(&sim, robot, camera, jpeg_quality)),
+                )),
+                _ => Reply::Nack,
+            },
             Source::Simulation => match &request.body {
                 Body::Simulation(SimMsg::Pose2d(asked)) => {
                     let name = asked.name.as_str();
@@ -241,6 +253,14 @@ impl SimDevice {
                     .collect();
                 (1, Body::Sonar(Sonar::Ranges(SonarData { ranges })))
             }
+            Source::Camera {
+                robot,
+                camera,
+                jpeg_quality,
+            } => (
+                1,
+                Body::Camera(Camera::State(camera_data(sim, robot, camera, jpeg_quality))),
+            ),
             Source::Fiducial { robot, finder } => {
                 let hits = fiducials(sim, robot, &sim.world.robots[robot].fiducials[finder]);
                 let items = hits

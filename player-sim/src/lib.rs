@@ -1,11 +1,12 @@
 //! Simulates robots in a Stage world and serves them over the Player protocol.
 //!
 //! * [`served`] — which devices each robot exposes on which port (from the .cfg).
-//! * [`devices`], [`serve`] — the simulation served over the Player protocol.
+//! * [`devices`], [`camera_frames`], [`serve`] — the simulation served over the Player protocol.
 //! * [`sim`] — the simulation: motion, collisions, sensors by ray casting.
 //! * [`world`] — the world a file describes: floorplan, robots and their sensors, obstacles.
 //! * [`worldfile`] — the syntax of Stage world files and Player config files.
 
+pub mod camera_frames;
 pub mod devices;
 pub mod serve;
 pub mod served;

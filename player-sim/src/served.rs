@@ -34,6 +34,13 @@ pub enum Source {
         robot: usize,
         finder: usize,
     },
+    /// A camera: raw RGB888 frames, or JPEG at this quality (1–100) when served through
+    /// Player's `cameracompress`.
+    Camera {
+        robot: usize,
+        camera: usize,
+        jpeg_quality: Option<u8>,
+    },
 }
 
 /// A device to serve.
@@ -133,24 +140,34 @@ pub fn from_cfg(
                         .iter()
                         .position(|r| r.name == model)
                         .ok_or_else(|| at(format!("no robot {model:?} in the world")))?;
+                    let spec = &world.robots[robot];
+                    let too_many = |model: &str, what: &str, has: usize| {
+                        at(format!(
+                            "{text}: {model} has only {has} {what}(s) in the world, \
+                             so the .cfg provides one too many"
+                        ))
+                    };
                     match interf {
                         Interface::POSITION2D => Source::Position { robot },
                         Interface::RANGER => {
-                            counts[0] += 1;
-                            let ranger = counts[0] - 1;
-                            if ranger >= world.robots[robot].rangers.len() {
-                                return Err(at(format!(
-                                    "{model} has only {} rangers",
-                                    world.robots[robot].rangers.len()
-                                )));
-                            }
+                            let ranger = next_index(&mut counts[0], spec.rangers.len())
+                                .ok_or_else(|| too_many(model, "ranger", spec.rangers.len()))?;
                             Source::Ranger { robot, ranger }
                         }
                         Interface::FIDUCIAL => {
-                            counts[1] += 1;
-                            Source::Fiducial {
+                            let finder = next_index(&mut counts[1], spec.fiducials.len())
+                                .ok_or_else(|| {
+                                    too_many(model, "fiducial finder", spec.fiducials.len())
+                                })?;
+                            Source::Fiducial { robot, finder }
+                        }
+                        Interface::CAMERA => {
+                            let camera = next_index(&mut counts[2], spec.cameras.len())
+                                .ok_or_else(|| too_many(model, "camera", spec.cameras.len()))?;
+                            Source::Camera {
                                 robot,
-                                finder: counts[1] - 1,
+                                camera,
+                                jpeg_quality: None,
                             }
                         }
                         other => {
@@ -187,6 +204,35 @@ pub fn from_cfg(
                         Source::Sonar { robot, ranger }
                     }
                 }
+                ("cameracompress", Interface::CAMERA) => {
+                    let from = required_device(&served, &requires).ok_or_else(|| {
+                        at(format!(
+                            "{driver} requires a camera no driver provides before it"
+                        ))
+                    })?;
+                    let Source::Camera { robot, camera, .. } = from.source else {
+                        return Err(at(format!("{driver} must require a camera")));
+                    };
+                    let quality = match block.get("image_quality") {
+                        None => crate::camera_frames::DEFAULT_JPEG_QUALITY,
+                        Some(p) => match p.value.as_f64() {
+                            Some(q) if q > 0.0 && q <= 1.0 => (q * 100.0).round().max(1.0) as u8,
+                            _ => {
+                                return Err(WorldFileError::at(
+                                    &p.pos.file,
+                                    p.pos.line,
+                                    p.pos.col,
+                                    "image_quality must be a number in (0, 1]",
+                                ));
+                            }
+                        },
+                    };
+                    Source::Camera {
+                        robot,
+                        camera,
+                        jpeg_quality: Some(quality),
+                    }
+                }
                 _ => {
                     ignored.push(format!(
                         "ignored: driver {driver:?} at {}:{}",
@@ -205,6 +251,26 @@ pub fn from_cfg(
         }
     }
     Ok(served)
+}
+
+/// Hands out the next index of a kind of sensor, if the model has that many.
+fn next_index(count: &mut usize, available: usize) -> Option<usize> {
+    (*count < available).then(|| {
+        *count += 1;
+        *count - 1
+    })
+}
+
+/// The device a converting driver's `requires [ "port:interface:index" ]` names, among those
+/// provided so far.
+fn required_device<'a>(
+    served: &'a [ServedDevice],
+    requires: &[String],
+) -> Option<&'a ServedDevice> {
+    let required = requires.first().and_then(|r| parse_addr(r))?;
+    served
+        .iter()
+        .find(|d| (d.port, d.interf, d.index) == required)
 }
 
 /// Without a .cfg: robot i on `base + i` with all its devices; the simulation on `base`.
@@ -265,6 +331,18 @@ pub fn default_devices(world: &World, base: u16) -> Vec<ServedDevice> {
                 finder,
                 "stage",
                 Source::Fiducial { robot, finder },
+            );
+        }
+        for camera in 0..spec.cameras.len() {
+            add(
+                Interface::CAMERA,
+                camera,
+                "stage",
+                Source::Camera {
+                    robot,
+                    camera,
+                    jpeg_quality: None,
+                },
             );
         }
     }

@@ -166,7 +166,7 @@ fn fiducials_and_sonar_rings_of_the_multirobot_world() {
     assert_eq!(ranges.ranges.len(), 8);
     assert_eq!(
         client.devices().len(),
-        6,
-        "simulation, position2d, 2 rangers, fiducial, laser; the camera is not simulated yet"
+        8,
+        "simulation, position2d, 2 rangers, fiducial, camera, laser, JPEG camera"
     );
 }

@@ -28,24 +28,19 @@ impl GroundBox {
     pub fn raycast(&self, x: f64, y: f64, angle: f64) -> Option<f64> {
         let (ox, oy) = self.local_point(x, y);
         let a = angle - self.pose.a;
-        let (dx, dy) = (a.cos(), a.sin());
-        let (hx, hy) = (self.length / 2.0, self.width / 2.0);
-        let slab = |o: f64, d: f64, h: f64| -> (f64, f64) {
-            if d.abs() < 1e-12 {
-                if o.abs() <= h {
-                    (f64::NEG_INFINITY, f64::INFINITY)
-                } else {
-                    (f64::INFINITY, f64::NEG_INFINITY)
-                }
-            } else {
-                let (t1, t2) = ((-h - o) / d, (h - o) / d);
-                (t1.min(t2), t1.max(t2))
-            }
-        };
-        let (nx, fx) = slab(ox, dx, hx);
-        let (ny, fy) = slab(oy, dy, hy);
-        let (near, far) = (nx.max(ny), fx.min(fy));
-        (far >= near && far >= 0.0).then_some(near.max(0.0))
+        slab_hit(
+            ox,
+            oy,
+            a.cos(),
+            a.sin(),
+            self.length / 2.0,
+            self.width / 2.0,
+        )
+    }
+
+    /// Radius of the circle around the centre that holds the whole box.
+    pub fn bounding_radius(&self) -> f64 {
+        self.length.hypot(self.width) / 2.0
     }
 
     /// The four corners and four edge midpoints, for overlap tests.
@@ -71,6 +66,27 @@ impl GroundBox {
         self.outline().iter().any(|&(x, y)| other.contains(x, y))
             || other.outline().iter().any(|&(x, y)| self.contains(x, y))
     }
+}
+
+/// Where a ray from `(ox, oy)` along the unit `(dx, dy)` enters the axis-aligned box of half
+/// sizes `hx`, `hy` around the origin (0 if it starts inside), if it does ahead.
+pub(crate) fn slab_hit(ox: f64, oy: f64, dx: f64, dy: f64, hx: f64, hy: f64) -> Option<f64> {
+    let slab = |o: f64, d: f64, h: f64| -> (f64, f64) {
+        if d.abs() < 1e-12 {
+            if o.abs() <= h {
+                (f64::NEG_INFINITY, f64::INFINITY)
+            } else {
+                (f64::INFINITY, f64::NEG_INFINITY)
+            }
+        } else {
+            let (t1, t2) = ((-h - o) / d, (h - o) / d);
+            (t1.min(t2), t1.max(t2))
+        }
+    };
+    let (nx, fx) = slab(ox, dx, hx);
+    let (ny, fy) = slab(oy, dy, hy);
+    let (near, far) = (nx.max(ny), fx.min(fy));
+    (far >= near && far >= 0.0).then_some(near.max(0.0))
 }
 
 #[cfg(test)]

@@ -2,11 +2,15 @@
 //! that stop a robot and set its stall flag, and sensors by ray casting. Deterministic: the
 //! same world and commands give the same trajectory.
 
+mod camera;
 mod geometry;
+mod nearby;
 mod sensors;
 
+pub use camera::{Frame, render_camera};
 pub use geometry::GroundBox;
-pub use sensors::{FiducialHit, fiducials, on_robot, ranger_scan};
+pub use nearby::{NearbyBoxes, SolidBox};
+pub use sensors::{FiducialHit, fiducials, on_robot, ranger_scan, ranger_scan_exhaustive};
 
 use crate::world::{Drive, Pose, World};
 
@@ -103,7 +107,12 @@ impl Simulation {
         {
             return true;
         }
-        self.boxes_except(Some(i)).any(|b| b.overlaps(&me))
+        // Only boxes whose bounding circles meet can overlap: a cheap test first.
+        let reach = me.bounding_radius();
+        self.boxes_except(Some(i)).any(|b| {
+            let apart = (b.pose.x - pose.x).hypot(b.pose.y - pose.y);
+            apart <= reach + b.bounding_radius() && b.overlaps(&me)
+        })
     }
 
     /// Advances the world by one step of `world.interval` seconds.

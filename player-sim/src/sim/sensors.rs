@@ -1,6 +1,7 @@
 //! Sensors by ray casting: a ranger's beams against the floorplan, the boxes and the other
 //! robots; fiducial markers within range, field of view and line of sight.
 
+use super::nearby::NearbyBoxes;
 use super::{Simulation, wrap};
 use crate::world::{FiducialSpec, Pose, RangerSpec};
 
@@ -14,8 +15,36 @@ pub fn on_robot(robot: Pose, local: Pose) -> Pose {
     }
 }
 
-/// Distance to the nearest thing along a ray from robot `from`'s sensor, up to `max`.
-fn cast(sim: &Simulation, from: usize, x: f64, y: f64, angle: f64, max: f64) -> Option<f64> {
+/// Distance to the nearest thing along a ray, up to `max`: the floorplan by grid traversal and
+/// the boxes near the sensor.
+fn cast(
+    sim: &Simulation,
+    boxes: &NearbyBoxes,
+    x: f64,
+    y: f64,
+    angle: f64,
+    max: f64,
+) -> Option<f64> {
+    let floor = sim
+        .world
+        .floor
+        .as_ref()
+        .and_then(|g| g.raycast(x, y, angle, max));
+    let limit = floor.unwrap_or(max);
+    let thing = boxes.nearest(x, y, angle, limit).map(|(d, _)| d);
+    thing.or(floor)
+}
+
+/// The same distance by testing every box: the unpruned reference the pruned cast is tested
+/// against and the benchmark's baseline.
+fn cast_exhaustive(
+    sim: &Simulation,
+    from: usize,
+    x: f64,
+    y: f64,
+    angle: f64,
+    max: f64,
+) -> Option<f64> {
     let floor = sim
         .world
         .floor
@@ -35,10 +64,31 @@ fn cast(sim: &Simulation, from: usize, x: f64, y: f64, angle: f64, max: f64) -> 
 /// over the field of view (first at -fov/2); for a ring, one reading per sensor. A beam that
 /// hits nothing reads the maximum range.
 pub fn ranger_scan(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Vec<f64> {
+    scan_with(sim, robot, ranger, |origin, max| {
+        let boxes = NearbyBoxes::around(sim, Some(robot), origin.x, origin.y, max);
+        move |angle| cast(sim, &boxes, origin.x, origin.y, angle, max)
+    })
+}
+
+/// [`ranger_scan`] testing every box against every beam (no pruning): the reference.
+pub fn ranger_scan_exhaustive(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Vec<f64> {
+    scan_with(sim, robot, ranger, |origin, max| {
+        move |angle| cast_exhaustive(sim, robot, origin.x, origin.y, angle, max)
+    })
+}
+
+/// A ranger's beams, each cast by the caster `prepare` makes for a sensor's origin and reach.
+fn scan_with<F: Fn(f64) -> Option<f64>>(
+    sim: &Simulation,
+    robot: usize,
+    ranger: &RangerSpec,
+    prepare: impl Fn(Pose, f64) -> F,
+) -> Vec<f64> {
     let base = on_robot(sim.robots[robot].pose, ranger.pose);
     let mut out = Vec::new();
     for sensor in &ranger.sensors {
         let origin = on_robot(base, sensor.pose);
+        let caster = prepare(origin, sensor.max_range);
         let n = sensor.samples.max(1);
         let step = if n > 1 {
             sensor.fov / (n - 1) as f64
@@ -48,8 +98,7 @@ pub fn ranger_scan(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Vec<f
         let first = if n > 1 { -sensor.fov / 2.0 } else { 0.0 };
         for i in 0..n {
             let angle = origin.a + first + i as f64 * step;
-            let range = cast(sim, robot, origin.x, origin.y, angle, sensor.max_range)
-                .unwrap_or(sensor.max_range);
+            let range = caster(angle).unwrap_or(sensor.max_range);
             out.push(range.max(sensor.min_range));
         }
     }

@@ -111,6 +111,9 @@ pub struct World {
     /// Simulation step, seconds.
     pub interval: f64,
     pub floor: Option<OccupancyGrid>,
+    /// The floorplan's wall height (its size's z) and colour, for the camera.
+    pub floor_height: f64,
+    pub floor_color: [u8; 3],
     pub robots: Vec<RobotSpec>,
     pub obstacles: Vec<BoxObstacle>,
     /// "ignored: <what> at file:line", once each.
@@ -143,6 +146,8 @@ impl World {
         let mut types = Types::default();
         let mut world = World {
             interval: 0.1,
+            floor_height: 1.0,
+            floor_color: [77, 77, 77],
             ..World::default()
         };
         let base = path.parent().unwrap_or(Path::new("."));
@@ -219,6 +224,8 @@ impl World {
         let grid = OccupancyGrid::from_png(&base.join(file), size[0], size[1], pose.x, pose.y)
             .map_err(|e| err(&bitmap.pos, e))?;
         self.floor = Some(grid);
+        self.floor_height = size.get(2).copied().unwrap_or(1.0);
+        self.floor_color = color_of(model)?;
         Ok(())
     }
 

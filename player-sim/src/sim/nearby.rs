@@ -1,0 +1,133 @@
+//! Ray casting that scales with the number of robots: a sensor first keeps only the boxes
+//! (robots and obstacles) whose bounding circle its reach touches, once per scan, and then each
+//! ray skips, without trigonometry, every kept box whose circle it misses or that lies beyond
+//! the nearest hit so far. With 256 robots a laser's 181 rays then test a handful of boxes each
+//! instead of all 255 others.
+
+use super::Simulation;
+use super::geometry::slab_hit;
+
+/// A solid box prepared for many rays: its frame's sine and cosine computed once.
+#[derive(Debug, Clone, Copy)]
+pub struct SolidBox {
+    pub x: f64,
+    pub y: f64,
+    sin: f64,
+    cos: f64,
+    half_length: f64,
+    half_width: f64,
+    radius: f64,
+    /// Height above the floor, m (for the camera).
+    pub height: f64,
+    pub color: [u8; 3],
+}
+
+impl SolidBox {
+    /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box, if ahead.
+    fn hit(&self, x: f64, y: f64, dx: f64, dy: f64) -> Option<f64> {
+        let (rx, ry) = (x - self.x, y - self.y);
+        let (ox, oy) = (
+            self.cos * rx + self.sin * ry,
+            -self.sin * rx + self.cos * ry,
+        );
+        let (lx, ly) = (
+            self.cos * dx + self.sin * dy,
+            -self.sin * dx + self.cos * dy,
+        );
+        slab_hit(ox, oy, lx, ly, self.half_length, self.half_width)
+    }
+
+    /// Does the ray come near enough to the box's bounding circle, ahead and before `limit`?
+    fn may_hit(&self, x: f64, y: f64, dx: f64, dy: f64, limit: f64) -> bool {
+        let (cx, cy) = (self.x - x, self.y - y);
+        let along = cx * dx + cy * dy;
+        let across = cx * dy - cy * dx;
+        across.abs() <= self.radius && along + self.radius >= 0.0 && along - self.radius <= limit
+    }
+}
+
+/// The boxes a sensor at one place could see within its reach.
+#[derive(Debug, Clone, Default)]
+pub struct NearbyBoxes {
+    boxes: Vec<SolidBox>,
+}
+
+impl NearbyBoxes {
+    /// Every robot but `except` and every obstacle whose bounding circle comes within `reach`
+    /// of `(x, y)`.
+    pub fn around(sim: &Simulation, except: Option<usize>, x: f64, y: f64, reach: f64) -> Self {
+        let robots = sim
+            .robots
+            .iter()
+            .zip(&sim.world.robots)
+            .enumerate()
+            .filter(|(i, _)| Some(*i) != except)
+            .map(|(_, (state, spec))| (state.pose, spec.size, spec.color));
+        let obstacles = sim
+            .world
+            .obstacles
+            .iter()
+            .map(|o| (o.pose, o.size, o.color));
+        let boxes = robots
+            .chain(obstacles)
+            .filter_map(|(pose, size, color)| {
+                let radius = size[0].hypot(size[1]) / 2.0;
+                let centre_distance = (pose.x - x).hypot(pose.y - y);
+                (centre_distance - radius <= reach).then(|| {
+                    let (sin, cos) = pose.a.sin_cos();
+                    SolidBox {
+                        x: pose.x,
+                        y: pose.y,
+                        sin,
+                        cos,
+                        half_length: size[0] / 2.0,
+                        half_width: size[1] / 2.0,
+                        radius,
+                        height: size[2],
+                        color,
+                    }
+                })
+            })
+            .collect();
+        NearbyBoxes { boxes }
+    }
+
+    pub fn len(&self) -> usize {
+        self.boxes.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.boxes.is_empty()
+    }
+
+    /// The nearest box along the ray from `(x, y)` at `angle`, within `max`: (distance, box).
+    pub fn nearest(&self, x: f64, y: f64, angle: f64, max: f64) -> Option<(f64, &SolidBox)> {
+        let (dy, dx) = angle.sin_cos();
+        let mut best: Option<(f64, &SolidBox)> = None;
+        for b in &self.boxes {
+            let limit = best.map_or(max, |(d, _)| d);
+            if !b.may_hit(x, y, dx, dy, limit) {
+                continue;
+            }
+            if let Some(d) = b.hit(x, y, dx, dy).filter(|&d| d <= limit) {
+                best = Some((d, b));
+            }
+        }
+        best
+    }
+
+    /// Every box along the ray within `max`, in no particular order: (distance, box).
+    pub fn all_along(
+        &self,
+        x: f64,
+        y: f64,
+        angle: f64,
+        max: f64,
+    ) -> impl Iterator<Item = (f64, &SolidBox)> {
+        let (dy, dx) = angle.sin_cos();
+        self.boxes
+            .iter()
+            .filter(move |b| b.may_hit(x, y, dx, dy, max))
+            .filter_map(move |b| b.hit(x, y, dx, dy).filter(|&d| d <= max).map(|d| (d, b)))
+    }
+}
