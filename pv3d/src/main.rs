@@ -58,6 +58,14 @@ struct Cli {
     #[arg(long, value_name = "OUT.xml")]
     save_to: Option<PathBuf>,
 
+    /// Close the window after this many seconds (for scripted runs and measurements).
+    #[arg(long, value_name = "SECONDS")]
+    quit_after: Option<f64>,
+
+    /// On exit, print how many frames the window drew (to check the redraw policy).
+    #[arg(long)]
+    frame_stats: bool,
+
     /// Seconds to wait for the Player servers' device lists before building the scene.
     #[arg(long, default_value_t = 3.0, value_name = "SECONDS")]
     connect_timeout: f64,
@@ -87,6 +95,18 @@ fn main() -> Result<()> {
     if !(0.001..=10.0).contains(&cli.redraw_interval) {
         bail!("--redraw-interval must be from 0.001 to 10 seconds");
     }
+    if cli.quit_after.is_some_and(|s| !(0.0..=1e6).contains(&s)) {
+        bail!("--quit-after must be from 0 to 1000000 seconds");
+    }
+    if !(0.0..=60.0).contains(&cli.connect_timeout) {
+        bail!("--connect-timeout must be from 0 to 60 seconds");
+    }
+    if !(0.0..=1e6).contains(&cli.after) {
+        bail!("--after must be from 0 to 1000000 seconds");
+    }
+    if cli.headless && cli.screenshot.is_none() && cli.emit_config.is_none() {
+        bail!("--headless draws no window: it needs --screenshot OUT.png");
+    }
 
     let parsers = ParserRegistry::default();
     let mut composition = Composition::load_files(&cli.files, &parsers)?;
@@ -102,9 +122,7 @@ fn main() -> Result<()> {
         &composition.clients,
         Some(Arc::new(move || wake.wake())),
     ));
-    robots.wait_for_handshakes(Duration::from_secs_f64(
-        cli.connect_timeout.clamp(0.0, 60.0),
-    ));
+    robots.wait_for_handshakes(Duration::from_secs_f64(cli.connect_timeout));
     let mut composer = Composer::new(composition.clone());
     let instances = composer.initial(&robots);
 
@@ -129,7 +147,7 @@ fn main() -> Result<()> {
         });
     }
     let interval = Duration::from_secs_f64(cli.redraw_interval);
-    let after = Duration::from_secs_f64(cli.after.max(0.0));
+    let after = Duration::from_secs_f64(cli.after);
     let no_display =
         std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none();
 
@@ -162,6 +180,8 @@ fn main() -> Result<()> {
                     .screenshot
                     .clone()
                     .map(|path| ScreenshotRequest { path, after }),
+                quit_after: cli.quit_after.map(Duration::from_secs_f64),
+                frame_stats: cli.frame_stats,
             };
             run_window(viewer, options, waker, Box::new(|_| {})).map_err(anyhow::Error::msg)
         }

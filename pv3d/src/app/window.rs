@@ -55,6 +55,9 @@ struct WindowApp {
     viewer: Viewer,
     policy: RedrawPolicy,
     screenshot: Option<ScreenshotRequest>,
+    quit_after: Option<Duration>,
+    frame_stats: bool,
+    frames: u64,
     started: Instant,
     shot_requested: bool,
     shot_done: Arc<Mutex<Option<Result<(), String>>>>,
@@ -63,6 +66,7 @@ struct WindowApp {
 
 impl eframe::App for WindowApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.frames += 1;
         (self.on_frame)(&mut self.viewer);
         self.viewer.update(Instant::now());
         self.viewer.ui(ui);
@@ -71,10 +75,25 @@ impl eframe::App for WindowApp {
             ui.ctx().request_repaint();
         }
         self.take_screenshot(ui.ctx());
+        if let Some(after) = self.quit_after {
+            match after.checked_sub(self.started.elapsed()) {
+                // One wake-up at the deadline, not polling: an idle window stays idle.
+                Some(left) if !left.is_zero() => ui.ctx().request_repaint_after(left),
+                _ => ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close),
+            }
+        }
     }
 
     fn on_exit(&mut self, _gl: Option<&eframe::glow::Context>) {
         self.viewer.stop_all();
+        if self.frame_stats {
+            let seconds = self.started.elapsed().as_secs_f64();
+            eprintln!(
+                "frames: {} in {seconds:.2} s ({:.1} per second)",
+                self.frames,
+                self.frames as f64 / seconds.max(1e-9)
+            );
+        }
     }
 }
 
@@ -95,8 +114,10 @@ impl WindowApp {
             ctx.request_repaint_after(Duration::from_millis(50));
             return;
         }
-        if self.started.elapsed() < request.after {
-            ctx.request_repaint_after(Duration::from_millis(100));
+        if let Some(left) = request.after.checked_sub(self.started.elapsed())
+            && !left.is_zero()
+        {
+            ctx.request_repaint_after(left);
             return;
         }
         self.shot_requested = true;
@@ -121,6 +142,10 @@ pub struct WindowOptions {
     pub size: (u32, u32),
     pub policy: RedrawPolicy,
     pub screenshot: Option<ScreenshotRequest>,
+    /// Close the window this long after it opened.
+    pub quit_after: Option<Duration>,
+    /// On exit, print how many frames were drawn (to check the redraw policy).
+    pub frame_stats: bool,
 }
 
 /// Runs the viewer in a window until it is closed. `on_frame` runs before every UI pass
@@ -146,6 +171,9 @@ pub fn run_window(
         viewer,
         policy: options.policy,
         screenshot: options.screenshot,
+        quit_after: options.quit_after,
+        frame_stats: options.frame_stats,
+        frames: 0,
         started: Instant::now(),
         shot_requested: false,
         shot_done: Arc::default(),

@@ -1,0 +1,164 @@
+//! The real window (eframe + glow + winit on X11), under Xvfb with Mesa: it draws what the
+//! composition says, takes its own screenshot, and redraws only when something changed.
+//! Needs Xvfb (`scripts/setup.sh` installs it).
+
+use std::path::Path;
+use std::process::{Child, Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+/// An Xvfb server on a display of its own, stopped when dropped.
+struct Xvfb {
+    child: Child,
+    display: String,
+}
+
+impl Xvfb {
+    fn start() -> Xvfb {
+        let base = 40 + std::process::id() % 400;
+        for n in base..base + 50 {
+            if Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
+                || Path::new(&format!("/tmp/.X{n}-lock")).exists()
+            {
+                continue;
+            }
+            let child = Command::new("Xvfb")
+                .args([
+                    &format!(":{n}"),
+                    "-screen",
+                    "0",
+                    "1024x768x24",
+                    "-nolisten",
+                    "tcp",
+                ])
+                .stdout(Stdio::null())
+                .stderr(Stdio::null())
+                .spawn()
+                .expect("Xvfb is needed for the window tests: run scripts/setup.sh");
+            let mut xvfb = Xvfb {
+                child,
+                display: format!(":{n}"),
+            };
+            let deadline = Instant::now() + Duration::from_secs(10);
+            while Instant::now() < deadline {
+                if Path::new(&format!("/tmp/.X11-unix/X{n}")).exists() {
+                    return xvfb;
+                }
+                if xvfb.child.try_wait().ok().flatten().is_some() {
+                    break; // lost a race for that display: try the next
+                }
+                std::thread::sleep(Duration::from_millis(20));
+            }
+            let _ = xvfb.child.kill();
+        }
+        panic!("could not start Xvfb on any display from :{base}");
+    }
+
+    fn pv3d(&self, args: &[&str]) -> Output {
+        Command::new(env!("CARGO_BIN_EXE_pv3d"))
+            .args(args)
+            .env("DISPLAY", &self.display)
+            .env_remove("WAYLAND_DISPLAY")
+            .output()
+            .expect("pv3d runs")
+    }
+}
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+fn frames(out: &Output) -> u64 {
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let line = stderr
+        .lines()
+        .find_map(|l| l.strip_prefix("frames: "))
+        .unwrap_or_else(|| panic!("no frame statistics in: {stderr}"));
+    line.split_whitespace().next().unwrap().parse().unwrap()
+}
+
+fn ground_composition(dir: &Path) -> String {
+    let file = dir.join("ground.xml");
+    std::fs::write(
+        &file,
+        r#"<pv3d>
+  <plugin library="libpv3d_lights"><background>#101820</background></plugin>
+  <plugin library="libpv3d_ground"/>
+  <plugin library="libpv3d_grid"/>
+</pv3d>"#,
+    )
+    .unwrap();
+    file.to_string_lossy().into_owned()
+}
+
+#[test]
+fn the_window_draws_the_demo_and_screenshots_itself() {
+    let xvfb = Xvfb::start();
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("window.png");
+    let out = xvfb.pv3d(&[
+        "--demo",
+        "--size",
+        "900x640",
+        "--after",
+        "2",
+        "--screenshot",
+        png.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let image = image::open(&png).unwrap().to_rgba8();
+    assert_eq!(image.dimensions(), (900, 640), "the window's own size");
+    let lasers = image
+        .pixels()
+        .filter(|p| p[0] > 200 && (70..=120).contains(&p[1]) && p[2] < 90)
+        .count();
+    let robots = image
+        .pixels()
+        .filter(|p| p[2] > 150 && p[0] < 110 && p[1] > 90 && p[1] < 190)
+        .count();
+    assert!(lasers > 200, "laser returns in the window: {lasers} pixels");
+    assert!(robots > 100, "robot bodies in the window: {robots} pixels");
+}
+
+#[test]
+fn an_idle_window_does_not_redraw_and_a_busy_one_keeps_its_interval() {
+    let xvfb = Xvfb::start();
+    let dir = tempfile::tempdir().unwrap();
+    let ground = ground_composition(dir.path());
+    // Nothing changes: start-up takes a few frames (layout passes, the window's first
+    // events), and then none — a longer run draws no more frames than a short one.
+    let run_idle = |seconds: &str| {
+        let out = xvfb.pv3d(&[&ground, "--quit-after", seconds, "--frame-stats"]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        frames(&out)
+    };
+    let (short, long) = (run_idle("1"), run_idle("4"));
+    assert!(
+        long <= short + 2,
+        "an idle window kept drawing: {short} frames in 1 s, {long} in 4 s"
+    );
+
+    // Five robots sending at 10 Hz each: about one frame per 0.10 s interval, not one per
+    // message (50 per second).
+    let busy = xvfb.pv3d(&["--demo", "--quit-after", "4", "--frame-stats"]);
+    assert!(
+        busy.status.success(),
+        "{}",
+        String::from_utf8_lossy(&busy.stderr)
+    );
+    let busy_frames = frames(&busy);
+    assert!(
+        (15..=60).contains(&busy_frames),
+        "a window with data at 50 messages/s drew {busy_frames} frames in 4 s"
+    );
+}
