@@ -105,12 +105,26 @@ pub struct BoxObstacle {
     pub fiducial_id: Option<i32>,
 }
 
+/// Where the floorplan bitmap lies, so a viewer can draw the same walls.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Floorplan {
+    /// The bitmap, resolved against the world file's folder.
+    pub bitmap: std::path::PathBuf,
+    /// Metres the bitmap covers, x then y.
+    pub size: [f64; 2],
+    /// The bitmap's centre in the world.
+    pub centre: [f64; 2],
+    pub height: f64,
+    pub color: [u8; 3],
+}
+
 /// Everything the simulator needs from a world file.
 #[derive(Debug, Clone, Default)]
 pub struct World {
     /// Simulation step, seconds.
     pub interval: f64,
     pub floor: Option<OccupancyGrid>,
+    pub floorplan: Option<Floorplan>,
     /// The floorplan's wall height (its size's z) and colour, for the camera.
     pub floor_height: f64,
     pub floor_color: [u8; 3],
@@ -226,6 +240,13 @@ impl World {
         self.floor = Some(grid);
         self.floor_height = size.get(2).copied().unwrap_or(1.0);
         self.floor_color = color_of(model)?;
+        self.floorplan = Some(Floorplan {
+            bitmap: base.join(file),
+            size: [size[0], size[1]],
+            centre: [pose.x, pose.y],
+            height: self.floor_height,
+            color: self.floor_color,
+        });
         Ok(())
     }
 
