@@ -92,6 +92,16 @@ fn rate_and_age_follow_the_arrivals() {
     assert_eq!(frames.summary(now), "2×2, 10.0 fps, 0.5 s old");
     // Long after the camera stopped, there is no rate to speak of.
     assert_eq!(frames.rate(last + Duration::from_secs(10)), None);
+
+    // The viewer saw only every third message (seq 1, 4, 7 over 0.2 s): the camera still sends
+    // 30 frames per second.
+    let mut skipped = CameraFrames::default();
+    for (i, seq) in [1u64, 4, 7].into_iter().enumerate() {
+        let at = t0 + Duration::from_millis(100 * i as u64);
+        skipped.offer(&sample(rgb_frame(2, 2, [seq as u8; 3]), seq, at));
+    }
+    let rate = skipped.rate(t0 + Duration::from_millis(200)).unwrap();
+    assert!((rate - 30.0).abs() < 0.01, "{rate}");
 }
 
 #[test]

@@ -44,7 +44,9 @@ pub struct CameraFrames {
     /// Counts decoded frames, so that a window re-uploads its texture only when it changes.
     version: u64,
     received: Option<Instant>,
-    arrivals: VecDeque<Instant>,
+    /// (sequence number, arrival) of the newest samples: frames the viewer skipped between two
+    /// of its passes still count, as the sequence numbers say how many came.
+    arrivals: VecDeque<(u64, Instant)>,
     error: Option<String>,
 }
 
@@ -62,7 +64,7 @@ impl CameraFrames {
         if self.arrivals.len() == RATE_WINDOW {
             self.arrivals.pop_front();
         }
-        self.arrivals.push_back(sample.received);
+        self.arrivals.push_back((sample.seq, sample.received));
         if let Some(Body::Camera(Camera::State(shown))) =
             self.decoded_from.as_ref().map(|m| &m.body)
             && self.image.is_some()
@@ -106,21 +108,19 @@ impl CameraFrames {
         self.received.map(|at| now.saturating_duration_since(at))
     }
 
-    /// Frames per second over the recent arrivals (up to [`RATE_SPAN`] before `now`); `None`
-    /// until two frames have come in that time.
+    /// Frames per second the camera sends, over the recent arrivals (up to [`RATE_SPAN`]
+    /// before `now`); `None` until two have come in that time.
     pub fn rate(&self, now: Instant) -> Option<f32> {
-        let recent: Vec<Instant> = self
+        let (first_seq, first_at) = *self
             .arrivals
             .iter()
-            .copied()
-            .filter(|t| now.saturating_duration_since(*t) <= RATE_SPAN)
-            .collect();
-        let (first, last) = (recent.first()?, recent.last()?);
-        let span = last.saturating_duration_since(*first).as_secs_f32();
-        if recent.len() < 2 || span <= 0.0 {
+            .find(|(_, t)| now.saturating_duration_since(*t) <= RATE_SPAN)?;
+        let (last_seq, last_at) = *self.arrivals.back()?;
+        let span = last_at.saturating_duration_since(first_at).as_secs_f32();
+        if span <= 0.0 || last_seq <= first_seq {
             return None;
         }
-        Some((recent.len() - 1) as f32 / span)
+        Some((last_seq - first_seq) as f32 / span)
     }
 
     /// "640×480, 9.8 fps, 0.1 s old" (or why there is nothing to show).

@@ -61,32 +61,62 @@ impl CameraWindow {
             .map_or(egui::vec2(320.0, 240.0), |i| {
                 egui::vec2(i.width() as f32, i.height() as f32)
             })
-            .min(egui::vec2(1024.0, 768.0));
-        let builder = egui::ViewportBuilder::default()
-            .with_title(title)
-            .with_inner_size(size + egui::vec2(16.0, 40.0));
+            .clamp(egui::vec2(300.0, 120.0), egui::vec2(1024.0, 768.0));
         let summary = frames.summary(now);
         let texture = self.texture.as_ref();
-        let viewport = egui::ViewportId::from_hash_of(("pv3d-camera", id));
-        let closed = ctx.show_viewport_immediate(viewport, builder, |ui, class| {
-            let contents = |ui: &mut egui::Ui| {
-                ui.label(&summary);
-                if let Some(texture) = texture {
-                    ui.add(egui::Image::from_texture(texture).shrink_to_fit());
-                }
-            };
-            if class == egui::ViewportClass::EmbeddedWindow {
-                contents(ui);
-            } else {
-                egui::CentralPanel::default().show(ui, contents);
+        let contents = |ui: &mut egui::Ui| {
+            ui.label(&summary);
+            if let Some(texture) = texture {
+                ui.add(egui::Image::from_texture(texture).shrink_to_fit());
             }
-            ui.input(|i| i.viewport().close_requested())
-        });
-        if closed {
-            *open = false;
+        };
+        if ctx.embed_viewports() {
+            // No native windows (headless, or a backend without them): an egui window on the
+            // right of the view, below the other cameras', with a close button.
+            let slot = embedded_slot(ctx);
+            let right_top = ctx.content_rect().right_top();
+            let pos = right_top + egui::vec2(-12.0, 12.0 + slot as f32 * (size.y + 60.0));
+            egui::Window::new(title)
+                .id(egui::Id::unique(("pv3d-camera", id)))
+                .open(open)
+                .pivot(egui::Align2::RIGHT_TOP)
+                .default_pos(pos)
+                .default_size(size + egui::vec2(0.0, 30.0))
+                .show(ctx, contents);
+        } else {
+            let builder = egui::ViewportBuilder::default()
+                .with_title(title)
+                .with_inner_size(size + egui::vec2(16.0, 40.0));
+            let viewport = egui::ViewportId::from_hash_of(("pv3d-camera", id));
+            let closed = ctx.show_viewport_immediate(viewport, builder, |ui, class| {
+                if class == egui::ViewportClass::EmbeddedWindow {
+                    contents(ui);
+                } else {
+                    egui::CentralPanel::default().show(ui, contents);
+                }
+                ui.input(|i| i.viewport().close_requested())
+            });
+            if closed {
+                *open = false;
+            }
         }
         ctx.request_repaint_after(AGE_TICK);
     }
+}
+
+/// Which of this pass's embedded camera windows this one is (0 for the first shown), so that
+/// each first appears below the previous one instead of on top of it.
+fn embedded_slot(ctx: &egui::Context) -> usize {
+    let pass = ctx.cumulative_pass_nr();
+    ctx.data_mut(|d| {
+        let counter =
+            d.get_temp_mut_or_default::<(u64, usize)>(egui::Id::unique("pv3d-camera-slots"));
+        if counter.0 != pass {
+            *counter = (pass, 0);
+        }
+        counter.1 += 1;
+        counter.1 - 1
+    })
 }
 
 /// The image scaled down (keeping its aspect) so that neither side exceeds `max_side`, the
