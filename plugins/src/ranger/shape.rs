@@ -62,6 +62,9 @@ pub fn ranger_geometry(
             if width > 0.0 && width <= WIDEST_CONE {
                 style.width = width as f32;
             }
+            if style.no_return.is_infinite() && c.max_range > 0.0 && c.max_range.is_finite() {
+                style.no_return = c.max_range as f32;
+            }
         }
         cone_geometry(elements, &ranges_f32, &style, geometry);
         return RangerShape::Cones;

@@ -3,7 +3,8 @@
 //!
 //! `drawCones` (1) fills each cone, `drawConeOutline` (1) outlines it, `color` (#50c8a0),
 //! `alpha` (0.3, opacity of the fill, 0–1), `coneAngle` (15, full opening in degrees, used
-//! when the device does not say), `maxConeLength` (20 m).
+//! when the device does not say), `maxConeLength` (20 m), `maxRange` (none: the device's, when
+//! it says) — readings at or beyond it are "no echo", drawn as a faint outline.
 
 use crate::config::{ConfigValueError, PluginConfig};
 use crate::sonar::cones::ConeStyle;
@@ -25,6 +26,7 @@ pub fn cone_style_from_config(config: &PluginConfig) -> Result<ConeStyle, Config
         width: (width as f32).to_radians(),
         max_length: config.number("maxConeLength", f64::from(defaults.max_length), 0.0..=1e4)?
             as f32,
+        no_return: config.number("maxRange", f64::INFINITY, 0.0..=1e4)? as f32,
     })
 }
 

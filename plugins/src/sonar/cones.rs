@@ -29,6 +29,9 @@ pub struct ConeStyle {
     pub width: f32,
     /// Readings are drawn no longer than this, m (keeps a wild value from filling the view).
     pub max_length: f32,
+    /// Readings at or beyond this range are "no echo": drawn as a faint outline only, so that
+    /// the cones that did hit something stand out. `f32::INFINITY` when the device does not say.
+    pub no_return: f32,
 }
 
 impl Default for ConeStyle {
@@ -40,6 +43,7 @@ impl Default for ConeStyle {
             fill_alpha: 70,
             width: 15f32.to_radians(),
             max_length: 20.0,
+            no_return: f32::INFINITY,
         }
     }
 }
@@ -101,14 +105,19 @@ pub fn cone_geometry(
                 t.origin + (Vec2::from_angle(a) * length).extend(0.0)
             })
             .collect();
-        if style.fill {
+        let echo = range < style.no_return;
+        if style.fill && echo {
             geometry.fan(t.origin, &rim, style.color.with_alpha(style.fill_alpha));
         }
-        if style.outline {
+        if style.outline || !echo {
             let mut outline = Vec::with_capacity(rim.len() + 1);
             outline.push(t.origin);
             outline.extend_from_slice(&rim);
-            let alpha = style.fill_alpha.saturating_mul(2).max(160);
+            let alpha = if echo {
+                style.fill_alpha.saturating_mul(2).max(160)
+            } else {
+                style.fill_alpha / 2
+            };
             geometry.polygon_outline(&outline, style.color.with_alpha(alpha));
         }
     }
@@ -137,6 +146,28 @@ mod tests {
         for v in &g.triangles {
             assert!((v.pos - t.origin).length() <= 2.0 + 1e-5);
         }
+    }
+
+    #[test]
+    fn a_reading_without_echo_is_a_faint_outline_only() {
+        let style = ConeStyle {
+            no_return: 5.0,
+            outline: false,
+            ..ConeStyle::default()
+        };
+        let mut g = Geometry::default();
+        cone_geometry(&evenly_spaced(2, 0.2), &[5.0, 1.0], &style, &mut g);
+        assert_eq!(
+            g.triangles.len(),
+            ARC_SEGMENTS * 3,
+            "only the echo is filled"
+        );
+        assert_eq!(
+            g.lines.len(),
+            (ARC_SEGMENTS + 2) * 2,
+            "only the no-echo outlined"
+        );
+        assert!(g.lines.iter().all(|v| v.color.0[3] < style.fill_alpha));
     }
 
     #[test]
