@@ -7,7 +7,7 @@ use anyhow::{Context, Result};
 use clap::Parser;
 use player_sim::serve::{ServeOptions, serve};
 use player_sim::served::{default_devices, from_cfg, shift_ports};
-use player_sim::sim::Simulation;
+use player_sim::sim::{Noise, Simulation};
 use player_sim::world::World;
 
 /// Serve a simulated Stage world over the Player protocol.
@@ -30,9 +30,15 @@ struct Cli {
     #[arg(long, default_value_t = 1.0)]
     speedup: f64,
 
-    /// Seed of the simulation's randomness (the simulation is deterministic for a seed).
+    /// Seed of the sensor noise: a run is reproduced exactly by its seed. Only --range-noise
+    /// draws from it; without noise the simulation has no randomness at all.
     #[arg(long, default_value_t = 0)]
     seed: u64,
+
+    /// Standard deviation, in metres, of Gaussian noise on every ranger, laser and sonar
+    /// reading that hits something (0: exact readings).
+    #[arg(long, default_value_t = 0.0, value_name = "METRES")]
+    range_noise: f64,
 
     /// Step N times, then exit.
     #[arg(long, value_name = "N")]
@@ -59,6 +65,10 @@ fn run(cli: Cli) -> Result<()> {
         cli.speedup >= 0.0 && cli.speedup.is_finite(),
         "--speedup must be 0 or more"
     );
+    anyhow::ensure!(
+        cli.range_noise >= 0.0 && cli.range_noise.is_finite(),
+        "--range-noise must be 0 or more metres"
+    );
     let world = World::load(&cli.world)?;
     let mut ignored = world.ignored.clone();
     let cfg = cli
@@ -77,10 +87,9 @@ fn run(cli: Cli) -> Result<()> {
         tracing::warn!("{note}");
     }
     let robots = world.robots.len();
-    // The simulation has no noise yet, so the seed only has to be accepted; it is reported so
-    // that runs can be reproduced once it matters.
     tracing::info!(
         seed = cli.seed,
+        range_noise = cli.range_noise,
         "{robots} robots, {} devices",
         devices.len()
     );
@@ -90,7 +99,12 @@ fn run(cli: Cli) -> Result<()> {
         max_steps: cli.headless_once,
         free_ports: false,
     };
-    let running = serve(Simulation::new(world), devices, options)?;
+    let mut sim = Simulation::new(world);
+    sim.noise = Noise {
+        seed: cli.seed,
+        range_sd: cli.range_noise,
+    };
+    let running = serve(sim, devices, options)?;
     let ports: Vec<String> = running.ports.iter().map(|(_, p)| p.to_string()).collect();
     eprintln!(
         "player-sim: serving {} on port(s) {}",

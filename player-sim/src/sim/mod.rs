@@ -5,11 +5,13 @@
 mod camera;
 mod geometry;
 mod nearby;
+mod noise;
 mod sensors;
 
 pub use camera::{Frame, render_camera};
 pub use geometry::GroundBox;
 pub use nearby::{NearbyBoxes, SolidBox};
+pub use noise::Noise;
 pub use sensors::{FiducialHit, fiducials, on_robot, ranger_scan, ranger_scan_exhaustive};
 
 use crate::world::{Drive, Pose, World};
@@ -41,6 +43,8 @@ pub struct Simulation {
     /// Simulated seconds since the start.
     pub time: f64,
     pub steps: u64,
+    /// Sensor noise and its seed; none by default.
+    pub noise: Noise,
 }
 
 const STOP: Command = Command::Velocity {
@@ -66,6 +70,7 @@ impl Simulation {
             robots,
             time: 0.0,
             steps: 0,
+            noise: Noise::default(),
         }
     }
 

@@ -86,9 +86,11 @@ fn scan_with<F: Fn(f64) -> Option<f64>>(
 ) -> Vec<f64> {
     let base = on_robot(sim.robots[robot].pose, ranger.pose);
     let mut out = Vec::new();
-    for sensor in &ranger.sensors {
+    for (index, sensor) in ranger.sensors.iter().enumerate() {
         let origin = on_robot(base, sensor.pose);
         let caster = prepare(origin, sensor.max_range);
+        // Tells this robot's rangers apart for the noise: where the ranger sits on the robot.
+        let place = ranger.pose.x.to_bits() ^ ranger.pose.a.to_bits().rotate_left(17);
         let n = sensor.samples.max(1);
         let step = if n > 1 {
             sensor.fov / (n - 1) as f64
@@ -98,8 +100,17 @@ fn scan_with<F: Fn(f64) -> Option<f64>>(
         let first = if n > 1 { -sensor.fov / 2.0 } else { 0.0 };
         for i in 0..n {
             let angle = origin.a + first + i as f64 * step;
-            let range = caster(angle).unwrap_or(sensor.max_range);
-            out.push(range.max(sensor.min_range));
+            let reading = match caster(angle) {
+                // A beam that hits nothing reads the maximum, as a real one does: no noise.
+                None => sensor.max_range,
+                Some(range) => sim.noise.range(
+                    range,
+                    sensor.min_range,
+                    sensor.max_range,
+                    &[sim.steps, robot as u64, place, index as u64, i as u64],
+                ),
+            };
+            out.push(reading.max(sensor.min_range));
         }
     }
     out

@@ -1,0 +1,86 @@
+//! The `player-sim` program itself: serves on --port-base, steps --headless-once N times and
+//! exits cleanly; a broken world fails with its file:line:col and a non-zero status.
+
+use std::io::{BufRead, BufReader};
+use std::net::TcpListener;
+use std::path::Path;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use player_proto::client::{Client, ClientOptions};
+
+/// A port nobody listens on right now (the system's choice, released at once).
+fn free_port() -> u16 {
+    TcpListener::bind("127.0.0.1:0")
+        .unwrap()
+        .local_addr()
+        .unwrap()
+        .port()
+}
+
+#[test]
+fn headless_once_serves_on_the_port_base_then_exits() {
+    let world = Path::new(env!("CARGO_MANIFEST_DIR")).join("../stage-worlds/simple.world");
+    let port = free_port();
+    // 30 steps of 0.1 s at real time: 3 s in which a client connects.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_player-sim"))
+        .arg(&world)
+        .args(["--headless-once", "30", "--port-base", &port.to_string()])
+        .args(["--seed", "3", "--range-noise", "0.01"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stderr = BufReader::new(child.stderr.take().unwrap());
+    let mut line = String::new();
+    while !line.contains("serving") {
+        line.clear();
+        assert!(stderr.read_line(&mut line).unwrap() > 0, "no serving line");
+    }
+    assert!(
+        line.trim_end().ends_with(&format!("on port(s) {port}")),
+        "{line}"
+    );
+    let client = Client::connect("127.0.0.1", port, ClientOptions::default()).unwrap();
+    let base = client.position2d(0);
+    assert_eq!(base.subscribe().unwrap(), "stage");
+    let deadline = Instant::now() + Duration::from_secs(3);
+    while base.state().is_none() {
+        assert!(Instant::now() < deadline, "no odometry");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    drop(client);
+    let started = Instant::now();
+    let status = child.wait().unwrap();
+    assert!(status.success(), "{status}");
+    assert!(
+        started.elapsed() < Duration::from_secs(5),
+        "it stopped after its steps"
+    );
+}
+
+#[test]
+fn a_broken_world_fails_with_its_position() {
+    let dir = tempfile::tempdir().unwrap();
+    let world = dir.path().join("broken.world");
+    std::fs::write(
+        &world,
+        "interval_sim 100\nposition( name \"r\" pose [ 0 0 0\n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_player-sim"))
+        .arg(&world)
+        .args([
+            "--headless-once",
+            "1",
+            "--port-base",
+            &free_port().to_string(),
+        ])
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains(&format!("{}:2:", world.display())),
+        "{stderr}"
+    );
+}
