@@ -7,5 +7,6 @@
 pub mod app;
 pub mod composition;
 pub mod demo;
+pub mod embedded_world;
 pub mod render;
 pub mod robots;

@@ -6,11 +6,13 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
 use clap::Parser;
+use player_sim::serve::ServeOptions;
 use pv3d::app::{
     Composer, RedrawPolicy, ScreenshotRequest, UiWaker, Viewer, WindowOptions, headless_screenshot,
     run_window,
 };
 use pv3d::composition::{Composition, ParserRegistry, emit_document};
+use pv3d::embedded_world::serve_world;
 use pv3d::robots::RobotManager;
 
 /// Player Viewer 3D: compose Player devices into a 3D viewer and tele-operation tool.
@@ -24,6 +26,15 @@ struct Cli {
     /// configs/multirobot.pv3d.xml (or the compositions given): no Player server needed.
     #[arg(long)]
     demo: bool,
+
+    /// Simulate this Stage world (and the .cfg beside it) in-process on free ports and show
+    /// it, with configs/stage-world.pv3d.xml unless compositions are given.
+    #[arg(long, value_name = "WORLD", conflicts_with = "demo")]
+    world: Option<PathBuf>,
+
+    /// Simulated seconds per real second for --demo and --world.
+    #[arg(long, default_value_t = 1.0, value_name = "FACTOR")]
+    speedup: f64,
 
     /// Write the composition the handlers produced to this file and exit.
     #[arg(long, value_name = "OUT.xml")]
@@ -86,8 +97,17 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
 fn main() -> Result<()> {
     player_proto::logging::init("info");
     let mut cli = Cli::parse();
-    if cli.demo && cli.files.is_empty() {
-        cli.files.push(pv3d::demo::composition_file());
+    if cli.demo {
+        cli.world = Some(pv3d::demo::world_file());
+        if cli.files.is_empty() {
+            cli.files.push(pv3d::demo::composition_file());
+        }
+    }
+    if cli.world.is_some() && cli.files.is_empty() {
+        cli.files.push(pv3d::demo::world_composition_file());
+    }
+    if !(0.0..=1000.0).contains(&cli.speedup) {
+        bail!("--speedup must be from 0 (as fast as possible) to 1000");
     }
     if cli.files.is_empty() {
         bail!("no composition given: try `pv3d --demo` or `pv3d configs/single-laser.pv3d.xml`");
@@ -111,10 +131,15 @@ fn main() -> Result<()> {
     let parsers = ParserRegistry::default();
     let mut composition = Composition::load_files(&cli.files, &parsers)?;
     // Kept alive for as long as the viewer runs.
-    let _demo = if cli.demo {
-        Some(pv3d::demo::start(&mut composition)?)
-    } else {
-        None
+    let _world = match &cli.world {
+        Some(world) => {
+            let options = ServeOptions {
+                speedup: cli.speedup,
+                ..ServeOptions::default()
+            };
+            Some(serve_world(world, &mut composition, options)?)
+        }
+        None => None,
     };
     let waker = UiWaker::default();
     let wake = waker.clone();

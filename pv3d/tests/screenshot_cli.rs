@@ -186,3 +186,58 @@ fn the_plugins_state_is_written_back_on_exit() {
             .unwrap();
     assert_eq!(reloaded.plugins.len(), text.matches("<plugin ").count());
 }
+
+#[test]
+fn any_stage_world_is_shown_with_its_floorplan_and_every_robot() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("classroom.png");
+    let emitted = dir.path().join("classroom.xml");
+    let out = pv3d()
+        .args(["--world", "../stage-worlds/classroom.world", "--headless"])
+        .args(["--after", "1.5", "--size", "1000x700", "--screenshot"])
+        .arg(&png)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let image = image::open(&png).unwrap().to_rgba8();
+    let count =
+        |test: &dyn Fn(&image::Rgba<u8>) -> bool| image.pixels().filter(|p| test(p)).count();
+    let walls = count(&|p| {
+        (130..=175).contains(&p[0])
+            && (p[0] as i32 - p[2] as i32).abs() < 20
+            && (p[0] as i32 - p[1] as i32).abs() < 12
+    });
+    let robots = count(&|p| p[2] > 150 && p[0] < 110 && p[1] > 90 && p[1] < 190);
+    assert!(
+        walls > 3000,
+        "the room's walls, from the world's floorplan: {walls} pixels"
+    );
+    assert!(robots > 8 * 20, "eight robot bodies: {robots} pixels");
+
+    // The composition it made: a client per served port, one robot plugin each.
+    let out = pv3d()
+        .args([
+            "--world",
+            "../stage-worlds/classroom.world",
+            "--emit-config",
+        ])
+        .arg(&emitted)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&emitted).unwrap();
+    assert_eq!(text.matches("<playerClient ").count(), 8, "{text}");
+    assert_eq!(text.matches("libpv3d_position2d").count(), 8, "{text}");
+    assert!(
+        text.contains("room.png"),
+        "the ground got the floorplan: {text}"
+    );
+}

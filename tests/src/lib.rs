@@ -48,7 +48,7 @@ pub fn serve(world: &str, composition: &mut Composition, speedup: f64) -> Runnin
         speedup,
         ..ServeOptions::default()
     };
-    pv3d::demo::serve_world(&repo_root().join(world), composition, options)
+    pv3d::embedded_world::serve_world(&repo_root().join(world), composition, options)
         .unwrap_or_else(|e| panic!("{world} should serve: {e}"))
 }
 

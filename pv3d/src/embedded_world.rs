@@ -1,0 +1,105 @@
+//! A Stage world served in-process (player-sim as a library) on free local ports, and the
+//! composition pointed at it over real TCP: `pv3d --world stage-worlds/swarm.world` shows any
+//! world file with no Player server installed, and `--demo` is this with the multirobot world.
+
+use std::path::Path;
+
+use player_sim::serve::{Running, ServeOptions, serve};
+use player_sim::served::from_cfg;
+use player_sim::sim::Simulation;
+use player_sim::world::{Floorplan, World};
+
+use crate::composition::{ClientDecl, Composition, Element, Node, SourcePos};
+
+/// Why a world could not be served.
+#[derive(Debug, thiserror::Error)]
+pub enum WorldError {
+    #[error(transparent)]
+    World(#[from] player_sim::worldfile::WorldFileError),
+    #[error("cannot serve the world: {0}")]
+    Serve(#[from] player_proto::server::ServerError),
+}
+
+/// Serves a Stage world (with the `.cfg` beside it) on free ports. Every Player client of the
+/// composition whose port the world configures is pointed at the port it got; a served port
+/// no client names gets a client of its own, so a composition of masks alone shows every
+/// robot. A ground plugin without a bitmap gets the world's floorplan.
+pub fn serve_world(
+    world_file: &Path,
+    composition: &mut Composition,
+    options: ServeOptions,
+) -> Result<Running, WorldError> {
+    let world = World::load(world_file)?;
+    let mut ignored = Vec::new();
+    let devices = from_cfg(&world_file.with_extension("cfg"), &world, &mut ignored)?;
+    for note in ignored {
+        tracing::info!("{}: {note}", world_file.display());
+    }
+    let floorplan = world.floorplan.clone();
+    let options = ServeOptions {
+        free_ports: true,
+        ..options
+    };
+    let running = serve(Simulation::new(world), devices, options)?;
+    point_clients_at(composition, &running.ports);
+    if let Some(floorplan) = &floorplan {
+        give_ground_the_floorplan(composition, floorplan);
+    }
+    Ok(running)
+}
+
+/// `ports`: (configured, actually served) pairs.
+fn point_clients_at(composition: &mut Composition, ports: &[(u16, u16)]) {
+    for &(configured, actual) in ports {
+        match composition
+            .clients
+            .iter_mut()
+            .find(|c| c.port == configured)
+        {
+            Some(client) => {
+                client.host = "127.0.0.1".into();
+                client.port = actual;
+            }
+            None => composition.clients.push(ClientDecl {
+                host: "127.0.0.1".into(),
+                port: actual,
+                pos: SourcePos::generated(),
+            }),
+        }
+    }
+}
+
+fn give_ground_the_floorplan(composition: &mut Composition, floorplan: &Floorplan) {
+    let grounds = composition
+        .plugins
+        .iter_mut()
+        .filter(|p| p.attr("library") == Some("libpv3d_ground") && p.child("bitmap").is_none());
+    for ground in grounds {
+        let params = [
+            // Absolute: the ground resolves a relative path against its composition's folder.
+            (
+                "bitmap",
+                std::path::absolute(&floorplan.bitmap)
+                    .unwrap_or_else(|_| floorplan.bitmap.clone())
+                    .display()
+                    .to_string(),
+            ),
+            (
+                "bitmapSize",
+                format!("{} {}", floorplan.size[0], floorplan.size[1]),
+            ),
+            (
+                "bitmapCentre",
+                format!("{} {}", floorplan.centre[0], floorplan.centre[1]),
+            ),
+            ("wallHeight", floorplan.height.to_string()),
+        ];
+        for (name, value) in params {
+            if ground.child(name).is_none() {
+                let mut element = Element::new(name, SourcePos::generated());
+                element.children.push(Node::Text(value));
+                ground.children.push(Node::Element(element));
+            }
+        }
+    }
+}
