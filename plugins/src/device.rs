@@ -104,6 +104,9 @@ pub struct RecordingDevice {
     pub commands: Mutex<Vec<Body>>,
     pub requests: Mutex<Vec<(u8, Body)>>,
     pub replies: Mutex<Vec<(u8, ReplyOutcome)>>,
+    /// Requests the table had no reply for, still waiting: [`RecordingDevice::answer_later`]
+    /// answers them, as a server that replies late.
+    pub pending: Mutex<Vec<(u8, ReplyTicket)>>,
     pub state: Mutex<Option<LinkState>>,
     pushed: std::sync::atomic::AtomicU64,
 }
@@ -123,6 +126,19 @@ impl RecordingDevice {
             received: Instant::now(),
             seq,
         });
+    }
+
+    /// Answers the waiting requests of `subtype`; returns how many there were.
+    pub fn answer_later(&self, subtype: u8, outcome: ReplyOutcome) -> usize {
+        let mut pending = self.pending.lock().expect("pending");
+        let before = pending.len();
+        pending.retain(|(s, ticket)| {
+            if *s == subtype {
+                ticket.fulfil(outcome.clone());
+            }
+            *s != subtype
+        });
+        before - pending.len()
     }
 }
 
@@ -154,6 +170,11 @@ impl DeviceAccess for RecordingDevice {
             .find(|(s, _)| *s == subtype)
         {
             ticket.fulfil(reply.clone());
+        } else {
+            self.pending
+                .lock()
+                .expect("pending")
+                .push((subtype, ticket.clone()));
         }
         ticket
     }

@@ -218,4 +218,17 @@ fn readings_before_the_config_wait_for_it() {
     plugin.update(&mut ctx);
     let node = plugin.node().unwrap();
     assert!(ctx.scene.get(node).unwrap().geometry.is_empty());
+
+    // The config comes late: the readings already there are drawn with it.
+    let config = RangerConfig {
+        min_angle: -std::f64::consts::FRAC_PI_2,
+        max_angle: std::f64::consts::FRAC_PI_2,
+        angular_res: std::f64::consts::PI / 180.0,
+        max_range: 8.0,
+        ..RangerConfig::default()
+    };
+    let reply = Message::typed(addr(), MsgType::Ack, Ranger::Config(config));
+    assert_eq!(device.answer_later(5, Ok(Arc::new(reply))), 1);
+    assert!(plugin.update(&mut ctx));
+    assert_eq!(ctx.scene.get(node).unwrap().geometry.points.len(), 181);
 }
