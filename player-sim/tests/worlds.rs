@@ -256,3 +256,31 @@ fn the_same_commands_give_the_same_trajectory() {
     };
     assert_eq!(trajectory(), trajectory());
 }
+
+#[test]
+fn camera_resolutions_and_fields_of_view_that_cannot_render_are_refused_where_written() {
+    let dir = tempfile::tempdir().unwrap();
+    for (camera, what) in [
+        ("resolution [ 4096 4096 ]", "camera resolution 4096 x 4096"),
+        ("resolution [ 0 120 ]", "camera resolution 0 x 120"),
+        ("fov [ 200 40 ]", "camera fov"),
+    ] {
+        let path = write(
+            dir.path(),
+            "cam.world",
+            &format!("position( name \"r\"\n  camera( {camera} ) )\n"),
+        );
+        let err = World::load(&path).unwrap_err().to_string();
+        assert!(
+            err.starts_with(&format!("{}:2:", path.display())) && err.contains(what),
+            "{err}"
+        );
+    }
+    let path = write(
+        dir.path(),
+        "cam.world",
+        "position( name \"r\" camera( resolution [ 320 240 ] fov [ 90 60 ] ) )\n",
+    );
+    let camera = &World::load(&path).unwrap().robots[0].cameras[0];
+    assert_eq!((camera.width_px, camera.height_px), (320, 240));
+}

@@ -346,16 +346,20 @@ impl World {
                     fov: opt_number(child, "fov")?.unwrap_or(180.0).to_radians(),
                 }),
                 "camera" => {
-                    let resolution = child
-                        .get("resolution")
-                        .map(|p| numbers(Some(p), 2, &p.pos))
-                        .transpose()?
-                        .unwrap_or_else(|| vec![160.0, 120.0]);
+                    let (width_px, height_px) = camera_resolution(child)?;
                     let fov = child
                         .get("fov")
                         .map(|p| numbers(Some(p), 2, &p.pos))
                         .transpose()?
                         .unwrap_or_else(|| vec![70.0, 40.0]);
+                    if let Some(p) = child.get("fov")
+                        && !fov[..2].iter().all(|f| *f > 0.0 && *f < 180.0)
+                    {
+                        return Err(err(
+                            &p.pos,
+                            "camera fov [h v] must be degrees between 0 and 180 (exclusive)",
+                        ));
+                    }
                     let range = child
                         .get("range")
                         .map(|p| numbers(Some(p), 2, &p.pos))
@@ -369,8 +373,8 @@ impl World {
                     robot.cameras.push(CameraSpec {
                         pose,
                         height: z + robot.size[2],
-                        width_px: resolution[0].clamp(1.0, 4096.0) as u32,
-                        height_px: resolution[1].clamp(1.0, 4096.0) as u32,
+                        width_px,
+                        height_px,
                         fov_h: fov[0].to_radians(),
                         fov_v: fov[1].to_radians(),
                         max_range: range[1],
@@ -381,6 +385,30 @@ impl World {
         }
         Ok(robot)
     }
+}
+
+/// The largest raw camera frame served: Player's messages (and our clients) stop at 8 MiB.
+const MAX_FRAME_BYTES: f64 = (8 * 1024 * 1024 - 1024) as f64;
+
+/// A camera's `resolution [w h]` (160 x 120 by default), refused when a raw RGB frame of that
+/// size could not be sent.
+fn camera_resolution(camera: &Model) -> Result<(u32, u32), WorldFileError> {
+    let Some(p) = camera.get("resolution") else {
+        return Ok((160, 120));
+    };
+    let n = numbers(Some(p), 2, &p.pos)?;
+    let (w, h) = (n[0].round(), n[1].round());
+    if !(w >= 1.0 && h >= 1.0 && w * h * 3.0 <= MAX_FRAME_BYTES) {
+        return Err(err(
+            &p.pos,
+            format!(
+                "camera resolution {} x {} is not a frame Player can send \
+                 (at least 1 x 1, at most 8 MiB of RGB)",
+                n[0], n[1]
+            ),
+        ));
+    }
+    Ok((w as u32, h as u32))
 }
 
 impl Types {
