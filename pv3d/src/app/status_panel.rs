@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use std::time::{Duration, Instant};
 
 use eframe::egui::{self, Color32, Ui};
-use player_proto::client::ConnectionState;
+use player_proto::client::{Client, ConnectionState};
 use player_proto::wire::DevAddr;
 
 use crate::robots::RobotManager;
@@ -20,48 +20,77 @@ pub struct StatusPanel {
 }
 
 impl StatusPanel {
+    /// A summary line, then one row per server. Only the rows in sight are built, so a swarm
+    /// of hundreds of servers costs a screenful of rows per frame, not hundreds.
     pub fn ui(&mut self, ui: &mut Ui, robots: &RobotManager) {
         let now = Instant::now();
+        let clients: Vec<_> = robots.clients().collect();
+        let connected = clients
+            .iter()
+            .filter(|(_, _, c)| c.state() == ConnectionState::Connected)
+            .count();
+        ui.label(format!(
+            "{} Player servers: {connected} connected, {} not",
+            clients.len(),
+            clients.len() - connected
+        ));
         let used = robots.used_devices();
-        egui::Grid::new("robot-status")
-            .striped(true)
-            .show(ui, |ui| {
-                for (host, port, client) in robots.clients() {
-                    let state = client.state();
-                    let color = match state {
-                        ConnectionState::Connected => Color32::from_rgb(110, 200, 120),
-                        ConnectionState::Failed(_) => Color32::from_rgb(230, 90, 80),
-                        _ => Color32::from_rgb(230, 190, 80),
-                    };
-                    ui.colored_label(color, format!("{host}:{port}"));
-                    ui.colored_label(color, state.to_string());
-                    let mut cells = Vec::new();
-                    for (_, _, addr) in used.iter().filter(|(h, p, _)| h == host && *p == port) {
-                        let count = client.stats(*addr).messages;
-                        let entry = self
-                            .rates
-                            .entry((host.to_string(), port, *addr))
-                            .or_insert((count, now, 0.0));
-                        let elapsed = now.duration_since(entry.1);
-                        if elapsed >= RATE_WINDOW {
-                            entry.2 = (count - entry.0) as f64 / elapsed.as_secs_f64();
-                            *entry = (count, now, entry.2);
+        let row_height = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+        egui::ScrollArea::vertical()
+            .auto_shrink([false, true])
+            .show_rows(ui, row_height, clients.len(), |ui, rows| {
+                egui::Grid::new("robot-status")
+                    .striped(true)
+                    .show(ui, |ui| {
+                        for &(host, port, client) in &clients[rows] {
+                            self.row(ui, now, host, port, client, &used);
+                            ui.end_row();
                         }
-                        let age = (1..=5u8)
-                            .filter_map(|s| client.latest(*addr, s))
-                            .map(|s| now.saturating_duration_since(s.received))
-                            .min();
-                        let age = age.map_or("no data".to_string(), |a| {
-                            format!("{:.1} s", a.as_secs_f32())
-                        });
-                        cells.push(format!(
-                            "{}:{} {:.0} Hz, {age}",
-                            addr.interf, addr.index, entry.2
-                        ));
-                    }
-                    ui.label(cells.join("   "));
-                    ui.end_row();
-                }
+                    });
             });
+    }
+
+    fn row(
+        &mut self,
+        ui: &mut Ui,
+        now: Instant,
+        host: &str,
+        port: u16,
+        client: &Client,
+        used: &[(String, u16, DevAddr)],
+    ) {
+        let state = client.state();
+        let color = match state {
+            ConnectionState::Connected => Color32::from_rgb(110, 200, 120),
+            ConnectionState::Failed(_) => Color32::from_rgb(230, 90, 80),
+            _ => Color32::from_rgb(230, 190, 80),
+        };
+        ui.colored_label(color, format!("{host}:{port}"));
+        ui.colored_label(color, state.to_string());
+        let mut cells = Vec::new();
+        for (_, _, addr) in used.iter().filter(|(h, p, _)| h == host && *p == port) {
+            let count = client.stats(*addr).messages;
+            let entry = self
+                .rates
+                .entry((host.to_string(), port, *addr))
+                .or_insert((count, now, 0.0));
+            let elapsed = now.duration_since(entry.1);
+            if elapsed >= RATE_WINDOW {
+                entry.2 = (count - entry.0) as f64 / elapsed.as_secs_f64();
+                *entry = (count, now, entry.2);
+            }
+            let age = (1..=5u8)
+                .filter_map(|s| client.latest(*addr, s))
+                .map(|s| now.saturating_duration_since(s.received))
+                .min();
+            let age = age.map_or("no data".to_string(), |a| {
+                format!("{:.1} s", a.as_secs_f32())
+            });
+            cells.push(format!(
+                "{}:{} {:.0} Hz, {age}",
+                addr.interf, addr.index, entry.2
+            ));
+        }
+        ui.label(cells.join("   "));
     }
 }

@@ -281,6 +281,7 @@ impl Viewer {
         if let Some(robots) = self.robots.clone() {
             egui::Panel::bottom("robot-status")
                 .resizable(true)
+                .default_size(140.0)
                 .show(ui, |ui| self.status.ui(ui, &robots));
         }
         egui::CentralPanel::default()
