@@ -5,7 +5,7 @@
 
 use super::nearby::NearbyBoxes;
 use super::{Simulation, on_robot};
-use crate::world::CameraSpec;
+use crate::world::{CameraSpec, Face};
 
 /// An RGB888 image, rows top first.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -70,14 +70,18 @@ pub fn render_camera(sim: &Simulation, robot: usize, camera: &CameraSpec) -> Fra
             .world
             .floor
             .as_ref()
-            .and_then(|g| g.raycast(eye.x, eye.y, angle, camera.max_range));
+            .and_then(|g| g.raycast_face(eye.x, eye.y, angle, camera.max_range));
         spans.clear();
-        spans.extend(wall.map(|distance| Span {
+        spans.extend(wall.map(|(distance, face)| Span {
             distance,
             height: walls,
-            color: wall_color,
+            // North and south faces a little darker, so that corners show.
+            color: match face {
+                Face::EastWest => wall_color,
+                Face::NorthSouth => wall_color.map(|c| (u16::from(c) * 4 / 5) as u8),
+            },
         }));
-        let reach = wall.unwrap_or(camera.max_range);
+        let reach = wall.map_or(camera.max_range, |(d, _)| d);
         spans.extend(
             boxes
                 .all_along(eye.x, eye.y, angle, reach)

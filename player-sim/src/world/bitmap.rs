@@ -3,6 +3,15 @@
 
 use std::path::Path;
 
+/// Which way a wall face looks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Face {
+    /// Faces east or west (a vertical edge between cells).
+    EastWest,
+    /// Faces north or south.
+    NorthSouth,
+}
+
 /// Walls on a regular grid, with fast ray casting.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OccupancyGrid {
@@ -83,10 +92,17 @@ impl OccupancyGrid {
     /// Distance from `(x, y)` along `angle` to the first wall, if within `max` (grid traversal
     /// cell by cell: cost grows with distance in cells, not with the grid's size).
     pub fn raycast(&self, x: f64, y: f64, angle: f64, max: f64) -> Option<f64> {
+        self.raycast_face(x, y, angle, max).map(|(t, _)| t)
+    }
+
+    /// [`Self::raycast`], also telling which way the wall face hit looks: [`Face::EastWest`]
+    /// when the ray crossed a vertical cell edge, [`Face::NorthSouth`] a horizontal one (the
+    /// camera shades them apart, so that corners show).
+    pub fn raycast_face(&self, x: f64, y: f64, angle: f64, max: f64) -> Option<(f64, Face)> {
         let (dx, dy) = (angle.cos(), angle.sin());
         let (mut cx, mut cy) = self.cell_of(x, y);
         if self.is_wall(cx, cy) {
-            return Some(0.0);
+            return Some((0.0, Face::EastWest));
         }
         let step_x = if dx > 0.0 { 1 } else { -1 };
         let step_y = if dy > 0.0 { 1 } else { -1 };
@@ -114,22 +130,22 @@ impl OccupancyGrid {
             self.cell.1 / dy.abs()
         };
         loop {
-            let t = if t_x < t_y {
+            let (t, face) = if t_x < t_y {
                 cx += step_x;
                 let t = t_x;
                 t_x += delta_x;
-                t
+                (t, Face::EastWest)
             } else {
                 cy += step_y;
                 let t = t_y;
                 t_y += delta_y;
-                t
+                (t, Face::NorthSouth)
             };
             if t > max {
                 return None;
             }
             if self.is_wall(cx, cy) {
-                return Some(t);
+                return Some((t, face));
             }
             if (cx < -1 && step_x < 0)
                 || (cy < -1 && step_y < 0)
@@ -161,5 +177,14 @@ mod tests {
             "{diagonal}"
         );
         assert!(grid.occupied_at(4.2, 1.0) && !grid.occupied_at(3.9, 1.0));
+        assert_eq!(
+            grid.raycast_face(1.0, 0.75, 0.0, 10.0).unwrap().1,
+            Face::EastWest
+        );
+        let up = OccupancyGrid::from_rows(&["####", "....", "...."], 0.5, (0.0, 0.0));
+        assert_eq!(
+            up.raycast_face(1.0, 0.2, 1.2, 10.0).unwrap().1,
+            Face::NorthSouth
+        );
     }
 }

@@ -9,7 +9,7 @@ mod properties;
 
 use std::path::Path;
 
-pub use bitmap::OccupancyGrid;
+pub use bitmap::{Face, OccupancyGrid};
 pub use models::{Model, Types, read_with_includes};
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
