@@ -70,7 +70,12 @@ fn a_broken_composition_fails_with_file_line_col() {
     let dir = tempfile::tempdir().unwrap();
     let composition = dir.path().join("broken.xml");
     std::fs::write(&composition, "<pv3d>\n  <plugin librar=\"x\"/>\n</pv3d>").unwrap();
-    let out = pv3d().arg(&composition).arg("--headless").output().unwrap();
+    let out = pv3d()
+        .arg(&composition)
+        .args(["--headless", "--screenshot"])
+        .arg(dir.path().join("never.png"))
+        .output()
+        .unwrap();
     assert!(!out.status.success());
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(

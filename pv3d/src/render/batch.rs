@@ -27,7 +27,11 @@ pub struct GpuMeshVertex {
 pub struct SceneBatch {
     pub lines: Vec<GpuVertex>,
     pub points: Vec<GpuVertex>,
+    /// Opaque fills (the ground, walls): drawn first, writing depth.
     pub triangles: Vec<GpuVertex>,
+    /// Translucent fills (laser free space, sonar cones): drawn after every opaque thing,
+    /// without writing depth, so an opaque fill drawn later cannot hide them.
+    pub translucent: Vec<GpuVertex>,
     pub mesh: Vec<GpuMeshVertex>,
     /// Labels with world-space positions, drawn as text over the 3D view.
     pub labels: Vec<Label>,
@@ -39,6 +43,7 @@ impl SceneBatch {
         self.lines.clear();
         self.points.clear();
         self.triangles.clear();
+        self.translucent.clear();
         self.mesh.clear();
         self.labels.clear();
         for (id, object) in scene.iter() {
@@ -49,7 +54,9 @@ impl SceneBatch {
             let to_world = scene.world_transform(id);
             append(&mut self.lines, &g.lines, &to_world);
             append(&mut self.points, &g.points, &to_world);
+            let start = (self.triangles.len(), self.translucent.len());
             append(&mut self.triangles, &g.triangles, &to_world);
+            move_translucent(&mut self.triangles, start.0, &mut self.translucent);
             self.mesh.extend(g.mesh.iter().map(|v| {
                 GpuMeshVertex {
                     pos: to_world.transform_point3(v.pos).to_array(),
@@ -71,6 +78,25 @@ impl SceneBatch {
     pub fn segment_count(&self) -> usize {
         self.lines.len() / 2
     }
+}
+
+/// Moves the triangles from `from` on whose vertices are not all opaque to `translucent`,
+/// keeping both in order.
+fn move_translucent(triangles: &mut Vec<GpuVertex>, from: usize, translucent: &mut Vec<GpuVertex>) {
+    let mut kept = from;
+    for t in (from..triangles.len()).step_by(3) {
+        let Some(triangle) = triangles.get(t..t + 3) else {
+            break; // an incomplete last triangle draws nothing either way
+        };
+        let triangle: [GpuVertex; 3] = [triangle[0], triangle[1], triangle[2]];
+        if triangle.iter().all(|v| v.color[3] == u8::MAX) {
+            triangles[kept..kept + 3].copy_from_slice(&triangle);
+            kept += 3;
+        } else {
+            translucent.extend_from_slice(&triangle);
+        }
+    }
+    triangles.truncate(kept);
 }
 
 fn append(out: &mut Vec<GpuVertex>, vertices: &[Vertex], to_world: &Affine3A) {
@@ -137,5 +163,40 @@ mod tests {
         assert_eq!(batch.segment_count(), 1);
         assert_eq!(batch.lines[1].pos, [2.0, 2.0, 0.0]);
         assert!(batch.points.is_empty(), "hidden objects are not drawn");
+    }
+
+    #[test]
+    fn translucent_fills_are_drawn_apart_from_opaque_ones() {
+        let mut scene = Scene::new();
+        let mut cspace = Object3D::new("laser free space");
+        let glass = Rgba::rgb(255, 0, 0).with_alpha(60);
+        cspace
+            .geometry
+            .triangle(Vec3::ZERO, Vec3::X, Vec3::Y, glass);
+        cspace
+            .geometry
+            .triangle(Vec3::ZERO, Vec3::X, Vec3::NEG_Y, Rgba::WHITE);
+        scene.add(cspace);
+        let mut ground = Object3D::new("ground");
+        ground
+            .geometry
+            .triangle(Vec3::ZERO, Vec3::X, Vec3::Y, Rgba::WHITE);
+        scene.add(ground);
+
+        let mut batch = SceneBatch::default();
+        batch.rebuild(&scene);
+        assert_eq!(batch.triangles.len(), 6, "two opaque triangles");
+        assert_eq!(batch.translucent.len(), 3, "one translucent triangle");
+        assert!(batch.translucent.iter().all(|v| v.color[3] == 60));
+        assert_eq!(
+            batch.triangles[2].pos,
+            [0.0, -1.0, 0.0],
+            "opaque kept in order"
+        );
+        assert_eq!(
+            batch.triangles[5].pos,
+            [0.0, 1.0, 0.0],
+            "the ground after it"
+        );
     }
 }

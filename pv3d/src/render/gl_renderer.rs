@@ -91,6 +91,7 @@ pub struct SceneRenderer {
     lines: Buffer,
     points: Buffer,
     triangles: Buffer,
+    translucent: Buffer,
     mesh: Buffer,
     /// Scene generation last uploaded; `None` forces an upload.
     uploaded: Option<u64>,
@@ -116,6 +117,7 @@ impl SceneRenderer {
                 lines: flat_buffer(gl)?,
                 points: flat_buffer(gl)?,
                 triangles: flat_buffer(gl)?,
+                translucent: flat_buffer(gl)?,
                 mesh: mesh_buffer(gl)?,
                 uploaded: None,
                 point_size: 3.0,
@@ -148,6 +150,12 @@ impl SceneRenderer {
                 &mut self.triangles,
                 bytemuck::cast_slice(&batch.triangles),
                 batch.triangles.len(),
+            );
+            fill(
+                gl,
+                &mut self.translucent,
+                bytemuck::cast_slice(&batch.translucent),
+                batch.translucent.len(),
             );
             fill(
                 gl,
@@ -212,9 +220,11 @@ impl SceneRenderer {
                 gl.get_uniform_location(self.flat, "u_point_size").as_ref(),
                 self.point_size,
             );
-            // Translucent fills first without writing depth, so lines on them stay visible.
-            gl.depth_mask(false);
             draw_buffer(gl, &self.triangles, glow::TRIANGLES);
+            // Translucent fills after everything opaque and without writing depth, so that
+            // neither an opaque fill drawn later nor the lines on them are hidden.
+            gl.depth_mask(false);
+            draw_buffer(gl, &self.translucent, glow::TRIANGLES);
             gl.depth_mask(true);
             draw_buffer(gl, &self.lines, glow::LINES);
             draw_buffer(gl, &self.points, glow::POINTS);
@@ -231,7 +241,13 @@ impl SceneRenderer {
         unsafe {
             gl.delete_program(self.flat);
             gl.delete_program(self.lit);
-            for b in [&self.lines, &self.points, &self.triangles, &self.mesh] {
+            for b in [
+                &self.lines,
+                &self.points,
+                &self.triangles,
+                &self.translucent,
+                &self.mesh,
+            ] {
                 gl.delete_vertex_array(b.vao);
                 gl.delete_buffer(b.vbo);
             }
