@@ -18,7 +18,10 @@ fuzz_target!(|data: &[u8]| {
             let once = message.to_bytes();
             let mut again = FrameDecoder::new(64 * 1024);
             again.extend(&once);
-            let frame = again.next_frame().expect("own encoding frames").expect("whole");
+            let frame = again
+                .next_frame()
+                .expect("own encoding frames")
+                .expect("whole");
             let twice = Message::decode(frame.header, frame.body).expect("own encoding decodes");
             assert_eq!(twice.to_bytes(), once);
         }

@@ -88,9 +88,16 @@ impl Xdr for MapData {
     }
 }
 
+/// The most cells a tile may inflate to: Player's hard message limit
+/// (`PLAYERXDR_MAX_MESSAGE_SIZE`, 32 MiB), far above any real tile. Without it a lying width ×
+/// height plus a small zlib bomb could make [`MapData::cells`] allocate gigabytes.
+pub const MAX_TILE_CELLS: usize = 32 * 1024 * 1024;
+
 /// Why a tile's cells cannot be had.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum MapError {
+    #[error("a {width}×{height} tile exceeds the {MAX_TILE_CELLS}-cell limit")]
+    TileTooLarge { width: u32, height: u32 },
     #[error("tile data is not a zlib stream: {0}")]
     Inflate(String),
     #[error("tile inflates to more than its {expected} cells")]
@@ -127,7 +134,14 @@ impl MapData {
 
     /// The cells, inflated: negative free, 0 unknown, positive occupied.
     pub fn cells(&self) -> Result<Vec<i8>, MapError> {
-        let expected = self.width as usize * self.height as usize;
+        let expected = u64::from(self.width) * u64::from(self.height);
+        if expected > MAX_TILE_CELLS as u64 {
+            return Err(MapError::TileTooLarge {
+                width: self.width,
+                height: self.height,
+            });
+        }
+        let expected = expected as usize;
         let mut out = Vec::with_capacity(expected.min(self.data.len() * 1032 + 64));
         flate2::read::ZlibDecoder::new(&self.data[..])
             .take(expected as u64 + 1)
@@ -203,5 +217,21 @@ mod tests {
             ..MapData::default()
         };
         assert!(matches!(garbage.cells(), Err(MapError::Inflate(_))));
+        let lying = MapData {
+            width: 65536,
+            height: 65536,
+            ..tile_of(&[0; 4])
+        };
+        assert_eq!(
+            lying.cells(),
+            Err(MapError::TileTooLarge {
+                width: 65536,
+                height: 65536
+            })
+        );
+    }
+
+    fn tile_of(cells: &[i8]) -> MapData {
+        MapData::compress(0, 0, 2, 2, 1, cells)
     }
 }
