@@ -10,10 +10,13 @@ use std::fs;
 
 use crate::BenchError;
 
-/// CPU seconds so far of each live thread whose name starts with a prefix, by thread id.
+/// CPU seconds and context switches so far of each live thread whose name starts with a
+/// prefix, by thread id. Switches count wake-ups: a thread that blocks and is woken per
+/// message switches about once per message.
 #[derive(Debug, Clone, Default)]
 pub struct CpuSnapshot {
     seconds: HashMap<u32, f64>,
+    switches: HashMap<u32, u64>,
 }
 
 impl CpuSnapshot {
@@ -21,6 +24,7 @@ impl CpuSnapshot {
         let tasks = fs::read_dir("/proc/self/task")
             .map_err(|e| BenchError::Cpu(format!("/proc/self/task: {e}")))?;
         let mut seconds = HashMap::new();
+        let mut switches = HashMap::new();
         for task in tasks.flatten() {
             let Some(tid) = task
                 .file_name()
@@ -39,13 +43,25 @@ impl CpuSnapshot {
             if let Some(s) = thread_seconds(&task.path()) {
                 seconds.insert(tid, s);
             }
+            if let Ok(status) = fs::read_to_string(task.path().join("status")) {
+                switches.insert(tid, parse_switches(&status));
+            }
         }
-        Ok(CpuSnapshot { seconds })
+        Ok(CpuSnapshot { seconds, switches })
     }
 
     /// Adds another group's threads.
     pub fn absorb(&mut self, other: CpuSnapshot) {
         self.seconds.extend(other.seconds);
+        self.switches.extend(other.switches);
+    }
+
+    /// Context switches (voluntary and not) between `earlier` and `self`.
+    pub fn switches_since(&self, earlier: &CpuSnapshot) -> u64 {
+        self.switches
+            .iter()
+            .map(|(tid, now)| now.saturating_sub(earlier.switches.get(tid).copied().unwrap_or(0)))
+            .sum()
     }
 
     /// Threads matched.
@@ -76,6 +92,15 @@ fn thread_seconds(task: &std::path::Path) -> Option<f64> {
     parse_stat_ticks(&stat).map(|ticks| ticks as f64 / 100.0)
 }
 
+/// voluntary_ctxt_switches + nonvoluntary_ctxt_switches from a `status` file.
+fn parse_switches(status: &str) -> u64 {
+    status
+        .lines()
+        .filter(|l| l.contains("ctxt_switches:"))
+        .filter_map(|l| l.split_whitespace().nth(1)?.parse::<u64>().ok())
+        .sum()
+}
+
 /// utime + stime from a `stat` line; the command name may hold spaces and parentheses, so
 /// fields are counted from the last ')'.
 fn parse_stat_ticks(stat: &str) -> Option<u64> {
@@ -96,6 +121,12 @@ mod tests {
         let line = "42 (player 127.0.0.) S 1 2 3 4 5 6 7 8 9 10 17 25 0 0 20 0";
         assert_eq!(parse_stat_ticks(line), Some(42));
         assert_eq!(parse_stat_ticks("garbage"), None);
+    }
+
+    #[test]
+    fn switches_add_voluntary_and_involuntary() {
+        let status = "Name:\tx\nvoluntary_ctxt_switches:\t7\nnonvoluntary_ctxt_switches:\t3\n";
+        assert_eq!(parse_switches(status), 10);
     }
 
     #[test]

@@ -102,6 +102,8 @@ fn panel(
             .configure_mesh()
             .x_desc("robots (N)")
             .x_label_formatter(&|x| format!("{x:.0}"))
+            .y_labels(14)
+            .y_label_formatter(&|y| format!("{y:.1}"))
             .light_line_style(WHITE)
             .label_style((FONT, 15))
             .draw()

@@ -11,13 +11,13 @@ fn ms(seconds: Option<f64>) -> String {
 /// One row per N and design.
 pub fn table(results: &[Measurement]) -> String {
     let mut out = String::from(
-        "| N | design | published/s | handled msg/s | lost | client CPU (cores) | server+generator CPU | p50 ms | p99 ms | max ms |\n\
-         |---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+        "| N | design | published/s | handled msg/s | lost | client CPU (cores) | client ctx switches/s | server+generator CPU | p50 ms | p99 ms | max ms |\n\
+         |---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     for m in results {
         let _ = writeln!(
             out,
-            "| {} | {} | {:.0} | {:.0} | {} ({:.1}%) | {:.3} | {:.3} | {} | {} | {} |",
+            "| {} | {} | {:.0} | {:.0} | {} ({:.1}%) | {:.3} | {:.0} | {:.3} | {} | {} | {} |",
             m.robots,
             m.design.label(),
             m.published as f64 / m.window_s,
@@ -25,6 +25,7 @@ pub fn table(results: &[Measurement]) -> String {
             m.lost(),
             100.0 * m.lost() as f64 / (m.published.max(1)) as f64,
             m.client_cpu,
+            m.client_switches_per_s,
             m.server_cpu,
             ms(m.latency.map(|l| l.p50)),
             ms(m.latency.map(|l| l.p99)),

@@ -58,6 +58,8 @@ pub struct Measurement {
     /// The same for the server's threads and the traffic generator (the load beside it).
     pub server_cpu: f64,
     pub client_threads: usize,
+    /// Context switches of the client-side threads per wall second (wake-ups).
+    pub client_switches_per_s: f64,
     pub latency: Option<LatencySummary>,
 }
 
@@ -118,6 +120,7 @@ pub fn run_point(config: &PointConfig) -> Result<Vec<Measurement>, BenchError> {
             client_cpu: client1.since(&client0) / window_s,
             server_cpu: server1.since(&server0) / window_s,
             client_threads: client1.threads(),
+            client_switches_per_s: client1.switches_since(&client0) as f64 / window_s,
             latency: LatencySummary::of(recorder.latencies()),
         });
     }
