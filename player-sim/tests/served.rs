@@ -170,3 +170,37 @@ fn fiducials_and_sonar_rings_of_the_multirobot_world() {
         "simulation, position2d, 2 rangers, fiducial, camera, laser, JPEG camera"
     );
 }
+
+#[test]
+fn a_laser_reads_the_distance_to_a_wall_drawn_with_blocks() {
+    let sim = start("blocks.world", 5.0);
+    let client = Client::connect(
+        "127.0.0.1",
+        sim.port(6665).unwrap(),
+        ClientOptions::default(),
+    )
+    .unwrap();
+    let laser = client.laser(0);
+    laser.subscribe().unwrap();
+    // From (0, 0) facing east the laser, 0.1 m ahead, is 4.7 m from the east wall's face.
+    let (scan, _) = wait_for("a scan", Duration::from_secs(3), || laser.scan());
+    assert_eq!(scan.ranges.len(), 181);
+    assert!((scan.ranges[90] - 4.7).abs() < 0.03, "{}", scan.ranges[90]);
+    // Facing north under the L-shaped partition's bar (y = 1.0): 0.9 m.
+    let set = SimulationPose2d {
+        name: PlayerString::new("r0"),
+        pose: Pose2d::new(-2.0, 0.0, std::f64::consts::FRAC_PI_2),
+    };
+    client
+        .request(
+            client.addr(Interface::SIMULATION, 0),
+            2,
+            Body::Simulation(SimMsg::SetPose2d(set)),
+        )
+        .unwrap();
+    wait_for("a scan of the partition", Duration::from_secs(3), || {
+        laser
+            .scan()
+            .filter(|(s, _)| (s.ranges[90] - 0.9).abs() < 0.03)
+    });
+}

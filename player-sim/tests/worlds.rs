@@ -23,6 +23,7 @@ fn every_example_world_loads_without_ignored_parts() {
         ("multirobot.world", 5),
         ("classroom.world", 8),
         ("swarm.world", 256),
+        ("blocks.world", 1),
     ] {
         let world = World::load(&worlds().join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert_eq!(world.robots.len(), robots, "{name}");
@@ -73,7 +74,8 @@ fn syntax_errors_and_unsupported_parts_are_reported_with_positions() {
     let odd = write(
         dir.path(),
         "odd.world",
-        "window ( size [ 1 1 ] )\nlaser_max 3\nposition( name \"r\" gui_nose 1 blobfinder( ) block( points 3 ) )\n",
+        "window ( size [ 1 1 ] )\nlaser_max 3\npaused 1\nresolution 0.05\n\
+         position( name \"r\" gui_nose 1 blobfinder( ) sensor( range [ 0 1 ] ) )\n",
     );
     let world = World::load(&odd).unwrap();
     let notes = world.ignored.join("\n");
@@ -92,6 +94,30 @@ fn syntax_errors_and_unsupported_parts_are_reported_with_positions() {
     assert!(
         notes.contains("ignored: a blobfinder on robot r at"),
         "{notes}"
+    );
+    assert!(
+        notes.contains("ignored: sensor() in position at"),
+        "{notes}"
+    );
+    assert!(
+        notes.contains("ignored: world property paused (player-sim has no GUI")
+            && notes.contains("odd.world:3"),
+        "{notes}"
+    );
+    assert!(
+        notes.contains("ignored: world property resolution (only block floorplans")
+            && notes.contains("odd.world:4"),
+        "{notes}"
+    );
+    let pointless = write(
+        dir.path(),
+        "pointless.world",
+        "model( name \"m\"\n  block( points 3 point[0] [ 0 0 ] ) )\n",
+    );
+    let e = World::load(&pointless).unwrap_err().to_string();
+    assert!(
+        e.starts_with(&format!("{}:2:", pointless.display())) && e.contains("no point[1]"),
+        "{e}"
     );
     let unknown = write(dir.path(), "unknown.world", "pioneer( name \"x\" )\n");
     assert!(
@@ -283,4 +309,86 @@ fn camera_resolutions_and_fields_of_view_that_cannot_render_are_refused_where_wr
     );
     let camera = &World::load(&path).unwrap().robots[0].cameras[0];
     assert_eq!((camera.width_px, camera.height_px), (320, 240));
+}
+
+#[test]
+fn a_floorplan_drawn_with_blocks_stops_lasers_and_robots() {
+    let world = World::load(&worlds().join("blocks.world")).unwrap();
+    assert!(world.floorplan.is_none(), "no bitmap for a viewer");
+    assert_eq!(world.floor_blocks.len(), 5);
+    assert!((world.resolution - 0.02).abs() < 1e-12);
+    assert!((world.floor_height - 0.8).abs() < 1e-12);
+    // The robot's pointed block, stretched over 0.44 x 0.38 m: its tip at the front.
+    let r0 = &world.robots[0];
+    assert_eq!(r0.shape.len(), 1);
+    assert!((r0.shape[0][2][0] - 0.22).abs() < 1e-12 && r0.shape[0][2][1].abs() < 1e-12);
+    let crate_ = &world.obstacles[0];
+    assert_eq!((crate_.name.as_str(), crate_.shape[0].len()), ("crate", 3));
+    assert_eq!(crate_.shape[0][0], [-0.3, -0.3]);
+
+    let mut sim = Simulation::new(world);
+    let laser = sim.world.robots[0].rangers[0].clone();
+    let scan = ranger_scan(&sim, 0, &laser);
+    // From (0.1, 0) the east wall's face (x = 4.8) is 4.7 m ahead, the north one 3.8 m left.
+    assert!((scan[90] - 4.7).abs() <= 0.03, "ahead: {}", scan[90]);
+    assert!((scan[180] - 3.8).abs() <= 0.03, "left: {}", scan[180]);
+    // Facing north under the L's bar (y = 1.0): 0.9 m from the laser.
+    sim.robots[0].pose = Pose {
+        x: -2.0,
+        y: 0.0,
+        a: std::f64::consts::FRAC_PI_2,
+    };
+    let scan = ranger_scan(&sim, 0, &laser);
+    assert!(
+        (scan[90] - 0.9).abs() <= 0.03,
+        "the partition: {}",
+        scan[90]
+    );
+    sim.robots[0].command = Command::Velocity {
+        vx: 0.5,
+        vy: 0.0,
+        va: 0.0,
+    };
+    run(&mut sim, 2.0);
+    assert!(sim.robots[0].stall, "drove into the partition");
+    // The robot's front (0.22 m ahead of its centre) stops short of the bar's face.
+    let y = sim.robots[0].pose.y;
+    assert!(y > 0.6 && y < 1.0 - 0.19, "{y}");
+}
+
+#[test]
+fn sensors_mounted_on_models_on_a_robot_compose_their_poses() {
+    let dir = tempfile::tempdir().unwrap();
+    let nested = write(
+        dir.path(),
+        "nested.world",
+        "position( name \"r\" size [ 0.4 0.4 0.2 ]\n\
+         model( name \"mast\" pose [ 0.1 0 0 90 ] size [ 0.1 0.1 0.5 ]\n\
+         ranger( pose [ 0.2 0 0.05 0 ] sensor( range [ 0 4 ] fov 90 samples 9 ) )\n\
+         model( pose [ 0 0 0 0 ] size [ 0.05 0.05 0.1 ] camera( pose [ 0 0 0.02 0 ] ) ) ) )\n",
+    );
+    let world = World::load(&nested).unwrap();
+    let r = &world.robots[0];
+    assert_eq!((r.rangers.len(), r.cameras.len()), (1, 1));
+    let p = r.rangers[0].pose;
+    // 0.2 m ahead of a mast turned 90° left and 0.1 m forward: (0.1, 0.2), facing left.
+    assert!(
+        (p.x - 0.1).abs() < 1e-12
+            && (p.y - 0.2).abs() < 1e-12
+            && (p.a - std::f64::consts::FRAC_PI_2).abs() < 1e-12,
+        "{p:?}"
+    );
+    // The camera stands on the robot (0.2), the mast (0.5) and its own model (0.1).
+    assert!(
+        (r.cameras[0].height - 0.82).abs() < 1e-12,
+        "{}",
+        r.cameras[0].height
+    );
+    let notes = world.ignored.join("\n");
+    assert!(
+        notes.contains(
+            "ignored: the body of a model on robot r (only what is mounted on it is read) at"
+        ) && notes.contains("nested.world:2"),
+        "{notes}"
+    );
 }

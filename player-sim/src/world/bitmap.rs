@@ -22,7 +22,7 @@ pub struct OccupancyGrid {
     /// World position of the grid's south-west corner.
     pub origin: (f64, f64),
     /// Row-major from the south row up.
-    occupied: Vec<bool>,
+    pub(super) occupied: Vec<bool>,
 }
 
 impl OccupancyGrid {

@@ -3,20 +3,21 @@
 //! What the simulator does not model is reported once as "ignored: <what> at file:line".
 
 mod bitmap;
+mod blocks;
 mod colors;
 mod models;
 mod properties;
+mod raster;
+mod robot;
 
 use std::path::Path;
 
 pub use bitmap::{Face, OccupancyGrid};
+pub use blocks::{Polygon, placed};
 pub use models::{Model, Types, read_with_includes};
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
-use properties::{
-    color_of, err, fiducial_of, name_of, number, numbers, opt_number, pose_from, pose_of, size_of,
-    string,
-};
+use properties::{color_of, err, fiducial_of, name_of, number, numbers, pose_of, size_of, string};
 
 /// Stage's drive models.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -90,6 +91,9 @@ pub struct RobotSpec {
     pub color: [u8; 3],
     pub drive: Drive,
     pub fiducial_id: Option<i32>,
+    /// The robot's `block`s, scaled to its size, in its own frame (empty when it has none).
+    /// Collisions and rays use the box of `size`, which is these blocks' bounding box.
+    pub shape: Vec<Polygon>,
     pub rangers: Vec<RangerSpec>,
     pub fiducials: Vec<FiducialSpec>,
     pub cameras: Vec<CameraSpec>,
@@ -103,6 +107,9 @@ pub struct BoxObstacle {
     pub size: [f64; 3],
     pub color: [u8; 3],
     pub fiducial_id: Option<i32>,
+    /// The model's `block`s, scaled to its size, in its own frame (empty when it has none).
+    /// Collisions and rays use the box of `size`, which is these blocks' bounding box.
+    pub shape: Vec<Polygon>,
 }
 
 /// Where the floorplan bitmap lies, so a viewer can draw the same walls.
@@ -124,7 +131,13 @@ pub struct World {
     /// Simulation step, seconds.
     pub interval: f64,
     pub floor: Option<OccupancyGrid>,
+    /// A bitmap floorplan, for viewers; `None` when the floorplan is drawn with blocks only.
     pub floorplan: Option<Floorplan>,
+    /// Floorplans drawn with `block`s, in world coordinates (they are also in `floor`).
+    pub floor_blocks: Vec<Polygon>,
+    /// Metres per cell of the grid block floorplans are drawn into (the world's `resolution`,
+    /// 0.02 as in Stage unless set).
+    pub resolution: f64,
     /// The floorplan's wall height (its size's z) and colour, for the camera.
     pub floor_height: f64,
     pub floor_color: [u8; 3],
@@ -133,6 +146,9 @@ pub struct World {
     /// "ignored: <what> at file:line", once each.
     pub ignored: Vec<String>,
 }
+
+/// Stage's default raytrace resolution: 50 cells per metre.
+const DEFAULT_RESOLUTION: f64 = 0.02;
 
 /// Properties each kind of model reads; anything else is reported as ignored.
 const READ: &[&str] = &[
@@ -160,21 +176,33 @@ impl World {
         let mut types = Types::default();
         let mut world = World {
             interval: 0.1,
+            resolution: DEFAULT_RESOLUTION,
             floor_height: 1.0,
             floor_color: [77, 77, 77],
             ..World::default()
         };
         let base = path.parent().unwrap_or(Path::new("."));
+        let mut floor_blocks = Vec::new();
+        let mut resolution_at = None;
         for item in items {
             match item {
                 Item::Define { name, base, body } => types.add(name, base, body),
-                Item::Property(p) => world.top_property(&p)?,
+                Item::Property(p) => {
+                    if p.name == "resolution" {
+                        resolution_at = Some(p.pos.clone());
+                    }
+                    world.top_property(&p)?;
+                }
                 Item::Include { .. } => unreachable!("includes are expanded while reading"),
                 Item::Block(block) if block.kind == "window" => {
                     world.ignore("window (the Stage GUI)", &block.pos);
                 }
-                Item::Block(block) if block.kind == "floorplan" => {
-                    world.floorplan(&types.instantiate_as_model(&block)?, base)?;
+                Item::Block(block)
+                    if block.kind == "floorplan"
+                        || types.derives_from(&block.kind, "floorplan") =>
+                {
+                    let blocks = world.floorplan(&types.instantiate_as_model(&block)?, base)?;
+                    floor_blocks.extend(blocks.into_iter().map(|b| (b, block.pos.clone())));
                 }
                 Item::Block(block) => {
                     let model = types.instantiate(&block)?;
@@ -182,6 +210,16 @@ impl World {
                 }
             }
         }
+        if floor_blocks.is_empty()
+            && let Some(pos) = resolution_at
+        {
+            world.ignore(
+                "world property resolution (only block floorplans are drawn into a grid of \
+                 that resolution; a bitmap's pixels are its cells)",
+                &pos,
+            );
+        }
+        world.draw_floor_blocks(floor_blocks)?;
         Ok(world)
     }
 
@@ -196,8 +234,26 @@ impl World {
     fn top_property(&mut self, p: &Property) -> Result<(), WorldFileError> {
         match p.name.as_str() {
             "interval_sim" => self.interval = number(p)? / 1000.0,
+            "resolution" => {
+                let r = number(p)?;
+                if !(r.is_finite() && r > 0.0) {
+                    return Err(err(
+                        &p.pos,
+                        "resolution must be a positive number of metres",
+                    ));
+                }
+                self.resolution = r;
+            }
+            // Stage's GUI starts paused and its 'p' key resumes; without a GUI (Player's
+            // `usegui 0`) Stage runs, and so does player-sim, which has none.
+            "paused" if number(p)? != 0.0 => {
+                self.ignore(
+                    "world property paused (player-sim has no GUI to resume it: it runs)",
+                    &p.pos,
+                );
+            }
             // Real-time pacing is the server's choice (--speedup); these change nothing here.
-            "resolution" | "speedup" | "quit_time" | "paused" | "threads" => {}
+            "paused" | "speedup" | "quit_time" | "threads" => {}
             other => self.ignore(&format!("world property {other}"), &p.pos),
         }
         Ok(())
@@ -209,37 +265,40 @@ impl World {
                 self.ignore(&format!("{} property {}", model.declared, p.name), &p.pos);
             }
         }
-        // Sensors are read by the ranger; other nested blocks (Stage's block() shapes) are not
-        // modelled: footprints are boxes of the model's size.
+        // Sensors are read by the ranger and block() shapes by every model; nothing else is.
         for part in model
             .parts
             .iter()
-            .filter(|p| !(model.kind == "ranger" && p.kind == "sensor"))
+            .filter(|p| !(model.kind == "ranger" && p.kind == "sensor") && p.kind != "block")
         {
-            self.ignore(
-                &format!(
-                    "{}() in {} (footprints are boxes of its size)",
-                    part.kind, model.declared
-                ),
-                &part.pos,
-            );
+            self.ignore(&format!("{}() in {}", part.kind, model.declared), &part.pos);
         }
     }
 
-    fn floorplan(&mut self, model: &Model, base: &Path) -> Result<(), WorldFileError> {
+    /// Reads a floorplan: a bitmap becomes the grid now; blocks are returned, in world
+    /// coordinates, to be drawn once every floorplan and the world's resolution are known.
+    fn floorplan(&mut self, model: &Model, base: &Path) -> Result<Vec<Polygon>, WorldFileError> {
         self.note_unread(model);
-        let Some(bitmap) = model.get("bitmap") else {
-            self.ignore("floorplan without a bitmap", &model.pos);
-            return Ok(());
-        };
-        let file = string(bitmap)?;
+        let bitmap = model.get("bitmap");
+        if bitmap.is_none() && !blocks::has_blocks(model) {
+            self.ignore("floorplan without a bitmap or blocks", &model.pos);
+            return Ok(Vec::new());
+        }
         let size = numbers(model.get("size"), 2, &model.pos)?;
         let pose = pose_of(model)?;
+        self.floor_height = size.get(2).copied().unwrap_or(1.0);
+        self.floor_color = color_of(model)?;
+        let Some(bitmap) = bitmap else {
+            let polygons = blocks::model_blocks(model, [size[0], size[1]])?;
+            return Ok(polygons.iter().map(|p| placed(p, pose)).collect());
+        };
+        if let Some(block) = model.parts.iter().find(|p| p.kind == "block") {
+            self.ignore("block() in a floorplan with a bitmap", &block.pos);
+        }
+        let file = string(bitmap)?;
         let grid = OccupancyGrid::from_png(&base.join(file), size[0], size[1], pose.x, pose.y)
             .map_err(|e| err(&bitmap.pos, e))?;
         self.floor = Some(grid);
-        self.floor_height = size.get(2).copied().unwrap_or(1.0);
-        self.floor_color = color_of(model)?;
         self.floorplan = Some(Floorplan {
             bitmap: base.join(file),
             size: [size[0], size[1]],
@@ -247,6 +306,36 @@ impl World {
             height: self.floor_height,
             color: self.floor_color,
         });
+        Ok(Vec::new())
+    }
+
+    /// Draws the block floorplans into the floor grid: the bitmap's, grown to hold them, or
+    /// one of the world's resolution.
+    fn draw_floor_blocks(&mut self, blocks: Vec<(Polygon, Pos)>) -> Result<(), WorldFileError> {
+        let Some((_, first_at)) = blocks.first() else {
+            return Ok(());
+        };
+        let (mut min, mut max) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for point in blocks.iter().flat_map(|(polygon, _)| polygon) {
+            for k in 0..2 {
+                min[k] = min[k].min(point[k]);
+                max[k] = max[k].max(point[k]);
+            }
+        }
+        let mut grid = match self.floor.take() {
+            None => OccupancyGrid::covering(min, max, self.resolution),
+            Some(bitmap) => bitmap.grown_to(min, max).ok_or_else(|| {
+                err(
+                    first_at,
+                    "block floorplans lie too far from the bitmap floorplan for one grid",
+                )
+            })?,
+        };
+        for (polygon, _) in &blocks {
+            grid.draw_polygon(polygon);
+        }
+        self.floor = Some(grid);
+        self.floor_blocks = blocks.into_iter().map(|(polygon, _)| polygon).collect();
         Ok(())
     }
 
@@ -257,14 +346,18 @@ impl World {
                 let robot = self.robot(model)?;
                 self.robots.push(robot);
             }
-            "model" if model.get("bitmap").is_some() => self.floorplan(model, base)?,
+            "model" if model.get("bitmap").is_some() => {
+                self.floorplan(model, base)?;
+            }
             "model" => {
+                let size = size_of(model, [1.0, 1.0, 1.0])?;
                 let obstacle = BoxObstacle {
                     name: name_of(model, &format!("box{}", self.obstacles.len())),
                     pose: pose_of(model)?,
-                    size: size_of(model, [1.0, 1.0, 1.0])?,
+                    size,
                     color: color_of(model)?,
                     fiducial_id: fiducial_of(model)?,
+                    shape: blocks::model_blocks(model, [size[0], size[1]])?,
                 };
                 self.obstacles.push(obstacle);
             }
@@ -272,143 +365,6 @@ impl World {
         }
         Ok(())
     }
-
-    fn robot(&mut self, model: &Model) -> Result<RobotSpec, WorldFileError> {
-        let drive = match model.get("drive").map(string).transpose()? {
-            None | Some("diff") => Drive::Diff,
-            Some("omni") => Drive::Omni,
-            Some(other) => {
-                self.ignore(
-                    &format!("drive {other:?} (simulated as diff)"),
-                    &model.get("drive").expect("present").pos,
-                );
-                Drive::Diff
-            }
-        };
-        let mut robot = RobotSpec {
-            name: name_of(model, &format!("robot{}", self.robots.len())),
-            pose: pose_of(model)?,
-            size: size_of(model, [0.44, 0.38, 0.22])?,
-            color: color_of(model)?,
-            drive,
-            fiducial_id: fiducial_of(model)?,
-            rangers: Vec::new(),
-            fiducials: Vec::new(),
-            cameras: Vec::new(),
-        };
-        for child in &model.children {
-            self.note_unread(child);
-            let pose = pose_of(child)?;
-            match child.kind.as_str() {
-                "ranger" => {
-                    let mut sensors = Vec::new();
-                    for part in child.parts.iter().filter(|p| p.kind == "sensor") {
-                        let range = part
-                            .get("range")
-                            .map(|p| numbers(Some(p), 2, &p.pos))
-                            .transpose()?
-                            .unwrap_or_else(|| vec![0.0, 5.0]);
-                        let fov = part
-                            .get("fov")
-                            .map(number)
-                            .transpose()?
-                            .unwrap_or(0.0)
-                            .to_radians();
-                        let samples = part
-                            .get("samples")
-                            .map(number)
-                            .transpose()?
-                            .unwrap_or(1.0)
-                            .max(1.0) as usize;
-                        let sensor_pose = match part.get("pose") {
-                            Some(p) => pose_from(p)?,
-                            None => Pose::default(),
-                        };
-                        sensors.push(SensorSpec {
-                            pose: sensor_pose,
-                            min_range: range[0],
-                            max_range: range[1],
-                            fov,
-                            samples,
-                        });
-                    }
-                    if sensors.is_empty() {
-                        self.ignore("a ranger without sensor()", &child.pos);
-                        continue;
-                    }
-                    robot.rangers.push(RangerSpec { pose, sensors });
-                }
-                "fiducial" => robot.fiducials.push(FiducialSpec {
-                    pose,
-                    min_range: opt_number(child, "range_min")?.unwrap_or(0.0),
-                    max_range: opt_number(child, "range_max")?.unwrap_or(8.0),
-                    max_range_id: opt_number(child, "range_max_id")?.unwrap_or(5.0),
-                    fov: opt_number(child, "fov")?.unwrap_or(180.0).to_radians(),
-                }),
-                "camera" => {
-                    let (width_px, height_px) = camera_resolution(child)?;
-                    let fov = child
-                        .get("fov")
-                        .map(|p| numbers(Some(p), 2, &p.pos))
-                        .transpose()?
-                        .unwrap_or_else(|| vec![70.0, 40.0]);
-                    if let Some(p) = child.get("fov")
-                        && !fov[..2].iter().all(|f| *f > 0.0 && *f < 180.0)
-                    {
-                        return Err(err(
-                            &p.pos,
-                            "camera fov [h v] must be degrees between 0 and 180 (exclusive)",
-                        ));
-                    }
-                    let range = child
-                        .get("range")
-                        .map(|p| numbers(Some(p), 2, &p.pos))
-                        .transpose()?
-                        .unwrap_or_else(|| vec![0.2, 10.0]);
-                    let z = child
-                        .get("pose")
-                        .and_then(|p| p.value.numbers())
-                        .and_then(|n| n.get(2).copied())
-                        .unwrap_or(0.0);
-                    robot.cameras.push(CameraSpec {
-                        pose,
-                        height: z + robot.size[2],
-                        width_px,
-                        height_px,
-                        fov_h: fov[0].to_radians(),
-                        fov_v: fov[1].to_radians(),
-                        max_range: range[1],
-                    });
-                }
-                other => self.ignore(&format!("a {other} on robot {}", robot.name), &child.pos),
-            }
-        }
-        Ok(robot)
-    }
-}
-
-/// The largest raw camera frame served: Player's messages (and our clients) stop at 8 MiB.
-const MAX_FRAME_BYTES: f64 = (8 * 1024 * 1024 - 1024) as f64;
-
-/// A camera's `resolution [w h]` (160 x 120 by default), refused when a raw RGB frame of that
-/// size could not be sent.
-fn camera_resolution(camera: &Model) -> Result<(u32, u32), WorldFileError> {
-    let Some(p) = camera.get("resolution") else {
-        return Ok((160, 120));
-    };
-    let n = numbers(Some(p), 2, &p.pos)?;
-    let (w, h) = (n[0].round(), n[1].round());
-    if !(w >= 1.0 && h >= 1.0 && w * h * 3.0 <= MAX_FRAME_BYTES) {
-        return Err(err(
-            &p.pos,
-            format!(
-                "camera resolution {} x {} is not a frame Player can send \
-                 (at least 1 x 1, at most 8 MiB of RGB)",
-                n[0], n[1]
-            ),
-        ));
-    }
-    Ok((w as u32, h as u32))
 }
 
 impl Types {

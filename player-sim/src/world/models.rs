@@ -105,6 +105,21 @@ impl Types {
         BUILTIN.contains(&kind) || self.defines.contains_key(kind)
     }
 
+    /// Is `kind` `ancestor`, or `define`d from it at any depth?
+    pub fn derives_from(&self, kind: &str, ancestor: &str) -> bool {
+        let mut at = kind;
+        for _ in 0..=32 {
+            if at == ancestor {
+                return true;
+            }
+            match self.defines.get(at) {
+                Some((base, _)) => at = base,
+                None => return false,
+            }
+        }
+        false
+    }
+
     /// Expands an instance block into a model.
     pub fn instantiate(&self, block: &Block) -> Result<Model, WorldFileError> {
         let mut model = self.expand_type(&block.kind, &block.pos, 0)?;

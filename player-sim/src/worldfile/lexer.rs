@@ -81,6 +81,15 @@ pub fn tokenize(text: &str, file: &str) -> Result<Vec<Located>, WorldFileError> 
                     word.push(c);
                     chars.next();
                 }
+                // `point[0]`: an index written onto a name, as Stage's `block` points are.
+                if word.starts_with(|c: char| c.is_alphabetic() || c == '_')
+                    && let Some(suffix) = index_suffix(&text[at + word.len()..])
+                {
+                    word.push_str(suffix);
+                    for _ in 0..suffix.len() {
+                        chars.next();
+                    }
+                }
                 let starts_number = word
                     .starts_with(|c: char| c.is_ascii_digit() || c == '-' || c == '+' || c == '.');
                 let token = match word.parse::<f64>() {
@@ -100,6 +109,13 @@ pub fn tokenize(text: &str, file: &str) -> Result<Vec<Located>, WorldFileError> 
         }
     }
     Ok(tokens)
+}
+
+/// `[digits]` at the very start of `rest` (no space before it), if there.
+fn index_suffix(rest: &str) -> Option<&str> {
+    let inner = rest.strip_prefix('[')?;
+    let digits = inner.bytes().take_while(u8::is_ascii_digit).count();
+    (digits > 0 && inner[digits..].starts_with(']')).then(|| &rest[..digits + 2])
 }
 
 #[cfg(test)]
@@ -124,6 +140,17 @@ mod tests {
         );
         assert_eq!((tokens[5].line, tokens[5].col), (2, 1));
         assert_eq!((tokens[6].line, tokens[6].col), (2, 6));
+    }
+
+    #[test]
+    fn indexed_names_are_one_word() {
+        let tokens = tokenize("point[12] [ 1 2 ] size [3]", "w").unwrap();
+        let kinds: Vec<&Token> = tokens.iter().map(|t| &t.token).collect();
+        assert_eq!(kinds[0], &Token::Word("point[12]".into()));
+        assert_eq!(kinds[1], &Token::ListOpen);
+        assert_eq!(kinds[5], &Token::Word("size".into()));
+        assert_eq!(kinds[6], &Token::ListOpen, "a space keeps a list a list");
+        assert_eq!(tokens[1].col, 11);
     }
 
     #[test]
