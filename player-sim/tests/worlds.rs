@@ -3,7 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-use player_sim::sim::{Command, Simulation, fiducials, ranger_scan};
+use player_sim::sim::{Command, Simulation, fiducials, ranger_scan, ranger_scan_exhaustive};
 use player_sim::world::{Pose, World};
 
 fn worlds() -> PathBuf {
@@ -391,4 +391,33 @@ fn sensors_mounted_on_models_on_a_robot_compose_their_poses() {
         ) && notes.contains("nested.world:2"),
         "{notes}"
     );
+}
+
+#[test]
+fn boxes_and_robots_drawn_with_blocks_are_solid_where_their_blocks_are() {
+    let mut sim = Simulation::new(World::load(&worlds().join("blocks.world")).unwrap());
+    // The crate at (2, -2) is the south-west half of its 0.6 m box: its slope is x + y = 0.
+    // Facing south along x = 2 the laser (0.1 m ahead) meets the slope at y = -2, not the
+    // box's north face at y = -1.7.
+    sim.robots[0].pose = Pose {
+        x: 2.0,
+        y: -0.5,
+        a: -std::f64::consts::FRAC_PI_2,
+    };
+    let laser = sim.world.robots[0].rangers[0].clone();
+    let scan = ranger_scan(&sim, 0, &laser);
+    assert!((scan[90] - 1.4).abs() < 1e-9, "{}", scan[90]);
+    assert_eq!(scan, ranger_scan_exhaustive(&sim, 0, &laser));
+    // Driving south, the robot's wedge meets the slope with its front corner (x = 1.81,
+    // 0.11 m ahead of its centre) where the slope is at y = -1.81: later than its box would
+    // meet the crate's box (centre at y = -1.48).
+    sim.robots[0].command = Command::Velocity {
+        vx: 0.5,
+        vy: 0.0,
+        va: 0.0,
+    };
+    run(&mut sim, 3.0);
+    assert!(sim.robots[0].stall);
+    let y = sim.robots[0].pose.y;
+    assert!(y < -1.6 && y > -1.7, "{y}");
 }

@@ -1,17 +1,21 @@
 //! Rays against oriented boxes, and box overlap: what robots and obstacles are to the
 //! simulator.
 
-use crate::world::Pose;
+use super::shapes::{outlines_overlap, ray_into_polygons};
+use crate::world::{Polygon, Pose, placed};
 
-/// A box on the ground: centre pose and full length (x) and width (y).
+/// A box on the ground: centre pose and full length (x) and width (y), and the blocks drawn
+/// inside it, if any (then they, not the whole box, are what is solid).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct GroundBox {
+pub struct GroundBox<'a> {
     pub pose: Pose,
     pub length: f64,
     pub width: f64,
+    /// In the box's frame; empty for a plain box.
+    pub shape: &'a [Polygon],
 }
 
-impl GroundBox {
+impl GroundBox<'_> {
     /// `(x, y)` in the box's own frame.
     fn local_point(&self, x: f64, y: f64) -> (f64, f64) {
         let (s, c) = self.pose.a.sin_cos();
@@ -28,14 +32,41 @@ impl GroundBox {
     pub fn raycast(&self, x: f64, y: f64, angle: f64) -> Option<f64> {
         let (ox, oy) = self.local_point(x, y);
         let a = angle - self.pose.a;
-        slab_hit(
-            ox,
-            oy,
-            a.cos(),
-            a.sin(),
-            self.length / 2.0,
-            self.width / 2.0,
-        )
+        let (dx, dy) = (a.cos(), a.sin());
+        let hit = slab_hit(ox, oy, dx, dy, self.length / 2.0, self.width / 2.0);
+        if self.shape.is_empty() {
+            return hit;
+        }
+        hit.and_then(|_| ray_into_polygons(self.shape, ox, oy, dx, dy))
+    }
+
+    /// The solid outline in world coordinates: the blocks, or the box's four corners.
+    fn world_outline(&self) -> Vec<Polygon> {
+        if self.shape.is_empty() {
+            return vec![
+                self.outline()[..4]
+                    .to_vec()
+                    .into_iter()
+                    .map(|(x, y)| [x, y])
+                    .collect(),
+            ];
+        }
+        self.shape.iter().map(|p| placed(p, self.pose)).collect()
+    }
+
+    /// The blocks' corners and edge midpoints in world coordinates (none for a plain box):
+    /// what is tested against the floorplan's walls instead of [`Self::outline`].
+    pub fn shape_points(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
+        let (s, c) = self.pose.a.sin_cos();
+        let at = move |[lx, ly]: [f64; 2]| {
+            (self.pose.x + c * lx - s * ly, self.pose.y + s * lx + c * ly)
+        };
+        self.shape.iter().flat_map(move |polygon| {
+            (0..polygon.len()).flat_map(move |i| {
+                let (a, b) = (polygon[i], polygon[(i + 1) % polygon.len()]);
+                [at(a), at([(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0])]
+            })
+        })
     }
 
     /// Radius of the circle around the centre that holds the whole box.
@@ -62,7 +93,11 @@ impl GroundBox {
 
     /// Do the boxes overlap? (Outline points inside the other, either way: exact for the
     /// robot-sized boxes simulated here.)
+    /// With blocks on either side, their polygons are tested exactly.
     pub fn overlaps(&self, other: &GroundBox) -> bool {
+        if !(self.shape.is_empty() && other.shape.is_empty()) {
+            return outlines_overlap(&self.world_outline(), &other.world_outline());
+        }
         self.outline().iter().any(|&(x, y)| other.contains(x, y))
             || other.outline().iter().any(|&(x, y)| self.contains(x, y))
     }
@@ -103,6 +138,7 @@ mod tests {
             },
             length: 1.0,
             width: 1.0,
+            shape: &[],
         };
         let hit = b.raycast(0.0, 0.0, 0.0).unwrap();
         assert!(
@@ -119,6 +155,7 @@ mod tests {
             },
             length: 0.4,
             width: 0.4,
+            shape: &[],
         };
         assert!(b.overlaps(&c));
         let d = GroundBox {
@@ -129,6 +166,7 @@ mod tests {
             },
             length: 0.4,
             width: 0.4,
+            shape: &[],
         };
         assert!(!b.overlaps(&d));
     }

@@ -7,6 +7,7 @@ mod geometry;
 mod nearby;
 mod noise;
 mod sensors;
+mod shapes;
 
 pub use camera::{Frame, render_camera};
 pub use geometry::GroundBox;
@@ -80,17 +81,18 @@ impl Simulation {
     }
 
     /// Robot `i`'s footprint at `pose`.
-    pub fn footprint(&self, i: usize, pose: Pose) -> GroundBox {
+    pub fn footprint(&self, i: usize, pose: Pose) -> GroundBox<'_> {
         let spec = &self.world.robots[i];
         GroundBox {
             pose,
             length: spec.size[0],
             width: spec.size[1],
+            shape: &spec.shape,
         }
     }
 
     /// Every solid thing but robot `except`, as boxes.
-    pub fn boxes_except(&self, except: Option<usize>) -> impl Iterator<Item = GroundBox> + '_ {
+    pub fn boxes_except(&self, except: Option<usize>) -> impl Iterator<Item = GroundBox<'_>> + '_ {
         let robots = self
             .robots
             .iter()
@@ -101,16 +103,22 @@ impl Simulation {
             pose: o.pose,
             length: o.size[0],
             width: o.size[1],
+            shape: &o.shape,
         });
         robots.chain(obstacles)
     }
 
     fn collides(&self, i: usize, pose: Pose) -> bool {
         let me = self.footprint(i, pose);
-        if let Some(floor) = &self.world.floor
-            && me.outline().iter().any(|&(x, y)| floor.occupied_at(x, y))
-        {
-            return true;
+        if let Some(floor) = &self.world.floor {
+            let hits_wall = if me.shape.is_empty() {
+                me.outline().iter().any(|&(x, y)| floor.occupied_at(x, y))
+            } else {
+                me.shape_points().any(|(x, y)| floor.occupied_at(x, y))
+            };
+            if hits_wall {
+                return true;
+            }
         }
         // Only boxes whose bounding circles meet can overlap: a cheap test first.
         let reach = me.bounding_radius();

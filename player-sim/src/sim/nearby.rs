@@ -6,10 +6,12 @@
 
 use super::Simulation;
 use super::geometry::slab_hit;
+use super::shapes::ray_into_polygons;
+use crate::world::Polygon;
 
 /// A solid box prepared for many rays: its frame's sine and cosine computed once.
 #[derive(Debug, Clone, Copy)]
-pub struct SolidBox {
+pub struct SolidBox<'a> {
     pub x: f64,
     pub y: f64,
     sin: f64,
@@ -20,9 +22,11 @@ pub struct SolidBox {
     /// Height above the floor, m (for the camera).
     pub height: f64,
     pub color: [u8; 3],
+    /// The blocks inside the box, in its frame; empty for a plain box.
+    shape: &'a [Polygon],
 }
 
-impl SolidBox {
+impl SolidBox<'_> {
     /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box, if ahead.
     fn hit(&self, x: f64, y: f64, dx: f64, dy: f64) -> Option<f64> {
         let (rx, ry) = (x - self.x, y - self.y);
@@ -34,7 +38,11 @@ impl SolidBox {
             self.cos * dx + self.sin * dy,
             -self.sin * dx + self.cos * dy,
         );
-        slab_hit(ox, oy, lx, ly, self.half_length, self.half_width)
+        let hit = slab_hit(ox, oy, lx, ly, self.half_length, self.half_width);
+        if self.shape.is_empty() {
+            return hit;
+        }
+        hit.and_then(|_| ray_into_polygons(self.shape, ox, oy, lx, ly))
     }
 
     /// Does the ray come near enough to the box's bounding circle, ahead and before `limit`?
@@ -48,29 +56,29 @@ impl SolidBox {
 
 /// The boxes a sensor at one place could see within its reach.
 #[derive(Debug, Clone, Default)]
-pub struct NearbyBoxes {
-    boxes: Vec<SolidBox>,
+pub struct NearbyBoxes<'a> {
+    boxes: Vec<SolidBox<'a>>,
 }
 
-impl NearbyBoxes {
+impl<'a> NearbyBoxes<'a> {
     /// Every robot but `except` and every obstacle whose bounding circle comes within `reach`
     /// of `(x, y)`.
-    pub fn around(sim: &Simulation, except: Option<usize>, x: f64, y: f64, reach: f64) -> Self {
+    pub fn around(sim: &'a Simulation, except: Option<usize>, x: f64, y: f64, reach: f64) -> Self {
         let robots = sim
             .robots
             .iter()
             .zip(&sim.world.robots)
             .enumerate()
             .filter(|(i, _)| Some(*i) != except)
-            .map(|(_, (state, spec))| (state.pose, spec.size, spec.color));
+            .map(|(_, (state, spec))| (state.pose, spec.size, spec.color, &spec.shape[..]));
         let obstacles = sim
             .world
             .obstacles
             .iter()
-            .map(|o| (o.pose, o.size, o.color));
+            .map(|o| (o.pose, o.size, o.color, &o.shape[..]));
         let boxes = robots
             .chain(obstacles)
-            .filter_map(|(pose, size, color)| {
+            .filter_map(|(pose, size, color, shape)| {
                 let radius = size[0].hypot(size[1]) / 2.0;
                 let centre_distance = (pose.x - x).hypot(pose.y - y);
                 (centre_distance - radius <= reach).then(|| {
@@ -85,6 +93,7 @@ impl NearbyBoxes {
                         radius,
                         height: size[2],
                         color,
+                        shape,
                     }
                 })
             })
@@ -101,9 +110,9 @@ impl NearbyBoxes {
     }
 
     /// The nearest box along the ray from `(x, y)` at `angle`, within `max`: (distance, box).
-    pub fn nearest(&self, x: f64, y: f64, angle: f64, max: f64) -> Option<(f64, &SolidBox)> {
+    pub fn nearest(&self, x: f64, y: f64, angle: f64, max: f64) -> Option<(f64, &SolidBox<'a>)> {
         let (dy, dx) = angle.sin_cos();
-        let mut best: Option<(f64, &SolidBox)> = None;
+        let mut best: Option<(f64, &SolidBox<'a>)> = None;
         for b in &self.boxes {
             let limit = best.map_or(max, |(d, _)| d);
             if !b.may_hit(x, y, dx, dy, limit) {
@@ -123,7 +132,7 @@ impl NearbyBoxes {
         y: f64,
         angle: f64,
         max: f64,
-    ) -> impl Iterator<Item = (f64, &SolidBox)> {
+    ) -> impl Iterator<Item = (f64, &SolidBox<'a>)> {
         let (dy, dx) = angle.sin_cos();
         self.boxes
             .iter()

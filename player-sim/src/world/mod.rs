@@ -92,7 +92,8 @@ pub struct RobotSpec {
     pub drive: Drive,
     pub fiducial_id: Option<i32>,
     /// The robot's `block`s, scaled to its size, in its own frame (empty when it has none).
-    /// Collisions and rays use the box of `size`, which is these blocks' bounding box.
+    /// When there are some, rays and collisions meet these polygons (the box of `size`, their
+    /// bounding box, is only the first, cheap test).
     pub shape: Vec<Polygon>,
     pub rangers: Vec<RangerSpec>,
     pub fiducials: Vec<FiducialSpec>,
@@ -108,7 +109,8 @@ pub struct BoxObstacle {
     pub color: [u8; 3],
     pub fiducial_id: Option<i32>,
     /// The model's `block`s, scaled to its size, in its own frame (empty when it has none).
-    /// Collisions and rays use the box of `size`, which is these blocks' bounding box.
+    /// When there are some, rays and collisions meet these polygons (the box of `size`, their
+    /// bounding box, is only the first, cheap test).
     pub shape: Vec<Polygon>,
 }
 
