@@ -5,12 +5,14 @@
 //! * [`config`] — plugin parameters with defaults and errors that say where.
 //! * [`device`] — what a plugin sees of its Player device.
 
+pub mod action;
 pub mod camera;
 pub mod config;
 pub mod device;
 pub mod plugin;
 pub mod scene;
 
+pub use action::{Action, ObjectRef};
 pub use config::{ConfigValueError, Param, PluginConfig};
 pub use device::{DeviceAccess, LinkState, Sample};
 pub use plugin::{Handled, InputEvent, Plugin, PluginContext, PluginRegistry};

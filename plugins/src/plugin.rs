@@ -6,6 +6,7 @@ use std::time::Instant;
 
 use glam::Vec3;
 
+pub use crate::action::{Action, ObjectRef};
 use crate::config::{ConfigValueError, PluginConfig};
 use crate::device::DeviceAccess;
 use crate::scene::{NodeId, Scene};
@@ -54,6 +55,11 @@ pub enum InputEvent {
     GroundClicked(Vec3),
     /// A click on a scene object.
     ObjectClicked(NodeId),
+    /// The person is dragging a target over the ground (press, move): show it, send nothing
+    /// yet. The release arrives as a [`InputEvent::GroundClicked`] at the drop point.
+    TargetDragged(Vec3),
+    /// The dragged target was let go outside the ground: forget it.
+    TargetDragCancelled,
     /// The window lost focus, or the person asked every robot to stop.
     StopAll,
     /// This plugin became (true) or stopped being (false) the active event handler.
@@ -67,11 +73,34 @@ pub enum Handled {
     No,
 }
 
-/// An action a plugin offers in the item tree ("Stop", "Reset trail").
+/// An action a plugin offers in the item tree ("Stop", "Reset trail"). Clicking it runs it
+/// ([`Plugin::run_service`]), or, when `popup` is set, opens its popup
+/// ([`Plugin::service_popup`]) for the person to fill in first.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Service {
     pub name: &'static str,
     pub description: &'static str,
+    pub popup: bool,
+}
+
+impl Service {
+    /// A service that runs when clicked.
+    pub const fn run(name: &'static str, description: &'static str) -> Service {
+        Service {
+            name,
+            description,
+            popup: false,
+        }
+    }
+
+    /// A service that opens a popup when clicked.
+    pub const fn popup(name: &'static str, description: &'static str) -> Service {
+        Service {
+            name,
+            description,
+            popup: true,
+        }
+    }
 }
 
 /// A component of a composition.
@@ -100,6 +129,31 @@ pub trait Plugin: Send {
 
     /// Runs one of [`Plugin::services`].
     fn run_service(&mut self, _name: &str, _ctx: &mut PluginContext<'_>) {}
+
+    /// Draws the popup of a service made with [`Service::popup`]; returns whether it stays
+    /// open (false once the person ran or cancelled it).
+    fn service_popup(
+        &mut self,
+        _name: &str,
+        _ui: &mut egui::Ui,
+        _ctx: &mut PluginContext<'_>,
+    ) -> bool {
+        false
+    }
+
+    /// What this plugin, as the active event handler, can do with a clicked object (a robot:
+    /// "Go to", "Follow"). A non-empty list opens a popup of them over the view; an empty one
+    /// lets the click go on down the chain.
+    fn actions_on(&self, _target: &ObjectRef) -> Vec<Action> {
+        Vec::new()
+    }
+
+    /// Runs one of the [`Plugin::actions_on`] actions the person chose for `target`.
+    fn run_action(&mut self, _action: &str, _target: &ObjectRef, _ctx: &mut PluginContext<'_>) {}
+
+    /// Controls drawn over the 3D view while this plugin is the active event handler (a
+    /// robot's joystick), so they work without opening its item-tree entry.
+    fn active_ui(&mut self, _ui: &mut egui::Ui, _ctx: &mut PluginContext<'_>) {}
 
     /// Input from the event chain.
     fn on_event(&mut self, _event: &InputEvent, _ctx: &mut PluginContext<'_>) -> Handled {

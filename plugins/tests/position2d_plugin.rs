@@ -1,5 +1,6 @@
 //! The position2d plugin fed known odometry: the body follows the pose, the trail grows, and
-//! tele-operation sends safe velocity commands.
+//! tele-operation sends safe velocity commands (and way-points in position mode); actions on
+//! clicked objects ("Go to", "Follow") and the dragged target.
 
 use std::time::{Duration, Instant};
 
@@ -8,9 +9,12 @@ use player_proto::interfaces::common::Pose2d;
 use player_proto::interfaces::position2d::{Position2d, Position2dData};
 use player_proto::message::{Body, Message};
 use player_proto::{DevAddr, MsgType};
+use pv3d_plugins::action::ObjectRef;
 use pv3d_plugins::config::DeviceRef;
+use pv3d_plugins::config::Param;
 use pv3d_plugins::device::{LinkState, RecordingDevice};
 use pv3d_plugins::plugin::{AnchorKey, Anchors, InputEvent, Plugin, PluginContext};
+use pv3d_plugins::scene::Object3D;
 use pv3d_plugins::scene::Scene;
 use pv3d_plugins::{PluginConfig, standard_plugins};
 
@@ -74,6 +78,31 @@ impl World {
 }
 
 fn world() -> (World, Box<dyn Plugin>) {
+    world_with(config())
+}
+
+fn waypoints(device: &RecordingDevice) -> Vec<(f64, f64, f64)> {
+    device
+        .commands
+        .lock()
+        .unwrap()
+        .iter()
+        .filter_map(|b| match b {
+            Body::Position2d(Position2d::Position(p)) => Some((p.pos.px, p.pos.py, p.pos.pa)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// A fiducial marker as the fiducial plugin makes it (re-created every scan).
+fn marker(scene: &mut Scene, id: i32, x: f32, y: f32) -> pv3d_plugins::scene::NodeId {
+    let mut o = Object3D::new(format!("marker {id}"));
+    o.tags = vec!["fiducial".into(), format!("id:{id}"), "person".into()];
+    o.transform = glam::Affine3A::from_translation(Vec3::new(x, y, 0.0));
+    scene.add(o)
+}
+
+fn world_with(config: PluginConfig) -> (World, Box<dyn Plugin>) {
     let mut w = World {
         scene: Scene::new(),
         anchors: Anchors::default(),
@@ -83,7 +112,7 @@ fn world() -> (World, Box<dyn Plugin>) {
     let create = standard_plugins()
         .constructor("libpv3d_position2d")
         .unwrap();
-    let plugin = create(config(), &mut w.ctx()).unwrap();
+    let plugin = create(config, &mut w.ctx()).unwrap();
     (w, plugin)
 }
 
@@ -187,8 +216,189 @@ fn arriving_stops_and_a_lost_connection_sends_nothing() {
     w.now += Duration::from_millis(200);
     plugin.update(&mut w.ctx());
     assert_eq!(
-        velocities(&w.device).len(),
-        before,
-        "the target was dropped with the connection"
+        velocities(&w.device)[before..],
+        [(0.0, 0.0)],
+        "the target was dropped with the connection, and its return brought one zero command"
     );
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    assert_eq!(velocities(&w.device).len(), before + 1, "and nothing more");
+}
+
+#[test]
+fn position_mode_sends_one_waypoint_and_writes_the_mode_back() {
+    let mut c = config();
+    c.params.push(Param::new("mode", "position"));
+    let (mut w, mut plugin) = world_with(c);
+    odometry(&w.device, 0.0, 0.0, 0.0);
+    plugin.update(&mut w.ctx());
+    plugin.on_event(&InputEvent::Activated(true), &mut w.ctx());
+    plugin.on_event(
+        &InputEvent::GroundClicked(Vec3::new(0.0, 2.0, 0.0)),
+        &mut w.ctx(),
+    );
+    for _ in 0..3 {
+        w.now += Duration::from_millis(200);
+        plugin.update(&mut w.ctx());
+    }
+    let sent = waypoints(&w.device);
+    assert_eq!(sent.len(), 1, "one way-point, not one per frame: {sent:?}");
+    let (x, y, a) = sent[0];
+    assert!(x.abs() < 1e-6 && (y - 2.0).abs() < 1e-6);
+    assert!(
+        (a - std::f64::consts::FRAC_PI_2).abs() < 1e-5,
+        "facing the way it goes"
+    );
+    assert!(
+        velocities(&w.device).is_empty(),
+        "no velocities in position mode"
+    );
+    // The server drove it there: done, and a zero velocity makes sure it stays.
+    odometry(&w.device, 0.0, 1.98, 1.5);
+    plugin.update(&mut w.ctx());
+    assert_eq!(velocities(&w.device), vec![(0.0, 0.0)]);
+    let saved = plugin.save();
+    assert_eq!(saved.text("mode"), Some("position"));
+    assert_eq!(saved.text("followDistance"), Some("0.8"));
+
+    let mut bad = config();
+    bad.params.push(Param::new("mode", "warp"));
+    let mut w2 = World {
+        scene: Scene::new(),
+        anchors: Anchors::default(),
+        device: RecordingDevice::default(),
+        now: Instant::now(),
+    };
+    let create = standard_plugins()
+        .constructor("libpv3d_position2d")
+        .unwrap();
+    let err = create(bad, &mut w2.ctx()).err().unwrap().to_string();
+    assert!(err.contains("<mode>") && err.contains("warp"), "{err}");
+}
+
+#[test]
+fn a_dragged_target_shows_but_is_sent_only_on_release() {
+    let (mut w, mut plugin) = world();
+    odometry(&w.device, 0.0, 0.0, 0.0);
+    plugin.update(&mut w.ctx());
+    plugin.on_event(&InputEvent::Activated(true), &mut w.ctx());
+    // The dragged target is drawn in cyan, a goal in amber.
+    let drawn_in = |w: &World, rgb: [u8; 3]| -> usize {
+        w.scene
+            .iter()
+            .filter(|(_, o)| o.name.ends_with("trail"))
+            .flat_map(|(_, o)| o.geometry.lines.iter())
+            .filter(|v| v.color.0 == [rgb[0], rgb[1], rgb[2], 255])
+            .count()
+    };
+    let (cyan, amber) = ([90, 220, 240], [250, 200, 60]);
+    plugin.on_event(
+        &InputEvent::TargetDragged(Vec3::new(1.0, 1.0, 0.0)),
+        &mut w.ctx(),
+    );
+    plugin.on_event(
+        &InputEvent::TargetDragged(Vec3::new(2.0, 0.0, 0.0)),
+        &mut w.ctx(),
+    );
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    assert_eq!(
+        drawn_in(&w, cyan),
+        4,
+        "the dragged target's cross, where it is now"
+    );
+    assert_eq!(drawn_in(&w, amber), 0);
+    assert!(
+        velocities(&w.device).is_empty(),
+        "nothing sent while dragging"
+    );
+    plugin.on_event(
+        &InputEvent::GroundClicked(Vec3::new(2.0, 0.0, 0.0)),
+        &mut w.ctx(),
+    );
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    let (speed, _) = *velocities(&w.device).last().unwrap();
+    assert!(speed > 0.4, "released: driving to the drop point");
+    assert_eq!(drawn_in(&w, cyan), 0, "only the goal is drawn now");
+    assert_eq!(drawn_in(&w, amber), 4);
+}
+
+#[test]
+fn go_to_and_follow_a_marker_that_is_re_created_every_scan() {
+    let (mut w, mut plugin) = world();
+    odometry(&w.device, 0.0, 0.0, 0.0);
+    plugin.update(&mut w.ctx());
+    let seen = marker(&mut w.scene, 7, 3.0, 0.0);
+    let target = ObjectRef::of(&w.scene, seen).unwrap();
+    let names: Vec<&str> = plugin.actions_on(&target).iter().map(|a| a.name).collect();
+    assert_eq!(names, ["Go to", "Follow"]);
+    let own = ObjectRef::of(&w.scene, plugin.node().unwrap()).unwrap();
+    assert!(
+        plugin.actions_on(&own).is_empty(),
+        "nothing to do with itself"
+    );
+
+    // Go to: drives to 0.8 m short of the marker, then stops there.
+    plugin.run_action("Go to", &target, &mut w.ctx());
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    assert!(velocities(&w.device).last().unwrap().0 > 0.4);
+    odometry(&w.device, 2.19, 0.0, 0.0);
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    assert_eq!(
+        *velocities(&w.device).last().unwrap(),
+        (0.0, 0.0),
+        "next to it"
+    );
+
+    // Follow: the marker is re-created elsewhere; the robot turns and heads for it.
+    plugin.run_action("Follow", &target, &mut w.ctx());
+    w.scene.remove(seen);
+    marker(&mut w.scene, 8, 2.5, -2.0);
+    marker(&mut w.scene, 7, 2.2, 3.0);
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    let (_, turn) = *velocities(&w.device).last().unwrap();
+    assert!(turn > 0.5, "turning left, towards marker 7 (not 8): {turn}");
+    // Near enough: it holds still, but keeps following.
+    odometry(&w.device, 2.2, 2.3, 1.57);
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    assert_eq!(*velocities(&w.device).last().unwrap(), (0.0, 0.0));
+    let held = velocities(&w.device).len();
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    assert_eq!(
+        velocities(&w.device).len(),
+        held,
+        "holding: no repeated commands"
+    );
+    // The person walks on; the robot goes after them, until stopped.
+    let walked = w.scene.iter().find(|(_, o)| o.has_tag("id:7")).unwrap().0;
+    w.scene.get_mut(walked).unwrap().transform =
+        glam::Affine3A::from_translation(Vec3::new(2.2, 5.0, 0.0));
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    assert!(velocities(&w.device).last().unwrap().0 > 0.3, "after them");
+    plugin.on_event(&InputEvent::StopAll, &mut w.ctx());
+    assert_eq!(*velocities(&w.device).last().unwrap(), (0.0, 0.0));
+    let stopped = velocities(&w.device).len();
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    assert_eq!(velocities(&w.device).len(), stopped, "stopped following");
+}
+
+#[test]
+fn go_to_point_is_a_service_with_a_popup() {
+    let (_w, plugin) = world();
+    let services = plugin.services();
+    let popup: Vec<&str> = services
+        .iter()
+        .filter(|s| s.popup)
+        .map(|s| s.name)
+        .collect();
+    assert_eq!(popup, ["Go to point…"]);
+    assert!(services.iter().any(|s| s.name == "Stop" && !s.popup));
 }

@@ -1,33 +1,40 @@
 //! `libpv3d_position2d`: a mobile base — its body at the pose it reports, a pose trail, a
-//! velocity readout, and tele-operation: velocity limits, a joystick, and a target clicked on
-//! the ground that the robot is steered to. Safe by default: zero velocity when the person lets
-//! go, when every robot is stopped (Space, focus lost) and when the connection drops.
+//! velocity readout, and tele-operation: velocity limits, a joystick, a target clicked or
+//! dragged over the ground, and actions on clicked objects ("Go to", "Follow"). In velocity
+//! mode the viewer steers with velocity commands; in position mode it sends Player way-points
+//! and the server drives. Safe by default: zero velocity when the person lets go, when every
+//! robot is stopped (Space, focus lost), when the connection drops and when it comes back.
 //!
 //! Parameters: `trailLength` (200 poses), `maxSpeed` (0.5 m/s), `maxTurn` (1.0 rad/s),
-//! `color` (#3c8cdc).
+//! `color` (#3c8cdc), `mode` (`velocity` or `position`; velocity), `followDistance` (0.8 m:
+//! how far short of an object "Go to" and "Follow" stop).
 
+mod actions;
 mod body;
+mod driving;
+mod goal;
 mod teleop;
+mod widgets;
 
 use std::collections::VecDeque;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use glam::{Affine3A, Quat, Vec2, Vec3};
-use player_proto::interfaces::common::Pose2d;
-use player_proto::interfaces::position2d::{self, Position2d, Position2dCmdVel};
+use player_proto::interfaces::position2d::{self, Position2d};
 use player_proto::message::Body;
 
 pub use body::body_geometry;
+pub use goal::{DriveMode, Goal, stand_off};
 pub use teleop::{ARRIVED, Limits, joystick_velocity, steer_towards, wrap_angle};
 
+use crate::action::{Action, ObjectRef};
 use crate::config::{ConfigValueError, PluginConfig};
 use crate::device::ReplyTicket;
 use crate::plugin::{AnchorKey, Anchors, Handled, InputEvent, Plugin, PluginContext, Service};
 use crate::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 
-/// How often velocity commands are repeated while driving.
-const COMMAND_PERIOD: Duration = Duration::from_millis(100);
 const DATA_STATE: u8 = 1;
+const GO_TO_POINT: &str = "Go to point…";
 
 pub struct Position2dPlugin {
     config: PluginConfig,
@@ -45,11 +52,22 @@ pub struct Position2dPlugin {
     trail_length: usize,
     limits: Limits,
     active: bool,
-    target: Option<Vec2>,
+    mode: DriveMode,
+    /// How far short of an object "Go to" and "Follow" stop, m.
+    follow_distance: f32,
+    goal: Option<Goal>,
+    /// A target being dragged over the ground, not sent yet.
+    dragging: Option<Vec2>,
     joystick: Option<Vec2>,
     /// Something other than zero was commanded and not yet cancelled.
     moving: bool,
     last_command: Option<Instant>,
+    /// The way-point last sent in position mode.
+    sent_waypoint: Option<Vec2>,
+    /// Whether the link was up at the last update (a zero velocity follows its return).
+    link_up: bool,
+    /// The point typed into the "Go to point…" popup.
+    typed_point: Vec2,
 }
 
 impl Position2dPlugin {
@@ -63,6 +81,16 @@ impl Position2dPlugin {
             max_speed: config.number("maxSpeed", 0.5, 0.0..=20.0)? as f32,
             max_turn: config.number("maxTurn", 1.0, 0.0..=20.0)? as f32,
         };
+        let mode = match config.param("mode") {
+            None => DriveMode::Velocity,
+            Some(p) => DriveMode::parse(&p.text).ok_or_else(|| ConfigValueError {
+                origin: p.origin.clone(),
+                library: config.library.clone(),
+                param: "mode".into(),
+                message: format!("expected velocity or position, found {:?}", p.text.trim()),
+            })?,
+        };
+        let follow_distance = config.number("followDistance", 0.8, 0.0..=50.0)? as f32;
         let size = Vec3::new(0.44, 0.38, 0.22);
         let mut object = Object3D::new(config.id.clone());
         object
@@ -100,10 +128,16 @@ impl Position2dPlugin {
             trail_length,
             limits,
             active: false,
-            target: None,
+            mode,
+            follow_distance,
+            goal: None,
+            dragging: None,
             joystick: None,
             moving: false,
             last_command: None,
+            sent_waypoint: None,
+            link_up: ctx.device.is_some_and(|d| d.link_state().is_connected()),
+            typed_point: Vec2::ZERO,
         }))
     }
 
@@ -133,19 +167,23 @@ impl Position2dPlugin {
         for pair in points.windows(2) {
             node.geometry.line(pair[0], pair[1], faded);
         }
-        if let Some(t) = self.target {
-            let at = Vec3::new(t.x, t.y, 0.02);
-            let marker = Rgba::rgb(250, 200, 60);
+        let here = Vec3::new(self.pose.0, self.pose.1, 0.02);
+        let mut cross = |t: Vec2, marker: Rgba| {
+            let at = t.extend(0.02);
             let r = 0.15;
             node.geometry
                 .line(at - Vec3::X * r, at + Vec3::X * r, marker);
             node.geometry
                 .line(at - Vec3::Y * r, at + Vec3::Y * r, marker);
-            node.geometry.line(
-                Vec3::new(self.pose.0, self.pose.1, 0.02),
-                at,
-                marker.with_alpha(120),
-            );
+            node.geometry.line(here, at, marker.with_alpha(120));
+        };
+        match &self.goal {
+            Some(Goal::Point(t)) => cross(*t, Rgba::rgb(250, 200, 60)),
+            Some(Goal::Follow { last_seen, .. }) => cross(*last_seen, Rgba::rgb(240, 110, 200)),
+            None => {}
+        }
+        if let Some(t) = self.dragging {
+            cross(t, Rgba::rgb(90, 220, 240));
         }
     }
 
@@ -206,93 +244,6 @@ impl Position2dPlugin {
         self.redraw_trail(ctx.scene);
         true
     }
-
-    /// Sends a velocity (throttled while driving; a stop is always sent at once).
-    fn drive(&mut self, ctx: &PluginContext<'_>, speed: f32, turn: f32) {
-        let Some(device) = ctx.device else { return };
-        let stop = speed == 0.0 && turn == 0.0;
-        if !stop
-            && self
-                .last_command
-                .is_some_and(|t| ctx.now.saturating_duration_since(t) < COMMAND_PERIOD)
-        {
-            return;
-        }
-        let cmd = Position2dCmdVel {
-            vel: Pose2d::new(f64::from(speed), 0.0, f64::from(turn)),
-            state: 1,
-        };
-        device.command(Body::Position2d(Position2d::Velocity(cmd)));
-        self.last_command = Some(ctx.now);
-        self.moving = !stop;
-    }
-
-    fn stop(&mut self, ctx: &mut PluginContext<'_>) {
-        let had_target = self.target.take().is_some();
-        self.joystick = None;
-        if self.moving || had_target {
-            self.drive(ctx, 0.0, 0.0);
-        }
-        self.redraw_trail(ctx.scene);
-    }
-
-    fn teleoperate(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let connected = ctx.device.is_some_and(|d| d.link_state().is_connected());
-        if !connected {
-            // The connection dropped: forget what we were doing, so nothing resumes by itself.
-            let changed = self.target.is_some() || self.joystick.is_some();
-            self.target = None;
-            self.joystick = None;
-            self.moving = false;
-            return changed;
-        }
-        if let Some(deflection) = self.joystick {
-            let (speed, turn) = joystick_velocity(deflection, self.limits);
-            self.drive(ctx, speed, turn);
-            if deflection == Vec2::ZERO {
-                // The person let go: that zero was the last command.
-                self.joystick = None;
-            }
-            return false;
-        }
-        if let Some(target) = self.target {
-            match steer_towards(self.pose, target, self.limits) {
-                Some((speed, turn)) => self.drive(ctx, speed, turn),
-                None => {
-                    self.stop(ctx);
-                    return true;
-                }
-            }
-        }
-        false
-    }
-
-    fn joystick_ui(&mut self, ui: &mut egui::Ui) {
-        let size = egui::vec2(110.0, 110.0);
-        let (rect, response) = ui.allocate_exact_size(size, egui::Sense::drag());
-        let painter = ui.painter_at(rect);
-        painter.rect_stroke(
-            rect,
-            6.0,
-            egui::Stroke::new(1.0, egui::Color32::GRAY),
-            egui::StrokeKind::Inside,
-        );
-        let centre = rect.center();
-        let mut knob = centre;
-        if response.dragged()
-            && let Some(pointer) = response.interact_pointer_pos()
-        {
-            let d = (pointer - centre) / (size.x / 2.0);
-            let deflection = Vec2::new(d.x, -d.y).clamp_length_max(1.0);
-            knob = centre + egui::vec2(deflection.x, -deflection.y) * size.x / 2.0;
-            self.joystick = Some(deflection);
-            self.target = None;
-        } else if self.joystick.is_some() {
-            // Let go: stop at once.
-            self.joystick = Some(Vec2::ZERO);
-        }
-        painter.circle_filled(knob, 9.0, egui::Color32::from_rgb(90, 150, 230));
-    }
 }
 
 impl Plugin for Position2dPlugin {
@@ -301,6 +252,8 @@ impl Plugin for Position2dPlugin {
         config.set("trailLength", self.trail_length.to_string());
         config.set("maxSpeed", format!("{}", self.limits.max_speed));
         config.set("maxTurn", format!("{}", self.limits.max_turn));
+        config.set("mode", self.mode.name());
+        config.set("followDistance", format!("{}", self.follow_distance));
         config
     }
 
@@ -336,23 +289,53 @@ impl Plugin for Position2dPlugin {
         }
         ui.add(egui::Slider::new(&mut self.limits.max_speed, 0.0..=2.0).text("max m/s"));
         ui.add(egui::Slider::new(&mut self.limits.max_turn, 0.0..=3.0).text("max rad/s"));
+        ui.add(egui::Slider::new(&mut self.follow_distance, 0.0..=3.0).text("follow m"));
+        self.mode_ui(ui);
         self.joystick_ui(ui);
         if self.active {
-            ui.small("click the ground to send the robot there");
+            ui.small(
+                "click or Ctrl+drag the ground to send the robot there; click a marker for actions",
+            );
+        }
+    }
+
+    fn active_ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
+        ui.label(self.title());
+        if let Some(goal) = &self.goal {
+            ui.small(match goal {
+                Goal::Point(p) => format!("to ({:.2}, {:.2})", p.x, p.y),
+                Goal::Follow { target, .. } => format!("following {}", target.name),
+            });
+        }
+        self.joystick_ui(ui);
+        if ui.button("Stop").clicked() {
+            self.stop(ctx);
         }
     }
 
     fn services(&self) -> Vec<Service> {
         vec![
-            Service {
-                name: "Stop",
-                description: "zero velocity and forget the target",
-            },
-            Service {
-                name: "Clear trail",
-                description: "forget the poses drawn behind the robot",
-            },
+            Service::run("Stop", "zero velocity and forget the target"),
+            Service::popup(GO_TO_POINT, "type a point to send the robot to"),
+            Service::run("Clear trail", "forget the poses drawn behind the robot"),
         ]
+    }
+
+    fn service_popup(
+        &mut self,
+        name: &str,
+        ui: &mut egui::Ui,
+        ctx: &mut PluginContext<'_>,
+    ) -> bool {
+        name == GO_TO_POINT && self.go_to_point_popup(ui, ctx)
+    }
+
+    fn actions_on(&self, target: &ObjectRef) -> Vec<Action> {
+        self.offered_actions(target)
+    }
+
+    fn run_action(&mut self, action: &str, target: &ObjectRef, ctx: &mut PluginContext<'_>) {
+        self.act(action, target, ctx);
     }
 
     fn run_service(&mut self, name: &str, ctx: &mut PluginContext<'_>) {
@@ -374,10 +357,18 @@ impl Plugin for Position2dPlugin {
                 Handled::Yes
             }
             InputEvent::GroundClicked(point) if self.active => {
-                self.target = Some(Vec2::new(point.x, point.y));
-                self.joystick = None;
+                self.set_goal(Goal::Point(point.truncate()), ctx);
+                Handled::Yes
+            }
+            InputEvent::TargetDragged(point) if self.active => {
+                self.dragging = Some(point.truncate());
                 self.redraw_trail(ctx.scene);
                 Handled::Yes
+            }
+            InputEvent::TargetDragCancelled => {
+                self.dragging = None;
+                self.redraw_trail(ctx.scene);
+                Handled::No
             }
             InputEvent::StopAll => {
                 self.stop(ctx);

@@ -1,0 +1,74 @@
+//! The robot's egui controls: the joystick, the drive-mode switch and the "Go to point…" popup.
+
+use glam::Vec2;
+
+use super::Position2dPlugin;
+use super::goal::{DriveMode, Goal};
+use crate::plugin::PluginContext;
+
+impl Position2dPlugin {
+    /// A square pad: drag the knob to drive (velocity commands), let go to stop.
+    pub(super) fn joystick_ui(&mut self, ui: &mut egui::Ui) {
+        let size = egui::vec2(110.0, 110.0);
+        let (rect, response) = ui.allocate_exact_size(size, egui::Sense::drag());
+        let painter = ui.painter_at(rect);
+        painter.rect_stroke(
+            rect,
+            6.0,
+            egui::Stroke::new(1.0, egui::Color32::GRAY),
+            egui::StrokeKind::Inside,
+        );
+        let centre = rect.center();
+        let mut knob = centre;
+        if response.dragged()
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            let d = (pointer - centre) / (size.x / 2.0);
+            let deflection = Vec2::new(d.x, -d.y).clamp_length_max(1.0);
+            knob = centre + egui::vec2(deflection.x, -deflection.y) * size.x / 2.0;
+            self.joystick = Some(deflection);
+            self.goal = None;
+            self.dragging = None;
+        } else if self.joystick.is_some() {
+            // Let go: stop at once.
+            self.joystick = Some(Vec2::ZERO);
+        }
+        painter.circle_filled(knob, 9.0, egui::Color32::from_rgb(90, 150, 230));
+    }
+
+    /// Velocity (the viewer steers) or position (the server drives to way-points).
+    pub(super) fn mode_ui(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            ui.label("drive by");
+            for mode in [DriveMode::Velocity, DriveMode::Position] {
+                ui.selectable_value(&mut self.mode, mode, mode.name());
+            }
+        });
+    }
+
+    /// The "Go to point…" popup: type a point, go. Returns whether it stays open.
+    pub(super) fn go_to_point_popup(
+        &mut self,
+        ui: &mut egui::Ui,
+        ctx: &mut PluginContext<'_>,
+    ) -> bool {
+        ui.horizontal(|ui| {
+            ui.label("x");
+            ui.add(egui::DragValue::new(&mut self.typed_point.x).speed(0.05));
+            ui.label("y");
+            ui.add(egui::DragValue::new(&mut self.typed_point.y).speed(0.05));
+            ui.label("m");
+        });
+        let mut open = true;
+        ui.horizontal(|ui| {
+            if ui.button("Go").clicked() {
+                self.set_goal(Goal::Point(self.typed_point), ctx);
+                open = false;
+            }
+            if ui.button("Cancel").clicked() {
+                open = false;
+            }
+        });
+        open
+    }
+}
