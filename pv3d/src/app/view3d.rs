@@ -1,5 +1,7 @@
 //! The 3D view widget: camera input (pan, orbit, zoom, switch projection), the scene drawn by
-//! our glow renderer through an egui paint callback, and labels drawn as text on top.
+//! our glow renderer through an egui paint callback, and labels drawn as text on top. A primary
+//! drag that the viewer says starts a target (on the selected robot, or with Ctrl held) drags a
+//! way-point over the ground instead of moving the camera.
 
 use std::sync::{Arc, Mutex};
 
@@ -32,7 +34,20 @@ pub struct ViewInput {
     pub hover_ground: Option<Vec3>,
     /// Whether any camera movement happened.
     pub camera_moved: bool,
+    /// A target being dragged over the ground this frame.
+    pub target_drag: Option<TargetDrag>,
 }
+
+/// A way-point dragged over the ground: the ground point under the pointer (`None` when the
+/// pointer is off the ground, e.g. above the horizon).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum TargetDrag {
+    Moved(Option<Vec3>),
+    Released(Option<Vec3>),
+}
+
+/// Decides, from the ray under the press, whether a primary drag moves a target.
+pub type StartsTargetDrag<'a> = &'a dyn Fn(Vec3, Vec3) -> bool;
 
 /// The 3D world view of one window.
 #[derive(Default)]
@@ -44,11 +59,24 @@ pub struct View3d {
     pub segments: usize,
     /// Whether the view was fitted to the scene yet (once, when content first appears).
     framed: bool,
+    /// The primary drag under way moves a target, not the camera.
+    dragging_target: bool,
 }
 
 impl View3d {
     /// Shows the view in all of `ui`'s remaining space.
     pub fn show(&mut self, ui: &mut Ui, scene: &Scene) -> ViewInput {
+        self.show_with_targets(ui, scene, None)
+    }
+
+    /// [`View3d::show`], where a primary drag for which `starts_target_drag` holds (or that
+    /// starts with Ctrl held) drags a target over the ground instead of moving the camera.
+    pub fn show_with_targets(
+        &mut self,
+        ui: &mut Ui,
+        scene: &Scene,
+        starts_target_drag: Option<StartsTargetDrag<'_>>,
+    ) -> ViewInput {
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         let mut input = ViewInput::default();
         let size = Vec2::new(rect.width(), rect.height());
@@ -60,9 +88,33 @@ impl View3d {
             )
         };
 
+        let ray_at = |camera: &OrbitCamera, p: egui::Pos2| {
+            let (o, d) = camera.ray(to_ndc(p), aspect);
+            (o, d, camera.ground_point(to_ndc(p), aspect, 0.0))
+        };
+        // A target drag: decided where the press began, then follows the pointer.
+        if response.drag_started_by(egui::PointerButton::Primary)
+            && let Some(starts) = starts_target_drag
+            && let Some(press) = ui.input(|i| i.pointer.press_origin())
+        {
+            let (o, d, _) = ray_at(&self.camera, press);
+            self.dragging_target = ui.input(|i| i.modifiers.ctrl) || starts(o, d);
+        }
+        if self.dragging_target {
+            let at = response
+                .interact_pointer_pos()
+                .or_else(|| ui.input(|i| i.pointer.latest_pos()))
+                .and_then(|p| ray_at(&self.camera, p).2);
+            if response.drag_stopped() || !response.dragged() {
+                self.dragging_target = false;
+                input.target_drag = Some(TargetDrag::Released(at));
+            } else {
+                input.target_drag = Some(TargetDrag::Moved(at));
+            }
+        }
         // Camera: drag with the primary button pans (top) or orbits (perspective), the
         // secondary button always pans; the wheel zooms.
-        if response.dragged() {
+        if response.dragged() && input.target_drag.is_none() {
             let delta = response.drag_delta();
             let orbit = self.camera.projection == Projection::Perspective
                 && response.dragged_by(egui::PointerButton::Primary)
@@ -84,15 +136,15 @@ impl View3d {
         if let Some(pointer) = response.hover_pos() {
             input.hover_ground = self.camera.ground_point(to_ndc(pointer), aspect, 0.0);
         }
-        let ray_at = |p: egui::Pos2| {
-            let (o, d) = self.camera.ray(to_ndc(p), aspect);
-            (o, d, self.camera.ground_point(to_ndc(p), aspect, 0.0))
-        };
         if response.clicked() {
-            input.clicked = response.interact_pointer_pos().map(ray_at);
+            input.clicked = response
+                .interact_pointer_pos()
+                .map(|p| ray_at(&self.camera, p));
         }
         if response.secondary_clicked() {
-            input.secondary_clicked = response.interact_pointer_pos().map(ray_at);
+            input.secondary_clicked = response
+                .interact_pointer_pos()
+                .map(|p| ray_at(&self.camera, p));
         }
 
         self.rebuild_batch(scene);

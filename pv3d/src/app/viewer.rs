@@ -1,6 +1,12 @@
 //! The contents of a world window: the plugins made from the composition, the scene they fill,
 //! the item tree, the 3D view, and the chain of responsibility that input flows along
 //! (active event handler first, then the clicked object, then the world).
+//!
+//! Mouse: click a robot to make it the active handler; click the ground (or Ctrl+drag, or drag
+//! from the robot, and let go) to send it there; click a tagged object (a fiducial marker) for
+//! the robot's popup of actions on it; right-click any object, robots included, for the same.
+
+mod popups;
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -13,7 +19,7 @@ use pv3d_plugins::scene::{NodeId, Scene};
 
 use super::composer::Composer;
 use super::plugin_config::{config_from_instance, write_back};
-use super::view3d::View3d;
+use super::view3d::{TargetDrag, View3d};
 use crate::composition::PluginInstance;
 
 /// A plugin and what it was made from.
@@ -48,6 +54,10 @@ pub struct Viewer {
     /// Where "Save" writes the composition with the plugins' current state.
     pub save_target: Option<SaveTarget>,
     save_message: Option<String>,
+    /// The popup open over the view (actions on an object, a service's popup).
+    popup: Option<popups::Popup>,
+    /// Where the pointer was at the last click in the view: popups open there.
+    popup_at: egui::Pos2,
 }
 
 /// The composition a session came from and the file its state is saved to.
@@ -78,6 +88,8 @@ impl Viewer {
             status: Default::default(),
             save_target: None,
             save_message: None,
+            popup: None,
+            popup_at: egui::pos2(300.0, 200.0),
         };
         viewer.add_plugins(instances, devices);
         viewer
@@ -219,6 +231,8 @@ impl Viewer {
 
     /// A click in the 3D view, down the chain: active handler, clicked object, world.
     pub fn click(&mut self, picked: Option<NodeId>, ground: Option<glam::Vec3>) {
+        // A click elsewhere in the view closes the popup (clicks on it never reach the view).
+        self.popup = None;
         let owner = picked.and_then(|n| self.owner_of(n));
         // Clicking another robot selects it.
         if let Some(o) = owner
@@ -226,6 +240,12 @@ impl Viewer {
             && self.slots[o].plugin.can_be_active()
         {
             self.set_active(Some(o));
+            return;
+        }
+        // The active handler's answer to a tagged object: a popup of its actions on it.
+        if let Some(node) = picked
+            && self.offer_actions(node)
+        {
             return;
         }
         let event = match (picked, ground) {
@@ -249,6 +269,50 @@ impl Viewer {
         if picked.is_none() {
             self.set_active(None);
         }
+    }
+
+    /// A secondary click: the active handler's actions on any object, robots included (the
+    /// primary click on a robot selects it instead).
+    pub fn secondary_click(&mut self, picked: Option<NodeId>) {
+        self.popup = None;
+        if let Some(node) = picked {
+            self.offer_actions(node);
+        }
+    }
+
+    /// The active handler's target dragged to `point` (shown, not sent yet).
+    pub fn drag_target(&mut self, point: glam::Vec3) {
+        if let Some(active) = self.active {
+            self.send(active, &InputEvent::TargetDragged(point));
+            self.dirty = true;
+        }
+    }
+
+    /// The dragged target let go at `point` (sent as a ground click), or off the ground
+    /// (forgotten).
+    pub fn release_target(&mut self, point: Option<glam::Vec3>) {
+        let Some(active) = self.active else { return };
+        match point {
+            Some(p) => self.send(active, &InputEvent::GroundClicked(p)),
+            None => self.send(active, &InputEvent::TargetDragCancelled),
+        };
+        self.dirty = true;
+    }
+
+    /// Whether a drag pressed on this ray starts a target drag: it starts on the active robot.
+    fn starts_on_active(&self, origin: glam::Vec3, dir: glam::Vec3) -> bool {
+        let picked = self.scene.pick(origin, dir).map(|(n, _)| n);
+        self.active.is_some() && picked.and_then(|n| self.owner_of(n)) == self.active
+    }
+
+    /// The title of each plugin, in item-tree order (the index `use_service` takes).
+    pub fn titles(&self) -> Vec<String> {
+        self.slots.iter().map(|s| s.plugin.title()).collect()
+    }
+
+    /// The active event handler's title, if one is active.
+    pub fn active_title(&self) -> Option<String> {
+        self.active.map(|a| self.slots[a].plugin.title())
     }
 
     /// Selects the next robot that can be driven (Tab).
@@ -287,15 +351,39 @@ impl Viewer {
         egui::CentralPanel::default()
             .frame(egui::Frame::NONE)
             .show(ui, |ui| {
-                let input = self.view.show(ui, &self.scene);
+                let view_rect = ui.max_rect();
+                let mut view = std::mem::take(&mut self.view);
+                let starts = |o, d| self.starts_on_active(o, d);
+                let drag_rule: Option<super::view3d::StartsTargetDrag<'_>> = self
+                    .active
+                    .map(|_| &starts as super::view3d::StartsTargetDrag<'_>);
+                let input = view.show_with_targets(ui, &self.scene, drag_rule);
+                self.view = view;
                 if input.camera_moved {
                     self.dirty = true;
+                }
+                if let Some(pointer) = ui.input(|i| i.pointer.interact_pos())
+                    && (input.clicked.is_some() || input.secondary_clicked.is_some())
+                {
+                    self.popup_at = pointer + egui::vec2(12.0, 12.0);
                 }
                 if let Some((origin, dir, ground)) = input.clicked {
                     let picked = self.scene.pick(origin, dir).map(|(n, _)| n);
                     self.click(picked, ground);
                 }
+                if let Some((origin, dir, _)) = input.secondary_clicked {
+                    let picked = self.scene.pick(origin, dir).map(|(n, _)| n);
+                    self.secondary_click(picked);
+                }
+                match input.target_drag {
+                    Some(TargetDrag::Moved(Some(p))) => self.drag_target(p),
+                    Some(TargetDrag::Released(p)) => self.release_target(p),
+                    _ => {}
+                }
+                self.active_controls(ui.ctx(), view_rect);
             });
+        let at = self.popup_at;
+        self.show_popup(ui.ctx(), at);
         // Plugins' own windows (a camera's image), through egui.
         let (egui_ctx, now) = (ui.ctx().clone(), Instant::now());
         for slot in &mut self.slots {
@@ -342,6 +430,7 @@ impl Viewer {
         }
         let now = Instant::now();
         let mut activate = None;
+        let mut used = None;
         for (i, slot) in self.slots.iter_mut().enumerate() {
             let active = self.active == Some(i);
             let mut title = slot.plugin.title();
@@ -364,7 +453,7 @@ impl Viewer {
                             .on_hover_text(service.description)
                             .clicked()
                         {
-                            slot.plugin.run_service(service.name, &mut ctx);
+                            used = Some((i, service.name));
                         }
                     }
                     if slot.plugin.can_be_active() && !active && ui.button("Select").clicked() {
@@ -374,6 +463,12 @@ impl Viewer {
         }
         if let Some(i) = activate {
             self.set_active(Some(i));
+        }
+        if let Some((i, name)) = used {
+            self.popup_at = ui
+                .input(|i| i.pointer.interact_pos())
+                .unwrap_or(self.popup_at);
+            self.use_service(i, name);
         }
         if let Some(target) = &self.save_target {
             ui.separator();
@@ -395,7 +490,28 @@ impl Viewer {
             }
         }
         ui.separator();
-        ui.small("drag: pan/orbit · wheel: zoom · T: top/perspective · Tab: next robot · Space: stop all");
+        ui.small(
+            "drag: pan/orbit · wheel: zoom · T: top/perspective · Tab: next robot · Space: stop all \
+             · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions",
+        );
+    }
+
+    /// The active handler's controls (a robot's joystick), over the view's bottom right.
+    fn active_controls(&mut self, egui_ctx: &egui::Context, view_rect: egui::Rect) {
+        let Some(active) = self.active else { return };
+        let slot = &mut self.slots[active];
+        let mut ctx = PluginContext {
+            scene: &mut self.scene,
+            device: slot.device.as_deref(),
+            anchors: &mut self.anchors,
+            now: Instant::now(),
+        };
+        egui::Area::new(egui::Id::unique("pv3d-active-controls"))
+            .pivot(egui::Align2::RIGHT_BOTTOM)
+            .fixed_pos(view_rect.right_bottom() - egui::vec2(10.0, 10.0))
+            .show(egui_ctx, |ui| {
+                egui::Frame::popup(ui.style()).show(ui, |ui| slot.plugin.active_ui(ui, &mut ctx));
+            });
     }
 
     /// Writes the composition, with every plugin's current state, to the save target.
