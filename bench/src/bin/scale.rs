@@ -59,6 +59,8 @@ fn main() -> anyhow::Result<()> {
         args.seconds > 0.0 && args.warmup >= 0.0,
         "--seconds must be positive and --warmup not negative"
     );
+    let window = Duration::try_from_secs_f64(args.seconds).context("--seconds")?;
+    let warmup = Duration::try_from_secs_f64(args.warmup).context("--warmup")?;
     let mut results = Vec::new();
     for &robots in &args.robots {
         let config = PointConfig {
@@ -68,8 +70,8 @@ fn main() -> anyhow::Result<()> {
                 rate_hz,
             },
             designs: args.designs.clone(),
-            warmup: Duration::from_secs_f64(args.warmup),
-            window: Duration::from_secs_f64(args.seconds),
+            warmup,
+            window,
             drain: Duration::from_millis(500),
             idle_sleep: Duration::from_micros(args.idle_sleep_us),
         };
