@@ -1,6 +1,8 @@
-//! A simulated world as a Stage world file describes it: the floorplan bitmap, robots
-//! (`position` models) with their rangers, fiducial finders and cameras, and box obstacles.
-//! What the simulator does not model is reported once as "ignored: <what> at file:line".
+//! A simulated world as a Stage world file describes it: the floorplan (a bitmap or Stage
+//! `block`s, drawn into one occupancy grid), robots (`position` models) with their rangers,
+//! fiducial finders and cameras mounted at any depth, and obstacles (boxes, or the blocks drawn
+//! in them). What the simulator does not model is reported once as "ignored: <what> at
+//! file:line".
 
 mod bitmap;
 mod blocks;
