@@ -421,3 +421,27 @@ fn boxes_and_robots_drawn_with_blocks_are_solid_where_their_blocks_are() {
     let y = sim.robots[0].pose.y;
     assert!(y < -1.6 && y > -1.7, "{y}");
 }
+
+#[test]
+fn sensors_defined_from_sensor_are_read_as_stage_pioneer_inc_writes_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let world = write(
+        dir.path(),
+        "sonar.world",
+        "define transducer sensor ( range [ 0 3 ] fov 15 samples 1 )\n\
+         define nose transducer ( pose [ 0.2 0 0 0 ] )\n\
+         define ring ranger ( transducer( pose [ 0 0.1 0 90 ] ) nose( view [ 1 2 30 ] ) )\n\
+         position( name \"r\" ring( ) )\n",
+    );
+    let world = World::load(&world).unwrap();
+    let sensors = &world.robots[0].rangers[0].sensors;
+    assert_eq!(sensors.len(), 2);
+    assert!(sensors.iter().all(|s| s.max_range == 3.0 && s.samples == 1));
+    assert!((sensors[0].pose.a - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+    assert!((sensors[1].pose.x - 0.2).abs() < 1e-12, "the define's pose");
+    let notes = world.ignored.join("\n");
+    assert!(
+        notes.contains("ignored: sensor property view at") && notes.contains("sonar.world:3"),
+        "{notes}"
+    );
+}

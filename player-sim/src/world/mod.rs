@@ -270,12 +270,33 @@ impl World {
             }
         }
         // Sensors are read by the ranger and block() shapes by every model; nothing else is.
-        for part in model
-            .parts
-            .iter()
-            .filter(|p| !(model.kind == "ranger" && p.kind == "sensor") && p.kind != "block")
-        {
-            self.ignore(&format!("{}() in {}", part.kind, model.declared), &part.pos);
+        for part in &model.parts {
+            let read: &[&str] = match part.kind.as_str() {
+                // A sensor's colour only tints its beams in Stage's GUI.
+                "sensor" if model.kind == "ranger" => &[
+                    "pose",
+                    "size",
+                    "range",
+                    "fov",
+                    "samples",
+                    "color",
+                    "color_rgba",
+                ],
+                "block" => &["points", "z"],
+                _ => {
+                    self.ignore(&format!("{}() in {}", part.kind, model.declared), &part.pos);
+                    continue;
+                }
+            };
+            for p in &part.properties {
+                let indexed_point = part.kind == "block" && p.name.starts_with("point[");
+                if !read.contains(&p.name.as_str()) && !indexed_point {
+                    self.ignore(&format!("{} property {}", part.kind, p.name), &p.pos);
+                }
+            }
+            for inner in &part.children {
+                self.ignore(&format!("{}() in {}", inner.kind, part.kind), &inner.pos);
+            }
         }
     }
 

@@ -20,6 +20,10 @@ pub const BUILTIN: &[&str] = &[
     "blinkenlight",
 ];
 
+/// Parts of a model that are not models themselves; `define`s may build on them too (Stage's
+/// own `pioneer.inc` defines its sonar transducers with `define p2dxsonar sensor`).
+pub const PARTS: &[&str] = &["sensor", "block"];
+
 /// A model with its type expanded: `kind` is the builtin type at the root of its `define`s.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Model {
@@ -102,7 +106,41 @@ impl Types {
     }
 
     pub fn is_model_type(&self, kind: &str) -> bool {
-        BUILTIN.contains(&kind) || self.defines.contains_key(kind)
+        BUILTIN.contains(&kind)
+            || (self.defines.contains_key(kind) && self.part_root(kind).is_none())
+    }
+
+    /// The part (`sensor`, `block`) a `define` builds on, if it builds on one.
+    fn part_root(&self, kind: &str) -> Option<&'static str> {
+        PARTS
+            .iter()
+            .find(|part| self.derives_from(kind, part))
+            .copied()
+    }
+
+    /// A part written with a `define`d name, as the part it builds on: the defines'
+    /// properties (the base's first) then the instance's, later ones winning.
+    fn expand_part(&self, block: &Block, root: &'static str) -> Block {
+        let mut chain = Vec::new();
+        let mut at = block.kind.as_str();
+        while let Some((base, body)) = self.defines.get(at).filter(|_| at != root) {
+            chain.push(body);
+            at = base;
+            if chain.len() > 32 {
+                break;
+            }
+        }
+        let mut part = Block {
+            kind: root.to_string(),
+            properties: Vec::new(),
+            children: Vec::new(),
+            pos: block.pos.clone(),
+        };
+        for body in chain.iter().rev().copied().chain([block]) {
+            part.properties.extend(body.properties.iter().cloned());
+            part.children.extend(body.children.iter().cloned());
+        }
+        part
     }
 
     /// Is `kind` `ancestor`, or `define`d from it at any depth?
@@ -166,7 +204,9 @@ impl Types {
     fn overlay(&self, model: &mut Model, block: &Block) -> Result<(), WorldFileError> {
         model.properties.extend(block.properties.iter().cloned());
         for child in &block.children {
-            if self.is_model_type(&child.kind) {
+            if let Some(root) = self.part_root(&child.kind) {
+                model.parts.push(self.expand_part(child, root));
+            } else if self.is_model_type(&child.kind) {
                 model.children.push(self.instantiate(child)?);
             } else {
                 model.parts.push(child.clone());
