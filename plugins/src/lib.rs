@@ -23,6 +23,7 @@ pub mod laser;
 pub mod parent_link;
 pub mod position2d;
 pub mod ranger;
+pub mod skin;
 pub mod sonar;
 
 /// Every plugin built into pv3d, by library name.

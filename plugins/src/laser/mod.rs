@@ -3,7 +3,9 @@
 //! Parameters (all optional): `<parentNode interface="position2d" index="0"/>` — the device
 //! whose scene node the laser hangs below (same server); `drawPoints` (1), `drawLines` (0),
 //! `fillLaserCspace` (0), `drawLaserCspace` (0) — the free-space polygon filled and outlined;
-//! `color` (#ff5a3c). The laser's pose on the robot comes from its geometry request.
+//! `color` (#ff5a3c); `skinFile` — an OBJ model of the scanner drawn at its pose, fitted to
+//! the size its geometry reports (see [`crate::skin`]). The laser's pose on the robot comes
+//! from its geometry request.
 
 mod scan_geometry;
 
@@ -19,7 +21,11 @@ use crate::config::{ConfigValueError, PluginConfig};
 use crate::device::{ReplyTicket, Sample};
 use crate::parent_link::ParentLink;
 use crate::plugin::{Anchors, Plugin, PluginContext};
-use crate::scene::{NodeId, Object3D, Scene};
+use crate::scene::{NodeId, Object3D, Rgba, Scene};
+use crate::skin::{Skin, fit_into};
+
+/// The scanner's size until its geometry says otherwise (a SICK LMS200's), m.
+const DEFAULT_SIZE: Vec3 = Vec3::new(0.156, 0.155, 0.19);
 
 /// Subtype of `PLAYER_LASER_DATA_SCAN`.
 const DATA_SCAN: u8 = 1;
@@ -33,6 +39,9 @@ pub struct LaserPlugin {
     last_seq: Option<u64>,
     /// Readings in the newest scan, and the nearest return.
     summary: Option<(usize, Option<f32>, Instant)>,
+    skin: Skin,
+    /// The skin's node, below the scan's (the scan node's geometry is redrawn every scan).
+    skin_node: Option<NodeId>,
 }
 
 impl LaserPlugin {
@@ -56,10 +65,16 @@ impl LaserPlugin {
         let mut object = Object3D::new(name);
         object.tags.push("laser".into());
         let node = ctx.scene.add(object);
+        let skin = Skin::from_config(&config);
+        let skin_node = skin.mesh.as_ref().map(|_| {
+            let mut body = Object3D::new(format!("{} skin", config.id));
+            body.parent = Some(node);
+            ctx.scene.add(body)
+        });
         let geometry_reply = ctx
             .device
             .map(|d| d.request(laser::REQ_GET_GEOM, Body::Empty));
-        Ok(Box::new(LaserPlugin {
+        let plugin = Box::new(LaserPlugin {
             config,
             style,
             node,
@@ -67,7 +82,23 @@ impl LaserPlugin {
             geometry_reply,
             last_seq: None,
             summary: None,
-        }))
+            skin,
+            skin_node,
+        });
+        plugin.draw_skin(ctx, DEFAULT_SIZE);
+        Ok(plugin)
+    }
+
+    /// Draws the skin, if worn, centred on the scanner's origin at `size`.
+    fn draw_skin(&self, ctx: &mut PluginContext<'_>, size: Vec3) {
+        let (Some(mesh), Some(node)) = (&self.skin.mesh, self.skin_node) else {
+            return;
+        };
+        if let Some(body) = ctx.scene.get_mut(node) {
+            body.geometry.clear();
+            fit_into(&mut body.geometry, mesh, size, Rgba::rgb(70, 80, 110));
+            body.transform = Affine3A::from_translation(Vec3::new(0.0, 0.0, -size.z / 2.0));
+        }
     }
 
     fn place_from_geometry(&mut self, ctx: &mut PluginContext<'_>) -> bool {
@@ -85,6 +116,10 @@ impl LaserPlugin {
                         Quat::from_rotation_z(g.pose.pyaw as f32),
                         Vec3::new(g.pose.px as f32, g.pose.py as f32, g.pose.pz as f32),
                     );
+                }
+                let size = Vec3::new(g.size.sl as f32, g.size.sw as f32, g.size.sh as f32);
+                if size.min_element() > 0.0 && size.is_finite() {
+                    self.draw_skin(ctx, size);
                 }
                 true
             }
@@ -160,6 +195,7 @@ impl Plugin for LaserPlugin {
                 ui.label("no scan yet");
             }
         }
+        self.skin.ui(ui);
         let before = self.style;
         ui.checkbox(&mut self.style.points, "points");
         ui.checkbox(&mut self.style.lines, "lines");

@@ -1,21 +1,36 @@
-//! A robot's body: a box of its size, a nose showing where it faces, its name, and a ring
-//! around it while it is the active (selected) robot.
+//! A robot's body: a box of its size (or its OBJ skin fitted into that box), a nose showing
+//! where it faces, its name, and a ring around it while it is the active (selected) robot.
 
 use glam::Vec3;
 
 use crate::scene::{Geometry, Rgba};
+use crate::skin::{SkinMesh, fit_into};
 
-/// Fills `g` (cleared first) with a body of `size` (length x, width y, height z).
-pub fn body_geometry(g: &mut Geometry, size: Vec3, color: Rgba, active: bool, name: &str) {
+/// Fills `g` (cleared first) with a body of `size` (length x, width y, height z): the skin
+/// when there is one, else a box.
+pub fn body_geometry(
+    g: &mut Geometry,
+    size: Vec3,
+    color: Rgba,
+    active: bool,
+    name: &str,
+    skin: Option<&SkinMesh>,
+) {
     g.clear();
-    g.cuboid(Vec3::new(0.0, 0.0, size.z / 2.0), size, color);
-    // The nose: a bright triangle on top, pointing forward (+x).
+    match skin {
+        Some(mesh) => fit_into(g, mesh, size, color),
+        None => g.cuboid(Vec3::new(0.0, 0.0, size.z / 2.0), size, color),
+    }
+    // The nose: a bright triangle on top, pointing forward (+x); a small one at the front edge
+    // over a skin, which shows its own shape.
     let top = size.z + 0.005;
     let (l, w) = (size.x / 2.0, size.y / 2.0);
+    let back = if skin.is_some() { l * 0.6 } else { l * 0.2 };
+    let half_width = if skin.is_some() { w * 0.25 } else { w * 0.6 };
     g.triangle(
         Vec3::new(l, 0.0, top),
-        Vec3::new(l * 0.2, w * 0.6, top),
-        Vec3::new(l * 0.2, -w * 0.6, top),
+        Vec3::new(back, half_width, top),
+        Vec3::new(back, -half_width, top),
         Rgba::rgb(245, 245, 245),
     );
     if active {
@@ -38,11 +53,25 @@ mod tests {
     #[test]
     fn the_active_robot_gets_a_ring() {
         let mut g = Geometry::default();
-        body_geometry(&mut g, Vec3::new(0.4, 0.3, 0.2), Rgba::WHITE, false, "r0");
+        body_geometry(
+            &mut g,
+            Vec3::new(0.4, 0.3, 0.2),
+            Rgba::WHITE,
+            false,
+            "r0",
+            None,
+        );
         assert!(g.lines.is_empty());
         assert_eq!(g.mesh.len(), 36);
         assert_eq!(g.labels[0].text, "r0");
-        body_geometry(&mut g, Vec3::new(0.4, 0.3, 0.2), Rgba::WHITE, true, "r0");
+        body_geometry(
+            &mut g,
+            Vec3::new(0.4, 0.3, 0.2),
+            Rgba::WHITE,
+            true,
+            "r0",
+            None,
+        );
         assert_eq!(g.lines.len(), 64);
     }
 }

@@ -7,7 +7,8 @@
 //!
 //! Parameters: `trailLength` (200 poses), `maxSpeed` (0.5 m/s), `maxTurn` (1.0 rad/s),
 //! `color` (#3c8cdc), `mode` (`velocity` or `position`; velocity), `followDistance` (0.8 m:
-//! how far short of an object "Go to" and "Follow" stop).
+//! how far short of an object "Go to" and "Follow" stop), `skinFile` (an OBJ model drawn
+//! in place of the box, fitted to the robot's size; see [`crate::skin`]).
 
 mod actions;
 mod body;
@@ -32,6 +33,7 @@ use crate::config::{ConfigValueError, PluginConfig};
 use crate::device::ReplyTicket;
 use crate::plugin::{AnchorKey, Anchors, Handled, InputEvent, Plugin, PluginContext, Service};
 use crate::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
+use crate::skin::Skin;
 
 const DATA_STATE: u8 = 1;
 const GO_TO_POINT: &str = "Go to point…";
@@ -68,6 +70,8 @@ pub struct Position2dPlugin {
     link_up: bool,
     /// The point typed into the "Go to point…" popup.
     typed_point: Vec2,
+    /// The OBJ body (`skinFile`), or why the box is drawn.
+    skin: Skin,
 }
 
 impl Position2dPlugin {
@@ -97,7 +101,15 @@ impl Position2dPlugin {
             .tags
             .extend(["robot".to_string(), "position2d".to_string()]);
         object.pick_bounds = Some(Aabb::centred(Vec3::new(0.0, 0.0, size.z / 2.0), size));
-        body_geometry(&mut object.geometry, size, color, false, &config.id);
+        let skin = Skin::from_config(&config);
+        body_geometry(
+            &mut object.geometry,
+            size,
+            color,
+            false,
+            &config.id,
+            skin.mesh.as_deref(),
+        );
         let node = ctx.scene.add(object);
         let trail_node = ctx.scene.add(Object3D::new(format!("{} trail", config.id)));
         let anchor = config.device.as_ref().map(|d| AnchorKey {
@@ -138,6 +150,7 @@ impl Position2dPlugin {
             sent_waypoint: None,
             link_up: ctx.device.is_some_and(|d| d.link_state().is_connected()),
             typed_point: Vec2::ZERO,
+            skin,
         }))
     }
 
@@ -149,6 +162,7 @@ impl Position2dPlugin {
                 self.color,
                 self.active,
                 &self.config.id,
+                self.skin.mesh.as_deref(),
             );
             node.pick_bounds = Some(Aabb::centred(
                 Vec3::new(0.0, 0.0, self.size.z / 2.0),
@@ -278,6 +292,7 @@ impl Plugin for Position2dPlugin {
             "velocity {:.2} m/s, {:.2} rad/s",
             self.velocity.0, self.velocity.1
         ));
+        self.skin.ui(ui);
         if self.stalled {
             ui.colored_label(egui::Color32::from_rgb(230, 90, 80), "STALLED");
         }
@@ -300,7 +315,7 @@ impl Plugin for Position2dPlugin {
     }
 
     fn active_ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
-        ui.label(self.title());
+        ui.strong(&self.config.id);
         if let Some(goal) = &self.goal {
             ui.small(match goal {
                 Goal::Point(p) => format!("to ({:.2}, {:.2})", p.x, p.y),
