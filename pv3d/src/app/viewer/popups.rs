@@ -59,13 +59,15 @@ impl Viewer {
         }
     }
 
-    /// The open popup's title ("r0 → marker 7 (fiducial, id:7, person)", "r0: Go to point…").
+    /// The open popup's title ("Robot r0: actions on marker 7 (fiducial, id:7, person)").
     pub fn popup_title(&self) -> Option<String> {
         let title = |plugin: usize| self.slots[plugin].plugin.title();
         match &self.popup {
-            Some(Popup::Actions { plugin, target, .. }) => {
-                Some(format!("{} → {}", title(*plugin), target.describe()))
-            }
+            Some(Popup::Actions { plugin, target, .. }) => Some(format!(
+                "{}: actions on {}",
+                title(*plugin),
+                target.describe()
+            )),
             Some(Popup::Service { plugin, name }) => Some(format!("{}: {name}", title(*plugin))),
             None => None,
         }
@@ -156,12 +158,18 @@ impl Viewer {
             anchors: &mut self.anchors,
             now: Instant::now(),
         };
-        egui::Window::new(title)
+        // The window's title names what the popup is about; the full line goes inside.
+        let short = match popup {
+            Popup::Actions { target, .. } => target.name.clone(),
+            Popup::Service { name, .. } => name.to_string(),
+        };
+        egui::Window::new(short)
             .id(egui::Id::unique("pv3d-popup"))
             .default_pos(at)
             .collapsible(false)
             .resizable(false)
             .show(egui_ctx, |ui| {
+                ui.small(&title);
                 if let Some(name) = service {
                     keep = slot.plugin.service_popup(name, ui, &mut ctx);
                     return;
