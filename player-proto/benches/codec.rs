@@ -1,7 +1,9 @@
 //! Decode and encode throughput of the messages a viewer receives most, with a plain copy of
-//! the same bytes as the baseline (the memory-bandwidth ceiling on this machine).
+//! the same bytes as the baseline (the memory-bandwidth ceiling on this machine). Each line
+//! reports messages/s and bytes/s. The 181-beam laser and 181-range ranger cases are the ones
+//! libplayerc's figures exist for (see BENCHMARKS.md).
 //!
-//! `cargo bench -p player-proto --bench codec`
+//! `cargo bench -p player-proto --bench codec -- --warm-up-time 1 --measurement-time 3`
 
 use std::hint::black_box;
 
@@ -12,6 +14,7 @@ use player_proto::interfaces::common::{Pose2d, Pose3d};
 use player_proto::interfaces::fiducial::{Fiducial, FiducialData, FiducialItem};
 use player_proto::interfaces::laser::{Laser, LaserScan};
 use player_proto::interfaces::position2d::{Position2d, Position2dData};
+use player_proto::interfaces::ranger::{Ranger, RangerRanges};
 use player_proto::interfaces::sonar::{Sonar, SonarData};
 use player_proto::message::{Body, Message};
 use player_proto::wire::{DevAddr, Interface, MsgType, Opaque};
@@ -73,9 +76,17 @@ fn cases() -> Vec<(&'static str, Message)> {
         compression: 0,
         image: Opaque::from(vec![0x5a; 640 * 480 * 3]),
     };
+    let ranger = RangerRanges {
+        ranges: (0..181).map(|i| 0.5 + (i % 80) as f64 * 0.1).collect(),
+    };
     vec![
+        ("laser 181", laser(181)),
         ("laser 361", laser(361)),
         ("laser 1081", laser(1081)),
+        (
+            "ranger 181",
+            data(Interface::RANGER, Ranger::Ranges(ranger)),
+        ),
         ("sonar 16", data(Interface::SONAR, Sonar::Ranges(sonar))),
         (
             "position2d",
@@ -92,13 +103,21 @@ fn cases() -> Vec<(&'static str, Message)> {
     ]
 }
 
+/// One message per iteration, of `bytes` bytes: criterion prints messages/s and bytes/s.
+fn per_message(bytes: usize) -> Throughput {
+    Throughput::ElementsAndBytes {
+        elements: 1,
+        bytes: bytes as u64,
+    }
+}
+
 fn decode(c: &mut Criterion) {
     let mut group = c.benchmark_group("decode");
     for (name, message) in cases() {
         let wire = message.to_bytes();
         let header = message.header;
         let body = wire.slice(40..);
-        group.throughput(Throughput::Bytes(wire.len() as u64));
+        group.throughput(per_message(wire.len()));
         group.bench_with_input(BenchmarkId::new("message", name), &body, |b, body| {
             b.iter(|| Message::decode(black_box(header), black_box(body.clone())).unwrap())
         });
@@ -115,7 +134,7 @@ fn decode(c: &mut Criterion) {
 fn encode(c: &mut Criterion) {
     let mut group = c.benchmark_group("encode");
     for (name, message) in cases() {
-        group.throughput(Throughput::Bytes(message.encoded_len() as u64));
+        group.throughput(per_message(message.encoded_len()));
         let mut out = BytesMut::with_capacity(message.encoded_len());
         group.bench_with_input(BenchmarkId::new("message", name), &message, |b, m| {
             b.iter(|| {
