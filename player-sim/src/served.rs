@@ -68,7 +68,8 @@ impl ServedDevice {
 const DEFAULT_PORT: u16 = 6665;
 
 fn parse_addr(text: &str) -> Option<(u16, Interface, u16)> {
-    let addr: DevAddr = text.parse().ok()?;
+    // Player reads "7001:ranger:1 " (a space inside the quotes, as in Stage's autolab.cfg).
+    let addr: DevAddr = text.trim().parse().ok()?;
     let port = if addr.robot == 0 {
         DEFAULT_PORT
     } else {

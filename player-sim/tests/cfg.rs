@@ -55,10 +55,11 @@ fn providing_more_fiducials_rangers_or_cameras_than_the_model_has_is_an_error() 
             "{err}"
         );
     }
-    // Exactly as many as the model has is fine.
+    // Exactly as many as the model has is fine (a space inside the quotes too, as Player reads
+    // Stage's autolab.cfg).
     let path = cfg(
         dir.path(),
-        "driver ( name \"stage\" provides [ \"6665:fiducial:0\" \"6665:camera:0\" ] model \"r0\" )\n",
+        "driver ( name \"stage\" provides [ \"6665:fiducial:0\" \"6665:camera:0 \" ] model \"r0\" )\n",
     );
     let served = from_cfg(&path, &world, &mut Vec::new()).unwrap();
     assert_eq!(served.len(), 2);

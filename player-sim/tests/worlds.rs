@@ -387,7 +387,7 @@ fn sensors_mounted_on_models_on_a_robot_compose_their_poses() {
     let notes = world.ignored.join("\n");
     assert!(
         notes.contains(
-            "ignored: the body of a model on robot r (only what is mounted on it is read) at"
+            "ignored: the body of a model mounted on a robot (only what is mounted on it is read) at"
         ) && notes.contains("nested.world:2"),
         "{notes}"
     );
@@ -444,4 +444,21 @@ fn sensors_defined_from_sensor_are_read_as_stage_pioneer_inc_writes_them() {
         notes.contains("ignored: sensor property view at") && notes.contains("sonar.world:3"),
         "{notes}"
     );
+}
+
+#[test]
+fn random_colours_differ_per_model_and_stay_the_same_per_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let world = write(
+        dir.path(),
+        "random.world",
+        "define flocker position ( color \"random\" )\n\
+         flocker( name \"a\" )\nflocker( name \"b\" )\nflocker( name \"c\" color \"gray90\" )\n",
+    );
+    let first = World::load(&world).unwrap();
+    let colours: Vec<[u8; 3]> = first.robots.iter().map(|r| r.color).collect();
+    assert_ne!(colours[0], colours[1]);
+    assert_eq!(colours[2], [229, 229, 229]);
+    let again = World::load(&world).unwrap();
+    assert_eq!(again.robots[0].color, colours[0]);
 }

@@ -86,9 +86,28 @@ pub(super) fn color_of(m: &Model) -> Result<[u8; 3], WorldFileError> {
         None => Ok([200, 200, 200]),
         Some(p) => {
             let name = string(p)?;
+            if name.eq_ignore_ascii_case("random") {
+                return Ok(random_color(&m.pos));
+            }
             colors::by_name(name).ok_or_else(|| err(&p.pos, format!("unknown colour {name:?}")))
         }
     }
+}
+
+/// Stage's `color "random"`: a colour of its own for each model, here drawn from where the
+/// model is written, so that runs stay the same.
+fn random_color(pos: &Pos) -> [u8; 3] {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in pos
+        .file
+        .bytes()
+        .chain(pos.line.to_le_bytes())
+        .chain(pos.col.to_le_bytes())
+    {
+        h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+    }
+    // Bright enough to see against the dark floor: each channel 64 to 255.
+    [h, h >> 8, h >> 16].map(|c| 64 + (c as u8) % 192)
 }
 
 pub(super) fn fiducial_of(m: &Model) -> Result<Option<i32>, WorldFileError> {

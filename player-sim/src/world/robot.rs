@@ -101,8 +101,8 @@ impl World {
                 size_z = size_of(child, [0.0, 0.0, 0.0])?[2];
                 self.ignore(
                     &format!(
-                        "the body of a {} on robot {} (only what is mounted on it is read)",
-                        child.declared, robot.name
+                        "the body of a {} mounted on a robot (only what is mounted on it is read)",
+                        child.declared
                     ),
                     &child.pos,
                 );
