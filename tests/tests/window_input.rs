@@ -1,7 +1,8 @@
 //! The viewer's UI fed the input a window gets (egui events, no GL needed: the 3D view's paint
 //! callback is only recorded), against a robot simulated by player-sim over TCP: the window
 //! losing focus stops a driving robot; Ctrl+drag over the view drags the selected robot's
-//! target without moving the camera, and letting go sends the robot there.
+//! target without moving the camera, and letting go sends the robot there; the joystick shown
+//! over the view while the robot is selected drives it, and letting go stops it.
 
 use std::time::{Duration, Instant};
 
@@ -165,4 +166,72 @@ fn ctrl_drag_over_the_view_drags_the_target_and_release_sends_it() {
         window.frame(&mut viewer, vec![Event::PointerMoved(p)], Modifiers::NONE);
     }
     assert_ne!(viewer.view.camera, camera, "a plain drag pans the view");
+}
+
+#[test]
+fn the_joystick_over_the_view_drives_and_letting_go_stops() {
+    let mut composition = load(&["configs/single-laser.pv3d.xml"]);
+    let running = serve("stage-worlds/simple.world", &mut composition, 2.0);
+    let mut viewer = viewer_for(&composition);
+    let mut window = Window::new();
+    run_for(&mut viewer, Duration::from_millis(500));
+    viewer.cycle_active();
+    window.idle(&mut viewer, 3);
+    // The pad of robot "robot" (the template's id) over the view, without opening the tree.
+    let pad = window
+        .ctx
+        .read_response(pv3d_plugins::position2d::joystick_id("robot", "view"))
+        .expect("the joystick is shown over the view")
+        .rect;
+    let start = sim_pose(&running, 0);
+    let centre = pad.center();
+    window.frame(
+        &mut viewer,
+        vec![Event::PointerMoved(centre)],
+        Modifiers::NONE,
+    );
+    window.frame(
+        &mut viewer,
+        vec![Event::PointerButton {
+            pos: centre,
+            button: PointerButton::Primary,
+            pressed: true,
+            modifiers: Modifiers::NONE,
+        }],
+        Modifiers::NONE,
+    );
+    // Push the knob up (forward), and hold it there.
+    let up = centre - vec2(0.0, pad.height() * 0.4);
+    let deadline = Instant::now() + Duration::from_secs(10);
+    while distance(sim_pose(&running, 0), start) < 0.3 {
+        assert!(
+            Instant::now() < deadline,
+            "the joystick did not drive the robot"
+        );
+        window.frame(&mut viewer, vec![Event::PointerMoved(up)], Modifiers::NONE);
+    }
+    let now = sim_pose(&running, 0);
+    assert!(
+        (now.2 - start.2).abs() < 0.05,
+        "straight up is straight ahead: heading {} -> {}",
+        start.2,
+        now.2
+    );
+    window.frame(
+        &mut viewer,
+        vec![Event::PointerButton {
+            pos: up,
+            button: PointerButton::Primary,
+            pressed: false,
+            modifiers: Modifiers::NONE,
+        }],
+        Modifiers::NONE,
+    );
+    window.idle(&mut viewer, 10);
+    let stopped = sim_pose(&running, 0);
+    window.idle(&mut viewer, 20);
+    assert!(
+        distance(sim_pose(&running, 0), stopped) < 0.02,
+        "still driving after the joystick was let go"
+    );
 }

@@ -27,6 +27,7 @@ use player_proto::message::Body;
 pub use body::body_geometry;
 pub use goal::{DriveMode, Goal, stand_off};
 pub use teleop::{ARRIVED, Limits, joystick_velocity, steer_towards, wrap_angle};
+pub use widgets::joystick_id;
 
 use crate::action::{Action, ObjectRef};
 use crate::config::{ConfigValueError, PluginConfig};
@@ -306,7 +307,7 @@ impl Plugin for Position2dPlugin {
         ui.add(egui::Slider::new(&mut self.limits.max_turn, 0.0..=3.0).text("max rad/s"));
         ui.add(egui::Slider::new(&mut self.follow_distance, 0.0..=3.0).text("follow m"));
         self.mode_ui(ui);
-        self.joystick_ui(ui);
+        self.joystick_ui(ui, "tree");
         if self.active {
             ui.small(
                 "click or Ctrl+drag the ground to send the robot there; click a marker for actions",
@@ -322,7 +323,7 @@ impl Plugin for Position2dPlugin {
                 Goal::Follow { target, .. } => format!("following {}", target.name),
             });
         }
-        self.joystick_ui(ui);
+        self.joystick_ui(ui, "view");
         if ui.button("Stop").clicked() {
             self.stop(ctx);
         }

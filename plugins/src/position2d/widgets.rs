@@ -6,11 +6,23 @@ use super::Position2dPlugin;
 use super::goal::{DriveMode, Goal};
 use crate::plugin::PluginContext;
 
+/// The egui id of robot `robot`'s joystick in `place` (`"tree"` or `"view"`), stable so that
+/// tests (and tools) can find the pad: `egui::Context::read_response(joystick_id(..))`.
+pub fn joystick_id(robot: &str, place: &str) -> egui::Id {
+    egui::Id::unique(("pv3d-joystick", robot, place))
+}
+
 impl Position2dPlugin {
-    /// A square pad: drag the knob to drive (velocity commands), let go to stop.
-    pub(super) fn joystick_ui(&mut self, ui: &mut egui::Ui) {
+    /// A square pad: drag the knob to drive (velocity commands), let go to stop. `place` tells
+    /// the item tree's pad from the one over the view (see [`joystick_id`]).
+    pub(super) fn joystick_ui(&mut self, ui: &mut egui::Ui, place: &str) {
         let size = egui::vec2(110.0, 110.0);
-        let (rect, response) = ui.allocate_exact_size(size, egui::Sense::drag());
+        let (rect, _) = ui.allocate_exact_size(size, egui::Sense::hover());
+        let response = ui.interact(
+            rect,
+            joystick_id(&self.config.id, place),
+            egui::Sense::drag(),
+        );
         let painter = ui.painter_at(rect);
         painter.rect_stroke(
             rect,
