@@ -462,3 +462,33 @@ fn random_colours_differ_per_model_and_stay_the_same_per_run() {
     let again = World::load(&world).unwrap();
     assert_eq!(again.robots[0].color, colours[0]);
 }
+
+#[test]
+fn boundary_walls_keep_robots_on_the_floorplan() {
+    let dir = tempfile::tempdir().unwrap();
+    // A blank 6 x 4 m floorplan (1 cm pixels) centred on (1, 0): no walls but its boundary.
+    image::GrayImage::from_pixel(600, 400, image::Luma([255]))
+        .save(dir.path().join("blank.png"))
+        .unwrap();
+    let text = |boundary: u8| {
+        format!(
+            "floorplan( size [ 6 4 1 ] pose [ 1 0 0 0 ] bitmap \"blank.png\" boundary {boundary} )\n\
+             position( name \"r\" ranger( pose [ 0.1 0 0 0 ] sensor( range [ 0 8 ] fov 180 samples 3 ) ) )\n"
+        )
+    };
+    let walled = World::load(&write(dir.path(), "walled.world", &text(1))).unwrap();
+    assert!(walled.ignored.is_empty(), "{:?}", walled.ignored);
+    assert_eq!(walled.floor_blocks.len(), 4);
+    let sim = Simulation::new(walled);
+    let ranger = sim.world.robots[0].rangers[0].clone();
+    let scan = ranger_scan(&sim, 0, &ranger);
+    // East: the wall's inner face is 1 cm inside x = 4; south and north 1 cm inside y = ±2.
+    assert!((scan[1] - 3.89).abs() <= 0.011, "{scan:?}");
+    assert!(
+        (scan[0] - 1.99).abs() <= 0.011 && (scan[2] - 1.99).abs() <= 0.011,
+        "{scan:?}"
+    );
+    let open = World::load(&write(dir.path(), "open.world", &text(0))).unwrap();
+    let sim = Simulation::new(open);
+    assert_eq!(ranger_scan(&sim, 0, &ranger), vec![8.0, 8.0, 8.0]);
+}

@@ -7,6 +7,7 @@
 mod bitmap;
 mod blocks;
 mod colors;
+mod floorplan;
 mod models;
 mod properties;
 mod raster;
@@ -19,7 +20,7 @@ pub use blocks::{Polygon, placed};
 pub use models::{Model, Types, read_with_includes};
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
-use properties::{color_of, err, fiducial_of, name_of, number, numbers, pose_of, size_of, string};
+use properties::{color_of, err, fiducial_of, name_of, number, opt_number, pose_of, size_of};
 
 /// Stage's drive models.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -137,7 +138,8 @@ pub struct World {
     pub floor: Option<OccupancyGrid>,
     /// A bitmap floorplan, for viewers; `None` when the floorplan is drawn with blocks only.
     pub floorplan: Option<Floorplan>,
-    /// Floorplans drawn with `block`s, in world coordinates (they are also in `floor`).
+    /// Floorplans drawn with `block`s and the walls of `boundary 1`, in world coordinates
+    /// (they are also in `floor`).
     pub floor_blocks: Vec<Polygon>,
     /// Metres per cell of the grid block floorplans are drawn into (the world's `resolution`,
     /// 0.02 as in Stage unless set).
@@ -149,6 +151,9 @@ pub struct World {
     pub obstacles: Vec<BoxObstacle>,
     /// "ignored: <what> at file:line", once each.
     pub ignored: Vec<String>,
+    /// Floorplan polygons read but not drawn yet (while loading: the grid they go into is
+    /// known only once every floorplan and the world's resolution are).
+    pending_floor: Vec<(Polygon, Pos)>,
 }
 
 /// Stage's default raytrace resolution: 50 cells per metre.
@@ -163,6 +168,7 @@ const READ: &[&str] = &[
     "color_rgba",
     "drive",
     "bitmap",
+    "boundary",
     "fiducial_return",
     "obstacle_return",
     "range_min",
@@ -186,7 +192,6 @@ impl World {
             ..World::default()
         };
         let base = path.parent().unwrap_or(Path::new("."));
-        let mut floor_blocks = Vec::new();
         let mut resolution_at = None;
         for item in items {
             match item {
@@ -205,8 +210,7 @@ impl World {
                     if block.kind == "floorplan"
                         || types.derives_from(&block.kind, "floorplan") =>
                 {
-                    let blocks = world.floorplan(&types.instantiate_as_model(&block)?, base)?;
-                    floor_blocks.extend(blocks.into_iter().map(|b| (b, block.pos.clone())));
+                    world.floorplan(&types.instantiate_as_model(&block)?, base)?;
                 }
                 Item::Block(block) => {
                     let model = types.instantiate(&block)?;
@@ -214,16 +218,14 @@ impl World {
                 }
             }
         }
-        if floor_blocks.is_empty()
-            && let Some(pos) = resolution_at
-        {
+        let resolution_used = world.draw_floor_blocks()?;
+        if !resolution_used && let Some(pos) = resolution_at {
             world.ignore(
                 "world property resolution (only block floorplans are drawn into a grid of \
                  that resolution; a bitmap's pixels are its cells)",
                 &pos,
             );
         }
-        world.draw_floor_blocks(floor_blocks)?;
         Ok(world)
     }
 
@@ -300,70 +302,6 @@ impl World {
         }
     }
 
-    /// Reads a floorplan: a bitmap becomes the grid now; blocks are returned, in world
-    /// coordinates, to be drawn once every floorplan and the world's resolution are known.
-    fn floorplan(&mut self, model: &Model, base: &Path) -> Result<Vec<Polygon>, WorldFileError> {
-        self.note_unread(model);
-        let bitmap = model.get("bitmap");
-        if bitmap.is_none() && !blocks::has_blocks(model) {
-            self.ignore("floorplan without a bitmap or blocks", &model.pos);
-            return Ok(Vec::new());
-        }
-        let size = numbers(model.get("size"), 2, &model.pos)?;
-        let pose = pose_of(model)?;
-        self.floor_height = size.get(2).copied().unwrap_or(1.0);
-        self.floor_color = color_of(model)?;
-        let Some(bitmap) = bitmap else {
-            let polygons = blocks::model_blocks(model, [size[0], size[1]])?;
-            return Ok(polygons.iter().map(|p| placed(p, pose)).collect());
-        };
-        if let Some(block) = model.parts.iter().find(|p| p.kind == "block") {
-            self.ignore("block() in a floorplan with a bitmap", &block.pos);
-        }
-        let file = string(bitmap)?;
-        let grid = OccupancyGrid::from_png(&base.join(file), size[0], size[1], pose.x, pose.y)
-            .map_err(|e| err(&bitmap.pos, e))?;
-        self.floor = Some(grid);
-        self.floorplan = Some(Floorplan {
-            bitmap: base.join(file),
-            size: [size[0], size[1]],
-            centre: [pose.x, pose.y],
-            height: self.floor_height,
-            color: self.floor_color,
-        });
-        Ok(Vec::new())
-    }
-
-    /// Draws the block floorplans into the floor grid: the bitmap's, grown to hold them, or
-    /// one of the world's resolution.
-    fn draw_floor_blocks(&mut self, blocks: Vec<(Polygon, Pos)>) -> Result<(), WorldFileError> {
-        let Some((_, first_at)) = blocks.first() else {
-            return Ok(());
-        };
-        let (mut min, mut max) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for point in blocks.iter().flat_map(|(polygon, _)| polygon) {
-            for k in 0..2 {
-                min[k] = min[k].min(point[k]);
-                max[k] = max[k].max(point[k]);
-            }
-        }
-        let mut grid = match self.floor.take() {
-            None => OccupancyGrid::covering(min, max, self.resolution),
-            Some(bitmap) => bitmap.grown_to(min, max).ok_or_else(|| {
-                err(
-                    first_at,
-                    "block floorplans lie too far from the bitmap floorplan for one grid",
-                )
-            })?,
-        };
-        for (polygon, _) in &blocks {
-            grid.draw_polygon(polygon);
-        }
-        self.floor = Some(grid);
-        self.floor_blocks = blocks.into_iter().map(|(polygon, _)| polygon).collect();
-        Ok(())
-    }
-
     fn top_model(&mut self, model: &Model, base: &Path) -> Result<(), WorldFileError> {
         self.note_unread(model);
         match model.kind.as_str() {
@@ -375,6 +313,11 @@ impl World {
                 self.floorplan(model, base)?;
             }
             "model" => {
+                if let Some(p) = model.get("boundary")
+                    && opt_number(model, "boundary")? != Some(0.0)
+                {
+                    self.ignore("boundary on a model that is not a floorplan", &p.pos);
+                }
                 let size = size_of(model, [1.0, 1.0, 1.0])?;
                 let obstacle = BoxObstacle {
                     name: name_of(model, &format!("box{}", self.obstacles.len())),
