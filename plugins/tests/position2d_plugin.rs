@@ -402,3 +402,51 @@ fn go_to_point_is_a_service_with_a_popup() {
     assert_eq!(popup, ["Go to point…"]);
     assert!(services.iter().any(|s| s.name == "Stop" && !s.popup));
 }
+
+#[test]
+fn following_in_position_mode_sends_a_new_waypoint_only_when_the_object_moved() {
+    let mut c = config();
+    c.params.push(Param::new("mode", "position"));
+    c.params.push(Param::new("followDistance", "1"));
+    let (mut w, mut plugin) = world_with(c);
+    odometry(&w.device, 0.0, 0.0, 0.0);
+    plugin.update(&mut w.ctx());
+    let seen = marker(&mut w.scene, 7, 4.0, 0.0);
+    let target = ObjectRef::of(&w.scene, seen).unwrap();
+    plugin.run_action("Follow", &target, &mut w.ctx());
+    for _ in 0..3 {
+        w.now += Duration::from_millis(200);
+        plugin.update(&mut w.ctx());
+    }
+    let sent = waypoints(&w.device);
+    assert_eq!(sent.len(), 1, "{sent:?}");
+    assert!(
+        (sent[0].0 - 3.0).abs() < 1e-5 && sent[0].1.abs() < 1e-5,
+        "1 m short"
+    );
+    // A small step of the person: no new way-point; a real one: a new way-point.
+    w.scene.get_mut(seen).unwrap().transform =
+        glam::Affine3A::from_translation(Vec3::new(4.05, 0.0, 0.0));
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    assert_eq!(waypoints(&w.device).len(), 1);
+    w.scene.get_mut(seen).unwrap().transform =
+        glam::Affine3A::from_translation(Vec3::new(4.0, 2.0, 0.0));
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    let sent = waypoints(&w.device);
+    assert_eq!(sent.len(), 2);
+    let (x, y, a) = sent[1];
+    let expected = Vec3::new(4.0, 2.0, 0.0) - Vec3::new(4.0, 2.0, 0.0).normalize();
+    assert!((x - f64::from(expected.x)).abs() < 1e-4 && (y - f64::from(expected.y)).abs() < 1e-4);
+    assert!(
+        (a - (2.0f64).atan2(4.0)).abs() < 1e-4,
+        "facing the person: {a}"
+    );
+    // Arrived within the distance: a zero velocity, and no more way-points.
+    odometry(&w.device, expected.x.into(), expected.y.into(), a);
+    w.now += Duration::from_millis(200);
+    plugin.update(&mut w.ctx());
+    assert_eq!(velocities(&w.device), vec![(0.0, 0.0)]);
+    assert_eq!(waypoints(&w.device).len(), 2);
+}

@@ -210,6 +210,10 @@ impl Viewer {
         if let Some(old) = self.active {
             self.send(old, &InputEvent::Activated(false));
         }
+        // Actions offered by the robot that was active go with it.
+        if matches!(self.popup, Some(popups::Popup::Actions { .. })) {
+            self.popup = None;
+        }
         self.active = index;
         if let Some(new) = index {
             self.send(new, &InputEvent::Activated(true));
