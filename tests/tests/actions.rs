@@ -130,6 +130,13 @@ fn clicking_a_person_marker_offers_actions_and_follow_keeps_near_it() {
         "{title}"
     );
     assert!(!viewer.choose_action("Dance"), "not an action on offer");
+    // A click on the ground closes the popup and sends nobody anywhere.
+    let before = sim_pose(&running, 0);
+    viewer.click(None, Some(Vec3::new(-3.0, 0.0, 0.0)));
+    assert_eq!(viewer.popup_actions(), None);
+    run_for(&mut viewer, Duration::from_millis(300));
+    assert!(distance(sim_pose(&running, 0), before) < 0.01);
+    viewer.click(Some(marker_tagged(&viewer, "person").unwrap()), None);
     assert!(viewer.choose_action("Follow"));
     assert_eq!(viewer.popup_actions(), None, "the popup closes");
 

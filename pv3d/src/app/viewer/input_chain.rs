@@ -61,8 +61,12 @@ impl Viewer {
 
     /// A click in the 3D view, down the chain: active handler, clicked object, world.
     pub fn click(&mut self, picked: Option<NodeId>, ground: Option<glam::Vec3>) {
-        // A click elsewhere in the view closes the popup (clicks on it never reach the view).
-        self.popup = None;
+        // A click elsewhere in the view closes the popup, and only that: a robot is not sent
+        // off by the click that dismissed its menu (clicks on the popup never reach the view).
+        if self.popup.take().is_some() {
+            self.dirty = true;
+            return;
+        }
         let owner = picked.and_then(|n| self.owner_of(n));
         // Clicking another robot selects it.
         if let Some(o) = owner
