@@ -492,3 +492,27 @@ fn boundary_walls_keep_robots_on_the_floorplan() {
     let sim = Simulation::new(open);
     assert_eq!(ranger_scan(&sim, 0, &ranger), vec![8.0, 8.0, 8.0]);
 }
+
+#[test]
+fn a_low_block_is_reported_as_solid_at_every_height() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(
+        dir.path(),
+        "curb.world",
+        "floorplan( size [ 4 4 1 ]\n\
+         block( points 4 point[0] [ 0 0 ] point[1] [ 4 0 ] point[2] [ 4 1 ] point[3] [ 0 1 ] z [ 0 1 ] )\n\
+         block( points 4 point[0] [ 0 3 ] point[1] [ 4 3 ] point[2] [ 4 4 ] point[3] [ 0 4 ] z [ 0 0.1 ] ) )\n",
+    );
+    let world = World::load(&path).unwrap();
+    assert_eq!(
+        world.ignored,
+        vec![format!(
+            "ignored: a block not as tall as the rest of floorplan (solid at every height here) at {}:3",
+            path.display()
+        )]
+    );
+    assert!(
+        world.floor.unwrap().occupied_at(0.0, 1.8),
+        "the curb is drawn"
+    );
+}

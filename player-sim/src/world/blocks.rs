@@ -34,6 +34,32 @@ pub(super) fn has_blocks(model: &Model) -> bool {
     model.parts.iter().any(|p| p.kind == "block")
 }
 
+/// The blocks of `model` that do not span its full height (their `z` range is not that of all
+/// its blocks together): Stage's rays pass over or under them at other heights, ours, in the
+/// plane, do not.
+pub(super) fn partial_height_blocks(model: &Model) -> Vec<&Block> {
+    let z_of = |b: &Block| {
+        b.get("z")
+            .and_then(|p| p.value.numbers())
+            .filter(|n| n.len() >= 2)
+            .map(|n| [n[0], n[1]])
+    };
+    let blocks: Vec<&Block> = model.parts.iter().filter(|p| p.kind == "block").collect();
+    let ranges: Vec<Option<[f64; 2]>> = blocks.iter().map(|b| z_of(b)).collect();
+    let (low, high) = ranges
+        .iter()
+        .flatten()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), z| {
+            (lo.min(z[0]), hi.max(z[1]))
+        });
+    blocks
+        .into_iter()
+        .zip(ranges)
+        .filter(|(_, z)| z.is_some_and(|z| z[0] > low || z[1] < high))
+        .map(|(b, _)| b)
+        .collect()
+}
+
 /// One block's points as written.
 fn block_points(block: &Block) -> Result<Polygon, WorldFileError> {
     let Some(count) = block.get("points") else {
@@ -141,6 +167,21 @@ mod tests {
         assert!(e.contains("no point[1]"), "{e}");
         let huge = model("model( block( points 1e12 ) )");
         assert!(model_blocks(&huge, [1.0, 1.0]).is_err());
+    }
+
+    #[test]
+    fn blocks_lower_than_the_others_are_told_apart() {
+        let m = model(
+            "model( block( points 3 point[0] [0 0] point[1] [1 0] point[2] [0 1] z [0 1] ) \
+             block( points 3 point[0] [0 0] point[1] [1 0] point[2] [0 1] z [0 0.2] ) \
+             block( points 3 point[0] [0 0] point[1] [1 0] point[2] [0 1] ) )",
+        );
+        let low = partial_height_blocks(&m);
+        assert_eq!(low.len(), 1);
+        assert_eq!(
+            low[0].get("z").unwrap().value.numbers(),
+            Some(vec![0.0, 0.2])
+        );
     }
 
     #[test]

@@ -271,6 +271,15 @@ impl World {
                 self.ignore(&format!("{} property {}", model.declared, p.name), &p.pos);
             }
         }
+        for block in blocks::partial_height_blocks(model) {
+            self.ignore(
+                &format!(
+                    "a block not as tall as the rest of {} (solid at every height here)",
+                    model.declared
+                ),
+                &block.pos,
+            );
+        }
         // Sensors are read by the ranger and block() shapes by every model; nothing else is.
         for part in &model.parts {
             let read: &[&str] = match part.kind.as_str() {
@@ -346,6 +355,8 @@ impl Types {
         }
         let mut as_model = block.clone();
         as_model.kind = "model".into();
-        self.instantiate(&as_model)
+        let mut model = self.instantiate(&as_model)?;
+        model.declared = block.kind.clone();
+        Ok(model)
     }
 }
