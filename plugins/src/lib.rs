@@ -25,6 +25,7 @@ pub mod position2d;
 pub mod ranger;
 pub mod skin;
 pub mod sonar;
+pub mod zones;
 
 /// Every plugin built into pv3d, by library name.
 pub fn standard_plugins() -> PluginRegistry {
@@ -38,5 +39,6 @@ pub fn standard_plugins() -> PluginRegistry {
     registry.register("libpv3d_sonar", sonar::SonarPlugin::create);
     registry.register("libpv3d_ranger", ranger::RangerPlugin::create);
     registry.register("libpv3d_camera", camera::CameraPlugin::create);
+    registry.register("libpv3d_zones", zones::ZonesPlugin::create);
     registry
 }

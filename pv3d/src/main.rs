@@ -128,7 +128,7 @@ fn main() -> Result<()> {
         bail!("--headless draws no window: it needs --screenshot OUT.png");
     }
 
-    let parsers = ParserRegistry::default();
+    let parsers = ParserRegistry::standard();
     let mut composition = Composition::load_files(&cli.files, &parsers)?;
     // Kept alive for as long as the viewer runs.
     let _world = match &cli.world {

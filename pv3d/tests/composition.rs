@@ -307,3 +307,44 @@ fn emitted_config_loads_back_to_the_same_instances() {
     let twice = emit_document(&reloaded, &again);
     assert_eq!(twice, fs::read_to_string(&emitted).unwrap());
 }
+
+#[test]
+fn zones_become_one_plugin_and_are_written_back_as_they_were() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write(
+        dir.path(),
+        "zones.xml",
+        r##"<pv3d>
+  <addParser element="zone"/>
+  <zone name="dock" color="#40c0ff">0 0  2 0  2 2</zone>
+  <plugin library="libpv3d_ground"/>
+  <zone name="keep out">5 5  6 5  6 6  5 6</zone>
+</pv3d>"##,
+    );
+    let parsers = ParserRegistry::standard();
+    let composition = Composition::load(&file, &parsers).unwrap();
+    let instances = instantiate(&composition, &[]);
+    let zones: Vec<&PluginInstance> = instances
+        .iter()
+        .filter(|i| i.library() == "libpv3d_zones")
+        .collect();
+    assert_eq!(zones.len(), 1, "every <zone> goes to one plugin");
+    let names: Vec<&str> = zones[0]
+        .element
+        .elements()
+        .filter_map(|e| e.attr("name"))
+        .collect();
+    assert_eq!(names, ["dock", "keep out"]);
+
+    let emitted = emit_document(&composition, &instances);
+    assert_eq!(emitted.matches("<addParser").count(), 1, "{emitted}");
+    assert_eq!(emitted.matches("<zone ").count(), 2, "{emitted}");
+    assert!(!emitted.contains("libpv3d_zones"), "{emitted}");
+    let again = write(dir.path(), "again.xml", &emitted);
+    let reloaded = Composition::load(&again, &parsers).unwrap();
+    assert_eq!(
+        summary(&instantiate(&reloaded, &[])),
+        summary(&instances),
+        "the same plugins after a round trip"
+    );
+}

@@ -49,7 +49,7 @@ fn every_config_validates_against_the_schema_and_loads() {
             file.display(),
             String::from_utf8_lossy(&out.stderr)
         );
-        Composition::load(file, &ParserRegistry::default())
+        Composition::load(file, &ParserRegistry::standard())
             .unwrap_or_else(|e| panic!("{} does not load: {e}", file.display()));
     }
 }
@@ -70,7 +70,7 @@ fn the_schema_refuses_what_the_loader_refuses() {
         std::fs::write(&path, bad).unwrap();
         assert!(!xmllint(&path).status.success(), "schema accepted {bad}");
         assert!(
-            Composition::load(&path, &ParserRegistry::default()).is_err(),
+            Composition::load(&path, &ParserRegistry::standard()).is_err(),
             "loader accepted {bad}"
         );
     }

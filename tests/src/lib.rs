@@ -23,7 +23,7 @@ pub fn repo_root() -> PathBuf {
 /// Loads compositions given relative to the checkout.
 pub fn load(files: &[&str]) -> Composition {
     let paths: Vec<PathBuf> = files.iter().map(|f| repo_root().join(f)).collect();
-    Composition::load_files(&paths, &ParserRegistry::default())
+    Composition::load_files(&paths, &ParserRegistry::standard())
         .unwrap_or_else(|e| panic!("{files:?} should load: {e}"))
 }
 

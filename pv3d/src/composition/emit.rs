@@ -26,14 +26,21 @@ pub fn emit_document(composition: &Composition, instances: &[PluginInstance]) ->
         }
         root.children.push(Node::Element(handlers));
     }
+    let mut enabled: Vec<&str> = Vec::new();
     for extension in &composition.extensions {
-        let mut add = Element::new("addParser", root.pos.clone());
-        add.set_attr("element", extension.parser.clone());
-        root.children.push(Node::Element(add));
+        if !enabled.contains(&extension.parser.as_str()) {
+            enabled.push(&extension.parser);
+            let mut add = Element::new("addParser", root.pos.clone());
+            add.set_attr("element", extension.parser.clone());
+            root.children.push(Node::Element(add));
+        }
         root.children.push(Node::Element(extension.element.clone()));
     }
+    // Extension elements were written above as they are; their plugin is made anew on load.
     for instance in instances {
-        root.children.push(Node::Element(instance.element.clone()));
+        if !super::instantiate::is_extension_plugin(composition, instance) {
+            root.children.push(Node::Element(instance.element.clone()));
+        }
     }
     to_xml_string(&root)
 }

@@ -5,6 +5,7 @@
 use super::device_mask::FoundDevice;
 use super::error::SourcePos;
 use super::model::{Composition, read_mask};
+use super::parsers::extension_plugin;
 use super::xml_tree::{Element, Node};
 
 /// A plugin to create: its configuration element and, when it came from a handler, the device
@@ -46,8 +47,47 @@ pub fn instantiate(composition: &Composition, devices: &[FoundDevice]) -> Vec<Pl
             device: None,
         });
     }
+    instances.extend(extension_plugins(composition));
     make_ids_unique(&mut instances);
     instances
+}
+
+/// One plugin per built-in extension in use, holding all of that extension's elements
+/// (every `<zone>` goes to one `libpv3d_zones`).
+fn extension_plugins(composition: &Composition) -> Vec<PluginInstance> {
+    let mut plugins: Vec<PluginInstance> = Vec::new();
+    for extension in &composition.extensions {
+        let Some(library) = extension_plugin(&extension.parser) else {
+            continue;
+        };
+        let existing = plugins.iter_mut().find(|p| p.library() == library);
+        let plugin = match existing {
+            Some(plugin) => plugin,
+            None => {
+                let mut element = Element::new("plugin", extension.element.pos.clone());
+                element.set_attr("library", library);
+                element.set_attr("id", library.trim_start_matches("libpv3d_"));
+                plugins.push(PluginInstance {
+                    element,
+                    device: None,
+                });
+                plugins.last_mut().expect("just pushed")
+            }
+        };
+        plugin
+            .element
+            .children
+            .push(Node::Element(extension.element.clone()));
+    }
+    plugins
+}
+
+/// Whether an instance stands for extension elements (which are written back as they are).
+pub fn is_extension_plugin(composition: &Composition, instance: &PluginInstance) -> bool {
+    composition
+        .extensions
+        .iter()
+        .any(|e| extension_plugin(&e.parser) == Some(instance.library()))
 }
 
 /// A copy of `template` whose `<playerDeviceMask>` is the concrete address of `device`.

@@ -4,6 +4,18 @@
 use super::error::ConfigError;
 use super::xml_tree::Element;
 
+/// The extension elements built into pv3d, and the plugin that all of a composition's
+/// elements of that name become (one plugin for all `<zone>`s).
+const BUILT_IN: &[(&str, &str)] = &[("zone", "libpv3d_zones")];
+
+/// The plugin library an extension element becomes, if it becomes one.
+pub fn extension_plugin(element: &str) -> Option<&'static str> {
+    BUILT_IN
+        .iter()
+        .find(|(name, _)| *name == element)
+        .map(|(_, library)| *library)
+}
+
 /// The extension element names this program knows how to parse.
 #[derive(Debug, Clone, Default)]
 pub struct ParserRegistry {
@@ -11,6 +23,13 @@ pub struct ParserRegistry {
 }
 
 impl ParserRegistry {
+    /// The extensions built into pv3d: `<zone>` (named ground zones and who is in them).
+    pub fn standard() -> ParserRegistry {
+        ParserRegistry {
+            known: BUILT_IN.iter().map(|(name, _)| *name).collect(),
+        }
+    }
+
     pub fn new(known: &[&'static str]) -> ParserRegistry {
         ParserRegistry {
             known: known.to_vec(),
