@@ -516,3 +516,31 @@ fn a_low_block_is_reported_as_solid_at_every_height() {
         "the curb is drawn"
     );
 }
+
+#[test]
+fn a_body_shifted_by_origin_collides_where_it_is() {
+    let dir = tempfile::tempdir().unwrap();
+    // A room whose east wall's face is at x = 1.8; a 0.4 m robot whose body lies 0.1 m ahead
+    // of the point it turns about (origin [ 0.1 0 0 0 ]).
+    let path = write(
+        dir.path(),
+        "origin.world",
+        "floorplan( size [ 4 4 1 ]\n\
+         block( points 4 point[0] [ 3.8 0 ] point[1] [ 4 0 ] point[2] [ 4 4 ] point[3] [ 3.8 4 ] )\n\
+         block( points 4 point[0] [ 0 0 ] point[1] [ 0.2 0 ] point[2] [ 0.2 4 ] point[3] [ 0 4 ] ) )\n\
+         position( name \"r\" size [ 0.4 0.4 0.2 ] origin [ 0.1 0 0 0 ] )\n",
+    );
+    let world = World::load(&path).unwrap();
+    assert!(world.ignored.is_empty(), "{:?}", world.ignored);
+    let mut sim = Simulation::new(world);
+    sim.robots[0].command = Command::Velocity {
+        vx: 0.5,
+        vy: 0.0,
+        va: 0.0,
+    };
+    run(&mut sim, 4.0);
+    assert!(sim.robots[0].stall);
+    // The body's front is 0.3 m ahead of the pose: it stops 0.3 m short of the face.
+    let x = sim.robots[0].pose.x;
+    assert!(x <= 1.5 + 1e-9 && x > 1.4, "{x}");
+}

@@ -13,7 +13,7 @@ pub use camera::{Frame, render_camera};
 pub use geometry::GroundBox;
 pub use nearby::{NearbyBoxes, SolidBox};
 pub use noise::Noise;
-pub use sensors::{FiducialHit, fiducials, on_robot, ranger_scan, ranger_scan_exhaustive};
+pub use sensors::{FiducialHit, body_at, fiducials, on_robot, ranger_scan, ranger_scan_exhaustive};
 
 use crate::world::{Drive, Pose, World};
 
@@ -80,11 +80,11 @@ impl Simulation {
         self.world.robots.iter().position(|r| r.name == name)
     }
 
-    /// Robot `i`'s footprint at `pose`.
+    /// Robot `i`'s footprint when it stands at `pose` (its body shifted by its `origin`).
     pub fn footprint(&self, i: usize, pose: Pose) -> GroundBox<'_> {
         let spec = &self.world.robots[i];
         GroundBox {
-            pose,
+            pose: body_at(pose, spec.origin),
             length: spec.size[0],
             width: spec.size[1],
             shape: &spec.shape,
@@ -100,7 +100,7 @@ impl Simulation {
             .filter(move |(i, _)| Some(*i) != except)
             .map(|(i, r)| self.footprint(i, r.pose));
         let obstacles = self.world.obstacles.iter().map(|o| GroundBox {
-            pose: o.pose,
+            pose: body_at(o.pose, o.origin),
             length: o.size[0],
             width: o.size[1],
             shape: &o.shape,

@@ -6,6 +6,7 @@
 
 use super::Simulation;
 use super::geometry::slab_hit;
+use super::sensors::body_at;
 use super::shapes::ray_into_polygons;
 use crate::world::Polygon;
 
@@ -70,12 +71,15 @@ impl<'a> NearbyBoxes<'a> {
             .zip(&sim.world.robots)
             .enumerate()
             .filter(|(i, _)| Some(*i) != except)
-            .map(|(_, (state, spec))| (state.pose, spec.size, spec.color, &spec.shape[..]));
+            .map(|(_, (state, spec))| {
+                let body = body_at(state.pose, spec.origin);
+                (body, spec.size, spec.color, &spec.shape[..])
+            });
         let obstacles = sim
             .world
             .obstacles
             .iter()
-            .map(|o| (o.pose, o.size, o.color, &o.shape[..]));
+            .map(|o| (body_at(o.pose, o.origin), o.size, o.color, &o.shape[..]));
         let boxes = robots
             .chain(obstacles)
             .filter_map(|(pose, size, color, shape)| {

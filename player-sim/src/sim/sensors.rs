@@ -15,6 +15,16 @@ pub fn on_robot(robot: Pose, local: Pose) -> Pose {
     }
 }
 
+/// Where a body shifted by `origin` (Stage's `origin`) lies when its model is at `pose`; the
+/// pose itself, without trigonometry, for the usual unshifted body.
+pub fn body_at(pose: Pose, origin: Pose) -> Pose {
+    if origin == Pose::default() {
+        pose
+    } else {
+        on_robot(pose, origin)
+    }
+}
+
 /// Distance to the nearest thing along a ray, up to `max`: the floorplan by grid traversal and
 /// the boxes near the sensor.
 fn cast(

@@ -20,7 +20,9 @@ pub use blocks::{Polygon, placed};
 pub use models::{Model, Types, read_with_includes};
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
-use properties::{color_of, err, fiducial_of, name_of, number, opt_number, pose_of, size_of};
+use properties::{
+    color_of, err, fiducial_of, name_of, number, opt_number, origin_of, pose_of, size_of,
+};
 
 /// Stage's drive models.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -94,6 +96,9 @@ pub struct RobotSpec {
     pub color: [u8; 3],
     pub drive: Drive,
     pub fiducial_id: Option<i32>,
+    /// Where the body's centre lies from `pose`, in the robot's frame (Stage's `origin`:
+    /// Stage's pioneer.inc puts a Pioneer's 4 cm behind the point it turns about).
+    pub origin: Pose,
     /// The robot's `block`s, scaled to its size, in its own frame (empty when it has none).
     /// When there are some, rays and collisions meet these polygons (the box of `size`, their
     /// bounding box, is only the first, cheap test).
@@ -111,6 +116,8 @@ pub struct BoxObstacle {
     pub size: [f64; 3],
     pub color: [u8; 3],
     pub fiducial_id: Option<i32>,
+    /// Where the body's centre lies from `pose`, in the model's frame (Stage's `origin`).
+    pub origin: Pose,
     /// The model's `block`s, scaled to its size, in its own frame (empty when it has none).
     /// When there are some, rays and collisions meet these polygons (the box of `size`, their
     /// bounding box, is only the first, cheap test).
@@ -169,6 +176,7 @@ const READ: &[&str] = &[
     "drive",
     "bitmap",
     "boundary",
+    "origin",
     "fiducial_return",
     "obstacle_return",
     "range_min",
@@ -334,6 +342,7 @@ impl World {
                     size,
                     color: color_of(model)?,
                     fiducial_id: fiducial_of(model)?,
+                    origin: origin_of(model)?,
                     shape: blocks::model_blocks(model, [size[0], size[1]])?,
                 };
                 self.obstacles.push(obstacle);

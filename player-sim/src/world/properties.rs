@@ -61,6 +61,14 @@ pub(super) fn pose_of(m: &Model) -> Result<Pose, WorldFileError> {
         .map(Option::unwrap_or_default)
 }
 
+/// `origin [x y z a]`: where a model's body lies from its pose (none by default).
+pub(super) fn origin_of(m: &Model) -> Result<Pose, WorldFileError> {
+    m.get("origin")
+        .map(pose_from)
+        .transpose()
+        .map(Option::unwrap_or_default)
+}
+
 pub(super) fn size_of(m: &Model, default: [f64; 3]) -> Result<[f64; 3], WorldFileError> {
     let Some(p) = m.get("size") else {
         return Ok(default);
