@@ -3,7 +3,7 @@
 //! (configs/skins/rover.obj) is drawn, not the box; its controls show over the view while it is
 //! selected, and the popup of its actions on another robot opens, as does the popup of its
 //! "Go to point…" service. The pictures are saved for people to look at
-//! (target/tmp/teleop_close.png, teleop_service_popup.png) and the skin's pixels checked.
+//! (target/tmp/teleop_close.png, teleop_perspective.png, teleop_service_popup.png) and the skin's pixels checked.
 
 use std::time::{Duration, Instant};
 
@@ -76,6 +76,20 @@ fn the_teleop_composition_wears_rover_skins_and_shows_controls_and_popups() {
         "r0's body should fill the view's middle: {count} blue pixels ({})",
         out.display()
     );
+
+    // The same robot in perspective, from the side and above: wheels, nose and deck.
+    viewer.close_popup();
+    viewer.view.camera.toggle_projection();
+    viewer.view.camera.orbit(0.6, -0.5);
+    viewer.view.camera.distance = 1.6;
+    for _ in 0..2 {
+        viewer.update(Instant::now());
+        ui.run(|ui| viewer.ui(ui));
+    }
+    ui.read_pixels()
+        .save(out.with_file_name("teleop_perspective.png"))
+        .unwrap();
+    viewer.view.camera.toggle_projection();
 
     // The item tree's "Go to point…" opens its popup (drawn; saved beside the other picture).
     let active = viewer.active_title().unwrap();

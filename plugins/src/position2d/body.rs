@@ -21,16 +21,17 @@ pub fn body_geometry(
         Some(mesh) => fit_into(g, mesh, size, color),
         None => g.cuboid(Vec3::new(0.0, 0.0, size.z / 2.0), size, color),
     }
-    // The nose: a bright triangle on top, pointing forward (+x); a small one at the front edge
-    // over a skin, which shows its own shape.
-    let top = size.z + 0.005;
+    // The nose: a bright triangle pointing forward (+x), on top of a box; a skin has a shape
+    // of its own that need not be flat on top, so there it lies on the ground just ahead.
     let (l, w) = (size.x / 2.0, size.y / 2.0);
-    let back = if skin.is_some() { l * 0.6 } else { l * 0.2 };
-    let half_width = if skin.is_some() { w * 0.25 } else { w * 0.6 };
+    let (tip, back, half_width, z) = match skin {
+        None => (l, l * 0.2, w * 0.6, size.z + 0.005),
+        Some(_) => (l + 0.12, l + 0.02, w * 0.3, 0.01),
+    };
     g.triangle(
-        Vec3::new(l, 0.0, top),
-        Vec3::new(back, half_width, top),
-        Vec3::new(back, -half_width, top),
+        Vec3::new(tip, 0.0, z),
+        Vec3::new(back, half_width, z),
+        Vec3::new(back, -half_width, z),
         Rgba::rgb(245, 245, 245),
     );
     if active {
