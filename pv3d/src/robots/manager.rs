@@ -13,6 +13,10 @@ use pv3d_plugins::device::DeviceAccess;
 use super::device_link::ClientDevice;
 use crate::composition::{ClientDecl, FoundDevice};
 
+/// Silence after which a server is asked whether it is still there (a device-list request it
+/// always answers); no answer, and the connection is dropped and re-established.
+const STALL_TIMEOUT: Duration = Duration::from_secs(3);
+
 /// Every Player server of a composition.
 pub struct RobotManager {
     clients: Vec<(String, u16, Arc<Client>)>,
@@ -33,6 +37,8 @@ impl RobotManager {
             }
             let options = ClientOptions {
                 notifier: notifier.clone(),
+                // A viewer must show a robot whose server hangs, not its last data forever.
+                stall_timeout: Some(STALL_TIMEOUT),
                 ..ClientOptions::default()
             };
             match Client::spawn(&server.host, server.port, options) {
