@@ -86,3 +86,34 @@ pub fn run_for(viewer: &mut Viewer, duration: Duration) {
         std::thread::sleep(Duration::from_millis(20));
     }
 }
+
+/// A port on 127.0.0.1 that nobody listens on (yet).
+pub fn unused_port() -> u16 {
+    std::net::TcpListener::bind("127.0.0.1:0")
+        .and_then(|l| l.local_addr())
+        .expect("a free port")
+        .port()
+}
+
+/// Points every Player client of `composition` at 127.0.0.1:`port`.
+pub fn point_at(composition: &mut Composition, port: u16) {
+    for client in &mut composition.clients {
+        client.host = "127.0.0.1".into();
+        client.port = port;
+    }
+}
+
+/// Serves `world` (relative to the checkout) with every device on one given port, as a
+/// server restarted on its old port, or started after the viewer, would be.
+pub fn serve_on_port(world: &str, port: u16) -> Running {
+    use player_sim::{served::from_cfg, sim::Simulation, world::World};
+    let world_file = repo_root().join(world);
+    let world = World::load(&world_file).expect("world");
+    let mut devices =
+        from_cfg(&world_file.with_extension("cfg"), &world, &mut Vec::new()).expect("cfg");
+    for device in &mut devices {
+        device.port = port;
+    }
+    player_sim::serve::serve(Simulation::new(world), devices, ServeOptions::default())
+        .expect("the server starts")
+}
