@@ -21,9 +21,9 @@ pub enum WorldError {
 }
 
 /// Serves a Stage world (with the `.cfg` beside it) on free ports. Every Player client of the
-/// composition whose port the world configures is pointed at the port it got; a served port
-/// no client names gets a client of its own, so a composition of masks alone shows every
-/// robot. A ground plugin without a bitmap gets the world's floorplan.
+/// composition whose port the world configures is pointed at the port it got; a composition
+/// that names no server gets one for every served port, so masks alone show every robot. A
+/// ground plugin without a bitmap gets the world's floorplan.
 pub fn serve_world(
     world_file: &Path,
     composition: &mut Composition,
@@ -48,8 +48,11 @@ pub fn serve_world(
     Ok(running)
 }
 
-/// `ports`: (configured, actually served) pairs.
+/// `ports`: (configured, actually served) pairs. A composition that names servers chose its
+/// robots (the paper's three of five): only those are pointed at the world. One that names
+/// none gets every robot.
 fn point_clients_at(composition: &mut Composition, ports: &[(u16, u16)]) {
+    let every_robot = composition.clients.is_empty();
     for &(configured, actual) in ports {
         match composition
             .clients
@@ -60,11 +63,12 @@ fn point_clients_at(composition: &mut Composition, ports: &[(u16, u16)]) {
                 client.host = "127.0.0.1".into();
                 client.port = actual;
             }
-            None => composition.clients.push(ClientDecl {
+            None if every_robot => composition.clients.push(ClientDecl {
                 host: "127.0.0.1".into(),
                 port: actual,
                 pos: SourcePos::generated(),
             }),
+            None => {}
         }
     }
 }
