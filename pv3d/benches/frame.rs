@@ -20,7 +20,7 @@ use player_proto::interfaces::laser::{Laser, LaserScan};
 use player_proto::interfaces::position2d::{Position2d, Position2dData};
 use player_proto::message::Message;
 use player_proto::{DevAddr, Interface, MsgType};
-use pv3d::app::Viewer;
+use pv3d::app::{HeadlessUi, Viewer};
 use pv3d::composition::{Composition, FoundDevice, ParserRegistry, instantiate, parse_str};
 use pv3d::render::{HeadlessGl, OrbitCamera, SceneBatch, SceneRenderer};
 use pv3d_plugins::device::{DeviceAccess, RecordingDevice};
@@ -240,5 +240,24 @@ fn frames(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, frames);
+/// The whole window's pass offscreen, as `--screenshot` runs it: the plugins' update, egui's
+/// layout of the item tree (every plugin a row), the status panel and the labels, and the
+/// 3D view painted through our renderer — against the frame alone above.
+fn window_frames(c: &mut Criterion) {
+    let mut ui = HeadlessUi::new(SIZE.0, SIZE.1).expect("headless GL (Mesa EGL)");
+    let mut group = c.benchmark_group("redraw_256_robots");
+    group.sample_size(20);
+    let mut swarm = Swarm::new(true);
+    group.bench_function("window_pass_with_filled_free_space", |b| {
+        b.iter(|| {
+            swarm.new_data();
+            swarm.viewer.update(Instant::now());
+            ui.run(|ui| swarm.viewer.ui(ui));
+            ui.finish();
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, frames, window_frames);
 criterion_main!(benches);

@@ -59,6 +59,12 @@ impl HeadlessUi {
         );
     }
 
+    /// Waits until everything painted so far is drawn (for timing).
+    pub fn finish(&self) {
+        // SAFETY: the context is current on this thread.
+        unsafe { eframe::glow::HasContext::finish(&*self.gl.gl) };
+    }
+
     /// The last painted frame.
     pub fn read_pixels(&self) -> RgbaImage {
         self.gl.read_pixels()

@@ -27,19 +27,40 @@ pub enum RedrawPolicy {
 /// Wakes the UI from other threads; set once the window exists.
 #[derive(Clone, Default)]
 pub struct UiWaker {
-    ctx: Arc<Mutex<Option<(egui::Context, Duration)>>>,
+    inner: Arc<Mutex<Option<Wake>>>,
+}
+
+struct Wake {
+    ctx: egui::Context,
+    interval: Duration,
+    /// When the last frame started: the next one is due one interval after it.
+    last_frame: Instant,
 }
 
 impl UiWaker {
-    /// New data arrived: schedule a repaint within the redraw interval.
+    /// New data arrived: schedule a repaint one interval after the last frame started — not
+    /// one interval from now, which would add the frame's own time to every period (a frame
+    /// of 90 ms made a 0.10 s interval into 0.19 s).
     pub fn wake(&self) {
-        if let Some((ctx, interval)) = self.ctx.lock().expect("waker").as_ref() {
-            ctx.request_repaint_after(*interval);
+        if let Some(wake) = self.inner.lock().expect("waker").as_ref() {
+            let due = wake.interval.saturating_sub(wake.last_frame.elapsed());
+            wake.ctx.request_repaint_after(due);
+        }
+    }
+
+    /// A frame is starting.
+    fn frame_started(&self) {
+        if let Some(wake) = self.inner.lock().expect("waker").as_mut() {
+            wake.last_frame = Instant::now();
         }
     }
 
     fn install(&self, ctx: egui::Context, interval: Duration) {
-        *self.ctx.lock().expect("waker") = Some((ctx, interval));
+        *self.inner.lock().expect("waker") = Some(Wake {
+            ctx,
+            interval,
+            last_frame: Instant::now(),
+        });
     }
 }
 
@@ -58,6 +79,7 @@ struct WindowApp {
     quit_after: Option<Duration>,
     frame_stats: bool,
     frames: u64,
+    waker: UiWaker,
     started: Instant,
     shot_requested: bool,
     shot_done: Arc<Mutex<Option<Result<(), String>>>>,
@@ -66,6 +88,7 @@ struct WindowApp {
 
 impl eframe::App for WindowApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.waker.frame_started();
         self.frames += 1;
         (self.on_frame)(&mut self.viewer);
         self.viewer.update(Instant::now());
@@ -174,6 +197,7 @@ pub fn run_window(
         quit_after: options.quit_after,
         frame_stats: options.frame_stats,
         frames: 0,
+        waker: waker.clone(),
         started: Instant::now(),
         shot_requested: false,
         shot_done: Arc::default(),
