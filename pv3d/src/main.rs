@@ -127,6 +127,15 @@ fn main() -> Result<()> {
     if cli.headless && cli.screenshot.is_none() && cli.emit_config.is_none() {
         bail!("--headless draws no window: it needs --screenshot OUT.png");
     }
+    let no_display =
+        std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none();
+    if no_display && cli.screenshot.is_none() && cli.emit_config.is_none() {
+        bail!(
+            "no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is set): run \
+             pv3d on a desktop, under `xvfb-run`, or add `--screenshot out.png` to render \
+             offscreen"
+        );
+    }
 
     let parsers = ParserRegistry::standard();
     let mut composition = Composition::load_files(&cli.files, &parsers)?;
@@ -173,8 +182,6 @@ fn main() -> Result<()> {
     }
     let interval = Duration::from_secs_f64(cli.redraw_interval);
     let after = Duration::from_secs_f64(cli.after);
-    let no_display =
-        std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none();
 
     match &cli.screenshot {
         Some(path) if cli.headless || no_display => {

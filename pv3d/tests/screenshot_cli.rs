@@ -246,3 +246,17 @@ fn any_stage_world_is_shown_with_its_floorplan_and_every_robot() {
         "the ground got the floorplan: {text}"
     );
 }
+
+#[test]
+fn no_display_and_no_screenshot_says_what_to_do() {
+    let out = pv3d()
+        .arg("--demo")
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("no display"), "{stderr}");
+    assert!(stderr.contains("--screenshot"), "{stderr}");
+}
