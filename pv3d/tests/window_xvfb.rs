@@ -157,8 +157,11 @@ fn an_idle_window_does_not_redraw_and_a_busy_one_keeps_its_interval() {
         String::from_utf8_lossy(&busy.stderr)
     );
     let busy_frames = frames(&busy);
+    // The upper bound is the point: one frame per message would be about 200. The lower one
+    // only says it drew at all (a debug build on a loaded machine may take longer than the
+    // interval per frame).
     assert!(
-        (15..=60).contains(&busy_frames),
+        (5..=60).contains(&busy_frames),
         "a window with data at 50 messages/s drew {busy_frames} frames in 4 s"
     );
 }
