@@ -39,3 +39,58 @@ fn the_arena_bitmap_becomes_walls_in_place() {
         .is_err()
     );
 }
+
+#[test]
+fn block_walls_stand_up_and_bad_ones_say_where() {
+    use pv3d_plugins::config::{Param, PluginConfig};
+    use pv3d_plugins::plugin::{Anchors, PluginContext};
+    use pv3d_plugins::scene::Scene;
+
+    let wall = |text: &str| {
+        let mut p = Param::new("wall", text);
+        p.origin = "blocks.xml:7:5".into();
+        p
+    };
+    let config = |params: Vec<Param>| PluginConfig {
+        library: "libpv3d_ground".into(),
+        params,
+        origin: "blocks.xml:3:3".into(),
+        ..PluginConfig::default()
+    };
+    let mut scene = Scene::new();
+    let mut anchors = Anchors::default();
+    let mut ctx = PluginContext {
+        scene: &mut scene,
+        device: None,
+        anchors: &mut anchors,
+        now: std::time::Instant::now(),
+    };
+    let create = pv3d_plugins::standard_plugins()
+        .constructor("libpv3d_ground")
+        .unwrap();
+    // An L-shaped partition: six walls and a four-triangle top.
+    create(
+        config(vec![
+            wall("0 0  2 0  2 0.2  0.2 0.2  0.2 2  0 2"),
+            Param::new("wallHeight", "0.8"),
+        ]),
+        &mut ctx,
+    )
+    .unwrap();
+    let (_, ground) = ctx.scene.iter().next().unwrap();
+    assert_eq!(ground.geometry.mesh.len(), 6 * 6 + 4 * 3);
+    let top = ground
+        .geometry
+        .mesh
+        .iter()
+        .map(|v| v.pos.z)
+        .fold(0.0, f32::max);
+    assert!((top - 0.8).abs() < 1e-6, "wallHeight: {top}");
+
+    let err = create(config(vec![wall("0 0 1")]), &mut ctx)
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(err.starts_with("blocks.xml:7:5"), "{err}");
+    assert!(err.contains("three corners"), "{err}");
+}

@@ -7,7 +7,7 @@ use std::path::Path;
 use player_sim::serve::{Running, ServeOptions, serve};
 use player_sim::served::from_cfg;
 use player_sim::sim::Simulation;
-use player_sim::world::{Floorplan, World};
+use player_sim::world::{Floorplan, Polygon, World};
 
 use crate::composition::{ClientDecl, Composition, Element, Node, SourcePos};
 
@@ -36,6 +36,7 @@ pub fn serve_world(
         tracing::info!("{}: {note}", world_file.display());
     }
     let floorplan = world.floorplan.clone();
+    let blocks = (world.floor_blocks.clone(), world.floor_height);
     let options = ServeOptions {
         free_ports: true,
         ..options
@@ -45,6 +46,7 @@ pub fn serve_world(
     if let Some(floorplan) = &floorplan {
         give_ground_the_floorplan(composition, floorplan);
     }
+    give_ground_the_block_walls(composition, &blocks.0, blocks.1);
     Ok(running)
 }
 
@@ -104,6 +106,31 @@ fn give_ground_the_floorplan(composition: &mut Composition, floorplan: &Floorpla
                 element.children.push(Node::Text(value));
                 ground.children.push(Node::Element(element));
             }
+        }
+    }
+}
+
+/// Floorplans drawn with Stage `block`s: each polygon becomes a `<wall>` of every ground that
+/// has none of its own.
+fn give_ground_the_block_walls(composition: &mut Composition, walls: &[Polygon], height: f64) {
+    if walls.is_empty() {
+        return;
+    }
+    let grounds = composition
+        .plugins
+        .iter_mut()
+        .filter(|p| p.attr("library") == Some("libpv3d_ground") && p.child("wall").is_none());
+    for ground in grounds {
+        for wall in walls {
+            let corners: Vec<String> = wall.iter().map(|[x, y]| format!("{x} {y}")).collect();
+            let mut element = Element::new("wall", SourcePos::generated());
+            element.children.push(Node::Text(corners.join("  ")));
+            ground.children.push(Node::Element(element));
+        }
+        if ground.child("wallHeight").is_none() {
+            let mut element = Element::new("wallHeight", SourcePos::generated());
+            element.children.push(Node::Text(height.to_string()));
+            ground.children.push(Node::Element(element));
         }
     }
 }

@@ -260,3 +260,31 @@ fn no_display_and_no_screenshot_says_what_to_do() {
     assert!(stderr.contains("no display"), "{stderr}");
     assert!(stderr.contains("--screenshot"), "{stderr}");
 }
+
+#[test]
+fn a_world_drawn_with_blocks_shows_its_block_walls() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("blocks.png");
+    let out = pv3d()
+        .args(["--world", "../stage-worlds/blocks.world", "--headless"])
+        .args(["--after", "0.5", "--size", "800x600", "--screenshot"])
+        .arg(&png)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let image = image::open(&png).unwrap().to_rgba8();
+    // The walls' lit tops, in the ground's wall grey.
+    let walls = image
+        .pixels()
+        .filter(|p| {
+            (130..=175).contains(&p[0])
+                && (p[0] as i32 - p[2] as i32).abs() < 20
+                && (p[0] as i32 - p[1] as i32).abs() < 12
+        })
+        .count();
+    assert!(walls > 5000, "the block room's walls: {walls} pixels");
+}

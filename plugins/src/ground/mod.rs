@@ -3,7 +3,8 @@
 //! The ground is a plain plane, optionally with the walls of a floorplan bitmap standing on it
 //! (`<bitmap>../stage-worlds/bitmaps/arena.png</bitmap> <bitmapSize>20 16</bitmapSize>`,
 //! optional `<bitmapCentre>0 0</bitmapCentre>`, `<wallHeight>0.5</wallHeight>`, `<wallColor>`;
-//! `<size>` is the plane's own extent); the grid draws
+//! `<size>` is the plane's own extent), and walls drawn with Stage blocks, each a polygon
+//! (`<wall>-5 -4  5 -4  5 -3.8  -5 -3.8</wall>`, any number) stood up to `wallHeight`; the grid draws
 //! metre lines and axes; the lights set the light direction, ambient level and background.
 
 mod floorplan;
@@ -12,8 +13,9 @@ pub use floorplan::{Placement, walls_from_bitmap};
 
 use glam::Vec3;
 
-use crate::config::{ConfigValueError, PluginConfig};
+use crate::config::{ConfigValueError, Param, PluginConfig};
 use crate::plugin::{Anchors, Plugin, PluginContext};
+use crate::scene::polygon::{parse_corners, prism};
 use crate::scene::{NodeId, Object3D, Rgba, Scene, SceneLighting};
 
 /// Fixed scene content placed once: the ground plane, the grid.
@@ -87,6 +89,21 @@ impl Ground {
                     message,
                 },
             )?;
+        }
+        // Walls drawn with Stage blocks: each <wall> a polygon, stood up to wallHeight.
+        let walls: Vec<&Param> = config.params.iter().filter(|p| p.name == "wall").collect();
+        if !walls.is_empty() {
+            let height = config.number("wallHeight", 0.5, 0.0..=100.0)? as f32;
+            let wall_color = config.color("wallColor", Rgba::rgb(150, 150, 158))?;
+            for wall in walls {
+                let corners = parse_corners(&wall.text).map_err(|message| ConfigValueError {
+                    origin: wall.origin.clone(),
+                    library: config.library.clone(),
+                    param: "wall".into(),
+                    message,
+                })?;
+                prism(&corners, height, wall_color, &mut object.geometry);
+            }
         }
         object.tags.push("ground".into());
         let node = ctx.scene.add(object);

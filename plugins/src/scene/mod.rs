@@ -5,6 +5,7 @@
 //! changes ([`Scene::generation`]) so the viewer redraws only when something changed.
 
 mod geometry;
+pub mod polygon;
 
 use std::collections::BTreeMap;
 

@@ -6,8 +6,6 @@
 //! robot enters or leaves one, the plugin says so in its panel and in the log — the paper's
 //! awareness events.
 
-mod polygon;
-
 use std::collections::{HashSet, VecDeque};
 
 use glam::{Vec2, Vec3};
@@ -16,7 +14,7 @@ use crate::config::{ConfigValueError, Param, PluginConfig};
 use crate::plugin::{Anchors, Plugin, PluginContext};
 use crate::scene::{NodeId, Object3D, Rgba, Scene};
 
-pub use polygon::{contains, triangulate};
+use crate::scene::polygon::{contains, parse_corners, triangulate};
 
 /// Zones lie this far above the ground, under everything else.
 const HEIGHT: f32 = 0.005;
@@ -113,38 +111,10 @@ fn read_zone(config: &PluginConfig, param: &Param) -> Result<Zone, ConfigValueEr
                 "needs a name attribute, e.g. <zone name=\"dock\">".into(),
             )
         })?;
-    let numbers: Vec<f32> = param
-        .text
-        .split(|c: char| c.is_whitespace() || c == ',')
-        .filter(|t| !t.is_empty())
-        .map(|t| t.parse::<f32>().ok().filter(|v| v.is_finite()))
-        .collect::<Option<_>>()
-        .ok_or_else(|| {
-            error(
-                config,
-                param,
-                format!(
-                    "corners must be numbers, x y x y …; found {:?}",
-                    param.text.trim()
-                ),
-            )
-        })?;
-    if !numbers.len().is_multiple_of(2) || numbers.len() < 6 {
-        return Err(error(
-            config,
-            param,
-            format!(
-                "needs three corners or more as x y pairs; found {} numbers",
-                numbers.len()
-            ),
-        ));
-    }
+    let corners = parse_corners(&param.text).map_err(|message| error(config, param, message))?;
     Ok(Zone {
         name: name.to_string(),
-        corners: numbers
-            .chunks(2)
-            .map(|xy| Vec2::new(xy[0], xy[1]))
-            .collect(),
+        corners,
     })
 }
 

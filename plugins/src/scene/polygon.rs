@@ -1,7 +1,34 @@
-//! Plane polygons for zones: is a point inside, and triangles that fill one (any simple
-//! polygon, convex or not, either winding).
+//! Plane polygons (zones, block walls): is a point inside, triangles that fill one (any
+//! simple polygon, convex or not, either winding), and a polygon stood up as a solid prism.
 
-use glam::Vec2;
+use glam::{Vec2, Vec3};
+
+use super::{Geometry, MeshVertex, Rgba};
+
+/// Reads corners written as `x y  x y  x y …` (spaces or commas): three or more.
+pub fn parse_corners(text: &str) -> Result<Vec<Vec2>, String> {
+    let numbers: Vec<f32> = text
+        .split(|c: char| c.is_whitespace() || c == ',')
+        .filter(|t| !t.is_empty())
+        .map(|t| t.parse::<f32>().ok().filter(|v| v.is_finite()))
+        .collect::<Option<_>>()
+        .ok_or_else(|| {
+            format!(
+                "corners must be numbers, x y x y …; found {:?}",
+                text.trim()
+            )
+        })?;
+    if !numbers.len().is_multiple_of(2) || numbers.len() < 6 {
+        return Err(format!(
+            "needs three corners or more as x y pairs; found {} numbers",
+            numbers.len()
+        ));
+    }
+    Ok(numbers
+        .chunks(2)
+        .map(|xy| Vec2::new(xy[0], xy[1]))
+        .collect())
+}
 
 /// Whether `p` lies inside `polygon` (even-odd rule; a point on an edge may go either way).
 pub fn contains(polygon: &[Vec2], p: Vec2) -> bool {
@@ -66,6 +93,47 @@ fn is_ear(polygon: &[Vec2], left: &[usize], a: usize, b: usize, c: usize) -> boo
         .any(|&k| contains(&[pa, pb, pc], polygon[k]))
 }
 
+/// A polygon on the ground extruded to `height`: lit side faces and a top cap, as solid walls
+/// drawn with Stage `block`s are.
+pub fn prism(polygon: &[Vec2], height: f32, color: Rgba, geometry: &mut Geometry) {
+    if polygon.len() < 3 {
+        return;
+    }
+    let anticlockwise = signed_area2(polygon) > 0.0;
+    for (i, &a) in polygon.iter().enumerate() {
+        let b = polygon[(i + 1) % polygon.len()];
+        let edge = b - a;
+        let outward = if anticlockwise {
+            Vec2::new(edge.y, -edge.x)
+        } else {
+            Vec2::new(-edge.y, edge.x)
+        };
+        let normal = outward.normalize_or_zero().extend(0.0);
+        let corners = [
+            a.extend(0.0),
+            b.extend(0.0),
+            b.extend(height),
+            a.extend(height),
+        ];
+        for k in [0, 1, 2, 0, 2, 3] {
+            geometry.mesh.push(MeshVertex {
+                pos: corners[k],
+                normal,
+                color,
+            });
+        }
+    }
+    for [a, b, c] in triangulate(polygon) {
+        for k in [a, b, c] {
+            geometry.mesh.push(MeshVertex {
+                pos: polygon[k].extend(height),
+                normal: Vec3::Z,
+                color,
+            });
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -104,6 +172,32 @@ mod tests {
             "the missing corner is outside"
         );
         assert!(!contains(&l, Vec2::new(-0.1, 0.5)));
+    }
+
+    #[test]
+    fn a_prism_has_a_wall_per_edge_and_a_cap() {
+        let square = [Vec2::ZERO, Vec2::X, Vec2::ONE, Vec2::Y];
+        let mut g = Geometry::default();
+        prism(&square, 0.8, Rgba::WHITE, &mut g);
+        assert_eq!(
+            g.mesh.len(),
+            4 * 6 + 2 * 3,
+            "four walls, a two-triangle cap"
+        );
+        // The wall along y = 0 faces south, away from the square, whatever the winding.
+        let south = g.mesh[..6].iter().map(|v| v.normal).next().unwrap();
+        assert!((south - Vec3::NEG_Y).length() < 1e-6, "{south}");
+        let mut reversed = square;
+        reversed.reverse();
+        let mut h = Geometry::default();
+        prism(&reversed, 0.8, Rgba::WHITE, &mut h);
+        assert!(
+            h.mesh[..24].iter().all(|v| {
+                let mid = Vec2::new(0.5, 0.5);
+                (v.pos.truncate() - mid).dot(v.normal.truncate()) > 0.0
+            }),
+            "outward for either winding"
+        );
     }
 
     #[test]
