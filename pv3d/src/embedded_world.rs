@@ -7,7 +7,8 @@ use std::path::Path;
 use player_sim::serve::{Running, ServeOptions, serve};
 use player_sim::served::from_cfg;
 use player_sim::sim::Simulation;
-use player_sim::world::{Floorplan, Polygon, World};
+use player_sim::sim::body_at;
+use player_sim::world::{BoxObstacle, Floorplan, Polygon, World, placed};
 
 use crate::composition::{ClientDecl, Composition, Element, Node, SourcePos};
 
@@ -37,6 +38,7 @@ pub fn serve_world(
     }
     let floorplan = world.floorplan.clone();
     let blocks = (world.floor_blocks.clone(), world.floor_height);
+    let obstacles: Vec<Obstacle> = world.obstacles.iter().flat_map(obstacle_walls).collect();
     let options = ServeOptions {
         free_ports: true,
         ..options
@@ -46,7 +48,7 @@ pub fn serve_world(
     if let Some(floorplan) = &floorplan {
         give_ground_the_floorplan(composition, floorplan);
     }
-    give_ground_the_block_walls(composition, &blocks.0, blocks.1);
+    give_ground_the_block_walls(composition, &blocks.0, blocks.1, &obstacles);
     Ok(running)
 }
 
@@ -110,21 +112,65 @@ fn give_ground_the_floorplan(composition: &mut Composition, floorplan: &Floorpla
     }
 }
 
-/// Floorplans drawn with Stage `block`s: each polygon becomes a `<wall>` of every ground that
-/// has none of its own.
-fn give_ground_the_block_walls(composition: &mut Composition, walls: &[Polygon], height: f64) {
-    if walls.is_empty() {
+/// An obstacle's outline on the ground, with its height and colour.
+struct Obstacle {
+    outline: Polygon,
+    height: f64,
+    color: [u8; 3],
+}
+
+/// A box (or the blocks it is drawn with) where the simulator has it.
+fn obstacle_walls(o: &BoxObstacle) -> Vec<Obstacle> {
+    let body = body_at(o.pose, o.origin);
+    let (hx, hy) = (o.size[0] / 2.0, o.size[1] / 2.0);
+    let outlines = if o.shape.is_empty() {
+        vec![placed(&[[-hx, -hy], [hx, -hy], [hx, hy], [-hx, hy]], body)]
+    } else {
+        o.shape.iter().map(|p| placed(p, body)).collect()
+    };
+    outlines
+        .into_iter()
+        .map(|outline| Obstacle {
+            outline,
+            height: o.size[2],
+            color: o.color,
+        })
+        .collect()
+}
+
+/// Floorplans drawn with Stage `block`s, and the world's obstacles: each polygon becomes a
+/// `<wall>` of every ground that has none of its own.
+fn give_ground_the_block_walls(
+    composition: &mut Composition,
+    walls: &[Polygon],
+    height: f64,
+    obstacles: &[Obstacle],
+) {
+    if walls.is_empty() && obstacles.is_empty() {
         return;
     }
+    let corners = |polygon: &Polygon| -> String {
+        let corners: Vec<String> = polygon.iter().map(|[x, y]| format!("{x} {y}")).collect();
+        corners.join("  ")
+    };
     let grounds = composition
         .plugins
         .iter_mut()
         .filter(|p| p.attr("library") == Some("libpv3d_ground") && p.child("wall").is_none());
     for ground in grounds {
         for wall in walls {
-            let corners: Vec<String> = wall.iter().map(|[x, y]| format!("{x} {y}")).collect();
             let mut element = Element::new("wall", SourcePos::generated());
-            element.children.push(Node::Text(corners.join("  ")));
+            element.children.push(Node::Text(corners(wall)));
+            ground.children.push(Node::Element(element));
+        }
+        for obstacle in obstacles {
+            let mut element = Element::new("wall", SourcePos::generated());
+            let [r, g, b] = obstacle.color;
+            element.set_attr("height", obstacle.height.to_string());
+            element.set_attr("color", format!("#{r:02x}{g:02x}{b:02x}"));
+            element
+                .children
+                .push(Node::Text(corners(&obstacle.outline)));
             ground.children.push(Node::Element(element));
         }
         if ground.child("wallHeight").is_none() {

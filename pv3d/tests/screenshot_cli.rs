@@ -287,4 +287,10 @@ fn a_world_drawn_with_blocks_shows_its_block_walls() {
         })
         .count();
     assert!(walls > 5000, "the block room's walls: {walls} pixels");
+    // The red triangular crate, an obstacle drawn with a block of its own.
+    let crate_pixels = image
+        .pixels()
+        .filter(|p| p[0] > 120 && p[1] < 60 && p[2] < 60)
+        .count();
+    assert!(crate_pixels > 300, "the crate: {crate_pixels} pixels");
 }

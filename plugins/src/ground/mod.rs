@@ -4,7 +4,8 @@
 //! (`<bitmap>../stage-worlds/bitmaps/arena.png</bitmap> <bitmapSize>20 16</bitmapSize>`,
 //! optional `<bitmapCentre>0 0</bitmapCentre>`, `<wallHeight>0.5</wallHeight>`, `<wallColor>`;
 //! `<size>` is the plane's own extent), and walls drawn with Stage blocks, each a polygon
-//! (`<wall>-5 -4  5 -4  5 -3.8  -5 -3.8</wall>`, any number) stood up to `wallHeight`; the grid draws
+//! (`<wall>-5 -4  5 -4  5 -3.8  -5 -3.8</wall>`, any number) stood up to `wallHeight`, or
+//! to their own `height` and `color` attributes (obstacles); the grid draws
 //! metre lines and axes; the lights set the light direction, ambient level and background.
 
 mod floorplan;
@@ -96,13 +97,30 @@ impl Ground {
             let height = config.number("wallHeight", 0.5, 0.0..=100.0)? as f32;
             let wall_color = config.color("wallColor", Rgba::rgb(150, 150, 158))?;
             for wall in walls {
-                let corners = parse_corners(&wall.text).map_err(|message| ConfigValueError {
+                let bad = |message: String| ConfigValueError {
                     origin: wall.origin.clone(),
                     library: config.library.clone(),
                     param: "wall".into(),
                     message,
-                })?;
-                prism(&corners, height, wall_color, &mut object.geometry);
+                };
+                let corners = parse_corners(&wall.text).map_err(bad)?;
+                // A wall may be an obstacle of its own height and colour (a crate, a landmark).
+                let height = match wall.attr("height") {
+                    Some(h) => h
+                        .trim()
+                        .parse::<f32>()
+                        .ok()
+                        .filter(|h| (0.0..=100.0).contains(h))
+                        .ok_or_else(|| bad(format!("height {h:?} is not metres from 0 to 100")))?,
+                    None => height,
+                };
+                let color = match wall.attr("color") {
+                    Some(c) => crate::config::parse_color(c.trim()).ok_or_else(|| {
+                        bad(format!("color {c:?} is not a colour such as #808080"))
+                    })?,
+                    None => wall_color,
+                };
+                prism(&corners, height, color, &mut object.geometry);
             }
         }
         object.tags.push("ground".into());
