@@ -1,45 +1,15 @@
 //! Every example composition in configs/, run against the Stage world it was written for
 //! (simulated in-process) and screenshotted offscreen: what each promises is on the picture.
 
+mod support;
+
 use std::path::Path;
-use std::process::Command;
 
-use image::{Rgba, RgbaImage};
+use support::{count, laser_pixels, pv3d, robot_pixels, run_ok};
 
-fn screenshot(world: &str, composition: &str, dir: &Path) -> RgbaImage {
+fn screenshot(world: &str, composition: &str, dir: &Path) -> image::RgbaImage {
     let png = dir.join(format!("{}.png", composition.replace('/', "_")));
-    let out = Command::new(env!("CARGO_BIN_EXE_pv3d"))
-        .args(["--world", world, composition, "--headless"])
-        .args(["--after", "1.5", "--size", "1000x700", "--screenshot"])
-        .arg(&png)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{composition}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(!stderr.contains("ERROR"), "{composition}: {stderr}");
-    image::open(&png).unwrap().to_rgba8()
-}
-
-fn count(image: &RgbaImage, test: impl Fn(&Rgba<u8>) -> bool) -> usize {
-    image.pixels().filter(|p| test(p)).count()
-}
-
-/// The body colour position2d draws robots in (a blue), as the demo test counts it.
-fn robot_pixels(image: &RgbaImage) -> usize {
-    count(image, |p| {
-        p[2] > 150 && p[0] < 110 && p[1] > 90 && p[1] < 190
-    })
-}
-
-fn laser_pixels(image: &RgbaImage) -> usize {
-    count(image, |p| {
-        p[0] > 200 && (70..=120).contains(&p[1]) && p[2] < 90
-    })
+    support::screenshot(&["--world", world, composition], "1.5", "1000x700", &png)
 }
 
 #[test]
@@ -79,21 +49,11 @@ fn each_example_composition_shows_what_it_promises() {
     });
     assert!(cones > 2000, "sonar cones: {cones}");
     let emitted = dir.path().join("teleop.xml");
-    let out = Command::new(env!("CARGO_BIN_EXE_pv3d"))
-        .args([
-            "--world",
-            "stage-worlds/multirobot.world",
-            "configs/stage-teleop.pv3d.xml",
-        ])
-        .arg("--emit-config")
-        .arg(&emitted)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    run_ok(
+        pv3d()
+            .args(["--world", "stage-worlds/multirobot.world"])
+            .args(["configs/stage-teleop.pv3d.xml", "--emit-config"])
+            .arg(&emitted),
     );
     let text = std::fs::read_to_string(&emitted).unwrap();
     assert_eq!(text.matches("libpv3d_position2d").count(), 3, "{text}");

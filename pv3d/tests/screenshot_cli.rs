@@ -1,12 +1,11 @@
 //! `pv3d --screenshot` end to end: the binary loads a composition, runs it offscreen and writes
 //! a PNG whose pixels show what the composition says.
 
-use std::path::Path;
-use std::process::Command;
+mod support;
 
-fn pv3d() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_pv3d"))
-}
+use std::path::Path;
+
+use support::{count, laser_pixels, pv3d, robot_pixels, run_ok, screenshot, wall_pixels};
 
 #[test]
 fn a_ground_and_grid_composition_is_drawn_with_its_axes() {
@@ -111,35 +110,12 @@ fn emit_config_writes_a_loadable_composition() {
 #[test]
 fn the_demo_shows_the_arena_robots_and_their_lasers() {
     let dir = tempfile::tempdir().unwrap();
-    let png = dir.path().join("demo.png");
-    let out = pv3d()
-        .args([
-            "--demo",
-            "--headless",
-            "--after",
-            "2.5",
-            "--size",
-            "1000x700",
-            "--screenshot",
-        ])
-        .arg(&png)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let image = screenshot(&["--demo"], "2.5", "1000x700", &dir.path().join("demo.png"));
+    let (walls, robots, lasers) = (
+        wall_pixels(&image),
+        robot_pixels(&image),
+        laser_pixels(&image),
     );
-    let image = image::open(&png).unwrap().to_rgba8();
-    let count =
-        |test: &dyn Fn(&image::Rgba<u8>) -> bool| image.pixels().filter(|p| test(p)).count();
-    let walls = count(&|p| {
-        (130..=175).contains(&p[0])
-            && (p[0] as i32 - p[2] as i32).abs() < 20
-            && (p[0] as i32 - p[1] as i32).abs() < 12
-    });
-    let robots = count(&|p| p[2] > 150 && p[0] < 110 && p[1] > 90 && p[1] < 190);
-    let lasers = count(&|p| p[0] > 200 && (70..=120).contains(&p[1]) && p[2] < 90);
     assert!(walls > 3000, "the arena's walls: {walls} pixels");
     assert!(robots > 5 * 40, "five robot bodies: {robots} pixels");
     assert!(lasers > 300, "laser returns: {lasers} pixels");
@@ -195,28 +171,14 @@ fn the_plugins_state_is_written_back_on_exit() {
 #[test]
 fn any_stage_world_is_shown_with_its_floorplan_and_every_robot() {
     let dir = tempfile::tempdir().unwrap();
-    let png = dir.path().join("classroom.png");
     let emitted = dir.path().join("classroom.xml");
-    let out = pv3d()
-        .args(["--world", "../stage-worlds/classroom.world", "--headless"])
-        .args(["--after", "1.5", "--size", "1000x700", "--screenshot"])
-        .arg(&png)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let image = screenshot(
+        &["--world", "stage-worlds/classroom.world"],
+        "1.5",
+        "1000x700",
+        &dir.path().join("classroom.png"),
     );
-    let image = image::open(&png).unwrap().to_rgba8();
-    let count =
-        |test: &dyn Fn(&image::Rgba<u8>) -> bool| image.pixels().filter(|p| test(p)).count();
-    let walls = count(&|p| {
-        (130..=175).contains(&p[0])
-            && (p[0] as i32 - p[2] as i32).abs() < 20
-            && (p[0] as i32 - p[1] as i32).abs() < 12
-    });
-    let robots = count(&|p| p[2] > 150 && p[0] < 110 && p[1] > 90 && p[1] < 190);
+    let (walls, robots) = (wall_pixels(&image), robot_pixels(&image));
     assert!(
         walls > 3000,
         "the room's walls, from the world's floorplan: {walls} pixels"
@@ -224,19 +186,10 @@ fn any_stage_world_is_shown_with_its_floorplan_and_every_robot() {
     assert!(robots > 8 * 20, "eight robot bodies: {robots} pixels");
 
     // The composition it made: a client per served port, one robot plugin each.
-    let out = pv3d()
-        .args([
-            "--world",
-            "../stage-worlds/classroom.world",
-            "--emit-config",
-        ])
-        .arg(&emitted)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    run_ok(
+        pv3d()
+            .args(["--world", "stage-worlds/classroom.world", "--emit-config"])
+            .arg(&emitted),
     );
     let text = std::fs::read_to_string(&emitted).unwrap();
     assert_eq!(text.matches("<playerClient ").count(), 8, "{text}");
@@ -264,33 +217,16 @@ fn no_display_and_no_screenshot_says_what_to_do() {
 #[test]
 fn a_world_drawn_with_blocks_shows_its_block_walls() {
     let dir = tempfile::tempdir().unwrap();
-    let png = dir.path().join("blocks.png");
-    let out = pv3d()
-        .args(["--world", "../stage-worlds/blocks.world", "--headless"])
-        .args(["--after", "0.5", "--size", "800x600", "--screenshot"])
-        .arg(&png)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let image = screenshot(
+        &["--world", "stage-worlds/blocks.world"],
+        "0.5",
+        "800x600",
+        &dir.path().join("blocks.png"),
     );
-    let image = image::open(&png).unwrap().to_rgba8();
     // The walls' lit tops, in the ground's wall grey.
-    let walls = image
-        .pixels()
-        .filter(|p| {
-            (130..=175).contains(&p[0])
-                && (p[0] as i32 - p[2] as i32).abs() < 20
-                && (p[0] as i32 - p[1] as i32).abs() < 12
-        })
-        .count();
+    let walls = wall_pixels(&image);
     assert!(walls > 5000, "the block room's walls: {walls} pixels");
     // The red triangular crate, an obstacle drawn with a block of its own.
-    let crate_pixels = image
-        .pixels()
-        .filter(|p| p[0] > 120 && p[1] < 60 && p[2] < 60)
-        .count();
+    let crate_pixels = count(&image, |p| p[0] > 120 && p[1] < 60 && p[2] < 60);
     assert!(crate_pixels > 300, "the crate: {crate_pixels} pixels");
 }

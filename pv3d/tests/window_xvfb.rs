@@ -2,9 +2,14 @@
 //! composition says, takes its own screenshot, and redraws only when something changed.
 //! Needs Xvfb (`scripts/setup.sh` installs it).
 
+mod support;
+
 use std::path::Path;
 use std::process::{Child, Command, Output, Stdio};
+use std::sync::atomic::{AtomicU32, Ordering};
 use std::time::{Duration, Instant};
+
+use support::{laser_pixels, robot_pixels};
 
 /// An Xvfb server on a display of its own, stopped when dropped.
 struct Xvfb {
@@ -14,7 +19,11 @@ struct Xvfb {
 
 impl Xvfb {
     fn start() -> Xvfb {
-        let base = 40 + std::process::id() % 400;
+        // Tests of this file run in parallel: each takes displays of its own, so that one
+        // never mistakes the other's Xvfb for the one it started (and loses it when the other
+        // test ends).
+        static NEXT: AtomicU32 = AtomicU32::new(0);
+        let base = 40 + std::process::id() % 400 + 100 * NEXT.fetch_add(1, Ordering::Relaxed);
         for n in base..base + 50 {
             if Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
                 || Path::new(&format!("/tmp/.X{n}-lock")).exists()
@@ -114,14 +123,7 @@ fn the_window_draws_the_demo_and_screenshots_itself() {
     );
     let image = image::open(&png).unwrap().to_rgba8();
     assert_eq!(image.dimensions(), (900, 640), "the window's own size");
-    let lasers = image
-        .pixels()
-        .filter(|p| p[0] > 200 && (70..=120).contains(&p[1]) && p[2] < 90)
-        .count();
-    let robots = image
-        .pixels()
-        .filter(|p| p[2] > 150 && p[0] < 110 && p[1] > 90 && p[1] < 190)
-        .count();
+    let (lasers, robots) = (laser_pixels(&image), robot_pixels(&image));
     assert!(lasers > 200, "laser returns in the window: {lasers} pixels");
     assert!(robots > 100, "robot bodies in the window: {robots} pixels");
 }
