@@ -219,14 +219,7 @@ impl Server {
     /// Stops accepting and drops every connection.
     pub fn shutdown(&self) {
         if let Some(runtime) = self.runtime.lock().expect("runtime").take() {
-            for session in self
-                .state
-                .sessions
-                .lock()
-                .expect("sessions")
-                .iter()
-                .filter_map(|w| w.upgrade())
-            {
+            for session in self.state.all_sessions() {
                 session.close();
             }
             // Outside an async context, wait (briefly) for the workers to drop every task, so

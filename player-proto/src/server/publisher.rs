@@ -28,16 +28,13 @@ impl Publisher {
         message.header.timestamp = timestamp;
         let message = Arc::new(message);
         let key = (addr.interf, addr.index);
-        let sessions = self.state.sessions.lock().expect("sessions");
         let mut delivered = 0;
-        for session in sessions.iter().filter_map(|w| w.upgrade()) {
-            if session.port == port
-                && !session.is_closed()
-                && session
-                    .subscriptions
-                    .lock()
-                    .expect("subscriptions")
-                    .contains(&key)
+        for session in self.state.sessions_on(port) {
+            if session
+                .subscriptions
+                .lock()
+                .expect("subscriptions")
+                .contains(&key)
             {
                 session.send(message.clone());
                 delivered += 1;
@@ -49,19 +46,17 @@ impl Publisher {
     /// How many connections are subscribed to the device at `addr`.
     pub fn subscribers(&self, addr: DevAddr) -> usize {
         let key = (addr.interf, addr.index);
+        let Ok(port) = u16::try_from(addr.robot) else {
+            return 0;
+        };
         self.state
-            .sessions
-            .lock()
-            .expect("sessions")
+            .sessions_on(port)
             .iter()
-            .filter_map(|w| w.upgrade())
             .filter(|s| {
-                u32::from(s.port) == addr.robot
-                    && !s.is_closed()
-                    && s.subscriptions
-                        .lock()
-                        .expect("subscriptions")
-                        .contains(&key)
+                s.subscriptions
+                    .lock()
+                    .expect("subscriptions")
+                    .contains(&key)
             })
             .count()
     }

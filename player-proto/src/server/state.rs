@@ -1,6 +1,6 @@
 //! What a running server shares between its sessions and its publisher.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex, Weak};
 
@@ -58,7 +58,9 @@ pub(crate) struct ServerState {
     /// The `host` value written into addresses (the server's IPv4 address in memory order).
     pub host: u32,
     pub devices: Vec<DeviceSlot>,
-    pub sessions: Mutex<Vec<Weak<SessionState>>>,
+    /// Live connections by port: a robot's data goes to that robot's port only, so publishing
+    /// looks at its own port's connections, not at every connection of every robot.
+    pub sessions: Mutex<HashMap<u16, Vec<Weak<SessionState>>>>,
 }
 
 impl ServerState {
@@ -76,7 +78,30 @@ impl ServerState {
 
     pub fn register(&self, session: &Arc<SessionState>) {
         let mut sessions = self.sessions.lock().expect("sessions");
-        sessions.retain(|s| s.strong_count() > 0);
-        sessions.push(Arc::downgrade(session));
+        let on_port = sessions.entry(session.port).or_default();
+        on_port.retain(|s| s.strong_count() > 0);
+        on_port.push(Arc::downgrade(session));
+    }
+
+    /// The open connections on `port`.
+    pub fn sessions_on(&self, port: u16) -> Vec<Arc<SessionState>> {
+        let sessions = self.sessions.lock().expect("sessions");
+        sessions
+            .get(&port)
+            .into_iter()
+            .flatten()
+            .filter_map(Weak::upgrade)
+            .filter(|s| !s.is_closed())
+            .collect()
+    }
+
+    /// Every connection still alive, on any port.
+    pub fn all_sessions(&self) -> Vec<Arc<SessionState>> {
+        let sessions = self.sessions.lock().expect("sessions");
+        sessions
+            .values()
+            .flatten()
+            .filter_map(Weak::upgrade)
+            .collect()
     }
 }
