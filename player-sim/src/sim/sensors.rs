@@ -35,14 +35,18 @@ fn cast(
     angle: f64,
     max: f64,
 ) -> Option<f64> {
-    let floor = sim
-        .world
-        .floor
-        .as_ref()
-        .and_then(|g| g.raycast(x, y, angle, max));
+    let floor = floor_distance(sim, x, y, angle, max);
     let limit = floor.unwrap_or(max);
     let thing = boxes.nearest(x, y, angle, limit).map(|(d, _)| d);
     thing.or(floor)
+}
+
+/// Distance to the floorplan's walls along a ray, up to `max`.
+fn floor_distance(sim: &Simulation, x: f64, y: f64, angle: f64, max: f64) -> Option<f64> {
+    sim.world
+        .floor
+        .as_ref()
+        .and_then(|g| g.raycast(x, y, angle, max))
 }
 
 /// The same distance by testing every box: the unpruned reference the pruned cast is tested
@@ -55,11 +59,7 @@ fn cast_exhaustive(
     angle: f64,
     max: f64,
 ) -> Option<f64> {
-    let floor = sim
-        .world
-        .floor
-        .as_ref()
-        .and_then(|g| g.raycast(x, y, angle, max));
+    let floor = floor_distance(sim, x, y, angle, max);
     let things = sim
         .boxes_except(Some(from))
         .filter_map(|b| b.raycast(x, y, angle));

@@ -49,14 +49,7 @@ impl LaserPlugin {
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
     ) -> Result<Box<dyn Plugin>, ConfigValueError> {
-        let style = ScanStyle {
-            points: config.bool("drawPoints", true)?,
-            lines: config.bool("drawLines", false)?,
-            fill_cspace: config.bool("fillLaserCspace", false)?,
-            draw_cspace: config.bool("drawLaserCspace", false)?,
-            color: config.color("color", ScanStyle::default().color)?,
-            height: 0.0,
-        };
+        let style = ScanStyle::from_config(&config)?;
         let parent = ParentLink::from_config(&config);
         let name = match &config.device {
             Some(d) => format!("laser {d}"),

@@ -4,6 +4,7 @@
 use glam::Vec3;
 use player_proto::interfaces::laser::LaserScan;
 
+use crate::config::{ConfigValueError, PluginConfig};
 use crate::scene::{Geometry, Rgba};
 
 /// How to draw a scan.
@@ -28,6 +29,23 @@ impl Default for ScanStyle {
             color: Rgba::rgb(255, 90, 60),
             height: 0.0,
         }
+    }
+}
+
+impl ScanStyle {
+    /// The style a composition asks for (`drawPoints`, `drawLines`, `fillLaserCspace`,
+    /// `drawLaserCspace`, `color`), with the defaults above: the laser's and the scan-shaped
+    /// ranger's parameters are the same.
+    pub fn from_config(config: &PluginConfig) -> Result<ScanStyle, ConfigValueError> {
+        let defaults = ScanStyle::default();
+        Ok(ScanStyle {
+            points: config.bool("drawPoints", defaults.points)?,
+            lines: config.bool("drawLines", defaults.lines)?,
+            fill_cspace: config.bool("fillLaserCspace", defaults.fill_cspace)?,
+            draw_cspace: config.bool("drawLaserCspace", defaults.draw_cspace)?,
+            color: config.color("color", defaults.color)?,
+            height: defaults.height,
+        })
     }
 }
 

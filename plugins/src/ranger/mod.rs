@@ -55,14 +55,7 @@ impl RangerPlugin {
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
     ) -> Result<Box<dyn Plugin>, ConfigValueError> {
-        let scan_style = ScanStyle {
-            points: config.bool("drawPoints", true)?,
-            lines: config.bool("drawLines", false)?,
-            fill_cspace: config.bool("fillLaserCspace", false)?,
-            draw_cspace: config.bool("drawLaserCspace", false)?,
-            color: config.color("color", ScanStyle::default().color)?,
-            height: 0.0,
-        };
+        let scan_style = ScanStyle::from_config(&config)?;
         let cone_style = cone_style_from_config(&config)?;
         let visible = config.bool("visible", true)?;
         let parent = ParentLink::from_config(&config);
