@@ -2,8 +2,9 @@
 //! (scan points and free-space outline), all with new data every frame — the plugins' update,
 //! the scene batch, the upload and the draw on Mesa's software renderer (glFinish included) —
 //! against two floors measured in the same run: the same frame drawn from prebuilt buffers
-//! (drawing alone), and the same number of line segments from one prebuilt buffer. The
-//! `step_*` lines say where a frame's time goes.
+//! (drawing alone), and the same number of line segments from one prebuilt buffer. Each is
+//! measured twice: with every vertex drawn, and with details finer than a pixel merged as
+//! pv3d draws them (`ScreenDetail`). The `step_*` lines say where a frame's time goes.
 //!
 //! `cargo bench -p pv3d --bench frame -- --warm-up-time 1 --measurement-time 5`
 //! (needs Mesa's EGL, as the headless tests do: `scripts/setup.sh`).
@@ -13,8 +14,10 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Instant;
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::measurement::WallTime;
+use criterion::{BenchmarkGroup, Criterion, criterion_group, criterion_main};
 use eframe::glow::HasContext;
+use glam::Vec2;
 use player_proto::interfaces::common::Pose2d;
 use player_proto::interfaces::laser::{Laser, LaserScan};
 use player_proto::interfaces::position2d::{Position2d, Position2dData};
@@ -22,7 +25,9 @@ use player_proto::message::Message;
 use player_proto::{DevAddr, Interface, MsgType};
 use pv3d::app::{HeadlessUi, Viewer};
 use pv3d::composition::{Composition, FoundDevice, ParserRegistry, instantiate, parse_str};
-use pv3d::render::{HeadlessGl, OrbitCamera, SceneBatch, SceneRenderer};
+use pv3d::render::{
+    HeadlessGl, OrbitCamera, POINT_SIZE_PX, SceneBatch, SceneRenderer, ScreenDetail,
+};
 use pv3d_plugins::device::{DeviceAccess, RecordingDevice};
 
 const ROBOTS: u16 = 256;
@@ -144,6 +149,11 @@ fn frames(c: &mut Criterion) {
     let gl = HeadlessGl::new(SIZE.0, SIZE.1).expect("headless GL (Mesa EGL)");
     gl.bind();
     let view_proj = camera().view_projection(SIZE.0 as f32 / SIZE.1 as f32);
+    let screen = ScreenDetail::new(
+        view_proj,
+        Vec2::new(SIZE.0 as f32, SIZE.1 as f32),
+        POINT_SIZE_PX,
+    );
     let mut group = c.benchmark_group("redraw_256_robots");
     group.sample_size(20);
 
@@ -152,92 +162,108 @@ fn frames(c: &mut Criterion) {
         let mut renderer = SceneRenderer::new(&gl.gl).expect("renderer");
         let mut batch = SceneBatch::default();
         swarm.viewer.update(Instant::now());
-        batch.rebuild(swarm.viewer.scene());
-        let name = if fill {
-            "frame_with_filled_free_space"
+        let style = if fill {
+            "with_filled_free_space"
         } else {
-            "frame_outlines"
+            "outlines"
         };
-        group.bench_function(name, |b| {
-            b.iter(|| {
-                swarm.new_data();
-                swarm.viewer.update(Instant::now());
-                batch.rebuild(swarm.viewer.scene());
-                renderer.upload(&gl.gl, &batch, swarm.viewer.scene().generation());
-                renderer.draw(&gl.gl, view_proj);
-                // SAFETY: the context is current on this thread.
-                unsafe { gl.gl.finish() };
-            })
-        });
-        if !fill {
-            // Where a frame's time goes, step by step.
-            group.bench_function("step_plugins_update", |b| {
+        // Every vertex drawn (as before level of detail), then what pv3d draws: details
+        // finer than a pixel merged.
+        for (detail, name) in [(None, "every_vertex"), (Some(&screen), "screen_detail")] {
+            batch.rebuild(swarm.viewer.scene(), detail);
+            println!("{style}, {name}: {}", counts(&batch));
+            let mut revision = 0;
+            group.bench_function(format!("frame_{style}_{name}"), |b| {
                 b.iter(|| {
                     swarm.new_data();
                     swarm.viewer.update(Instant::now());
-                })
-            });
-            group.bench_function("step_batch_rebuild", |b| {
-                b.iter(|| batch.rebuild(swarm.viewer.scene()))
-            });
-            group.bench_function("step_upload", |b| {
-                let mut generation = 0;
-                b.iter(|| {
-                    generation += 1;
-                    renderer.upload(&gl.gl, &batch, u64::MAX - generation);
-                    // SAFETY: the context is current on this thread.
-                    unsafe { gl.gl.finish() };
-                })
-            });
-            group.bench_function("step_upload_draw", |b| {
-                let mut generation = 0;
-                b.iter(|| {
-                    generation += 1;
-                    renderer.upload(&gl.gl, &batch, u64::MAX - generation);
+                    batch.rebuild(swarm.viewer.scene(), detail);
+                    revision += 1;
+                    renderer.upload(&gl.gl, &batch, revision);
                     renderer.draw(&gl.gl, view_proj);
                     // SAFETY: the context is current on this thread.
                     unsafe { gl.gl.finish() };
                 })
             });
-            // The floor: the same segments, uploaded once, drawn from one buffer.
-            let floor_batch = SceneBatch {
-                lines: batch.lines.clone(),
-                ..SceneBatch::default()
-            };
-            println!(
-                "per frame: {} line segments, {} points, {} opaque and {} translucent \
-                 triangles, {} mesh triangles",
-                batch.segment_count(),
-                batch.points.len(),
-                batch.triangles.len() / 3,
-                batch.translucent.len() / 3,
-                batch.mesh.len() / 3
-            );
-            let mut floor = SceneRenderer::new(&gl.gl).expect("renderer");
-            floor.upload(&gl.gl, &floor_batch, 0);
-            group.bench_function("floor_same_segments_prebuilt", |b| {
-                b.iter(|| {
-                    floor.draw(&gl.gl, view_proj);
-                    // SAFETY: the context is current on this thread.
-                    unsafe { gl.gl.finish() };
-                })
-            });
-            floor.destroy(&gl.gl);
-            // The same frame, everything prebuilt: what drawing alone costs.
-            let mut prebuilt = SceneRenderer::new(&gl.gl).expect("renderer");
-            prebuilt.upload(&gl.gl, &batch, 0);
-            group.bench_function("floor_same_frame_prebuilt", |b| {
-                b.iter(|| {
-                    prebuilt.draw(&gl.gl, view_proj);
-                    // SAFETY: the context is current on this thread.
-                    unsafe { gl.gl.finish() };
-                })
-            });
-            prebuilt.destroy(&gl.gl);
+        }
+        if !fill {
+            steps(&mut group, &gl, &mut swarm, &mut renderer, &screen);
+            // The floors: the same segments, uploaded once, drawn from one buffer; and the
+            // same frame, everything prebuilt (what drawing alone costs).
+            for (detail, name) in [(None, "every_vertex"), (Some(&screen), "screen_detail")] {
+                batch.rebuild(swarm.viewer.scene(), detail);
+                let mut segments_only = SceneBatch::default();
+                segments_only.lines = batch.lines.clone();
+                for (floor, what) in [(&segments_only, "segments"), (&batch, "frame")] {
+                    let mut prebuilt = SceneRenderer::new(&gl.gl).expect("renderer");
+                    prebuilt.upload(&gl.gl, floor, 0);
+                    group.bench_function(format!("floor_same_{what}_prebuilt_{name}"), |b| {
+                        b.iter(|| {
+                            prebuilt.draw(&gl.gl, view_proj);
+                            // SAFETY: the context is current on this thread.
+                            unsafe { gl.gl.finish() };
+                        })
+                    });
+                    prebuilt.destroy(&gl.gl);
+                }
+            }
         }
         renderer.destroy(&gl.gl);
     }
     group.finish();
+}
+
+/// Where a frame's time goes, step by step (what pv3d draws: screen detail).
+fn steps(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    gl: &HeadlessGl,
+    swarm: &mut Swarm,
+    renderer: &mut SceneRenderer,
+    screen: &ScreenDetail,
+) {
+    let view_proj = camera().view_projection(SIZE.0 as f32 / SIZE.1 as f32);
+    let mut batch = SceneBatch::default();
+    group.bench_function("step_plugins_update", |b| {
+        b.iter(|| {
+            swarm.new_data();
+            swarm.viewer.update(Instant::now());
+        })
+    });
+    group.bench_function("step_batch_rebuild_every_vertex", |b| {
+        b.iter(|| batch.rebuild(swarm.viewer.scene(), None))
+    });
+    group.bench_function("step_batch_rebuild_screen_detail", |b| {
+        b.iter(|| batch.rebuild(swarm.viewer.scene(), Some(screen)))
+    });
+    let mut revision = u64::MAX;
+    group.bench_function("step_upload", |b| {
+        b.iter(|| {
+            revision -= 1;
+            renderer.upload(&gl.gl, &batch, revision);
+            // SAFETY: the context is current on this thread.
+            unsafe { gl.gl.finish() };
+        })
+    });
+    group.bench_function("step_upload_draw", |b| {
+        b.iter(|| {
+            revision -= 1;
+            renderer.upload(&gl.gl, &batch, revision);
+            renderer.draw(&gl.gl, view_proj);
+            // SAFETY: the context is current on this thread.
+            unsafe { gl.gl.finish() };
+        })
+    });
+}
+
+fn counts(batch: &SceneBatch) -> String {
+    format!(
+        "{} line segments, {} points, {} opaque and {} translucent triangles, {} mesh triangles",
+        batch.segment_count(),
+        batch.points.len(),
+        batch.triangles.len() / 3,
+        batch.translucent.len() / 3,
+        batch.mesh.len() / 3
+    )
 }
 
 /// The whole window's pass offscreen, as `--screenshot` runs it: the plugins' update, egui's

@@ -9,7 +9,7 @@ fn render(scene: &Scene, camera: &OrbitCamera, size: (u32, u32)) -> image::RgbaI
     let mut renderer = SceneRenderer::new(&gl.gl).unwrap();
     renderer.point_size = 5.0;
     let mut batch = SceneBatch::default();
-    batch.rebuild(scene);
+    batch.rebuild(scene, None);
     gl.bind();
     renderer.upload(&gl.gl, &batch, scene.generation());
     renderer.draw(

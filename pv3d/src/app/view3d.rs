@@ -11,14 +11,17 @@ use eframe::glow::{self, HasContext};
 use glam::{Vec2, Vec3};
 use pv3d_plugins::scene::Scene;
 
-use crate::render::{Lighting, OrbitCamera, Projection, SceneBatch, SceneRenderer};
+use crate::render::{
+    Lighting, OrbitCamera, POINT_SIZE_PX, Projection, SceneBatch, SceneRenderer, ScreenDetail,
+};
 
 /// GL-side state shared with the paint callback (which runs later, during painting).
 #[derive(Default)]
 struct GpuState {
     renderer: Option<SceneRenderer>,
     batch: SceneBatch,
-    generation: u64,
+    /// Counts rebuilds of `batch`, so the renderer uploads each one once.
+    revision: u64,
     lighting: Lighting,
     failed: Option<String>,
 }
@@ -54,7 +57,9 @@ pub type StartsTargetDrag<'a> = &'a dyn Fn(Vec3, Vec3) -> bool;
 pub struct View3d {
     pub camera: OrbitCamera,
     gpu: Arc<Mutex<GpuState>>,
-    batched_generation: Option<u64>,
+    /// The scene generation and screen the batch was built for: a new camera or window size
+    /// changes which details are finer than a pixel.
+    batched_for: Option<(u64, ScreenDetail)>,
     /// Line segments drawn in the last frame built (for the status line and benchmarks).
     pub segments: usize,
     /// Whether the view was fitted to the scene yet (once, when content first appears).
@@ -147,11 +152,16 @@ impl View3d {
                 .map(|p| ray_at(&self.camera, p));
         }
 
-        self.rebuild_batch(scene);
         if !self.framed {
             self.frame_scene(scene, aspect);
         }
-        self.paint(ui, rect);
+        let view_proj = self.camera.view_projection(aspect);
+        let viewport_px = size * ui.ctx().pixels_per_point();
+        self.rebuild_batch(
+            scene,
+            ScreenDetail::new(view_proj, viewport_px, POINT_SIZE_PX),
+        );
+        self.paint(ui, rect, view_proj);
         self.paint_labels(ui, rect);
         input
     }
@@ -171,13 +181,14 @@ impl View3d {
         self.framed = true;
     }
 
-    fn rebuild_batch(&mut self, scene: &Scene) {
-        if self.batched_generation == Some(scene.generation()) {
+    fn rebuild_batch(&mut self, scene: &Scene, detail: ScreenDetail) {
+        let wanted = (scene.generation(), detail);
+        if self.batched_for == Some(wanted) {
             return;
         }
         let mut gpu = self.gpu.lock().expect("gpu state");
-        gpu.batch.rebuild(scene);
-        gpu.generation = scene.generation();
+        gpu.batch.rebuild(scene, Some(&detail));
+        gpu.revision += 1;
         let light = scene.lighting();
         let [r, g, b, a] = light.background.0;
         gpu.lighting = Lighting {
@@ -186,14 +197,11 @@ impl View3d {
             background: [r, g, b, a].map(|c| f32::from(c) / 255.0),
         };
         self.segments = gpu.batch.segment_count();
-        self.batched_generation = Some(scene.generation());
+        self.batched_for = Some(wanted);
     }
 
-    fn paint(&self, ui: &mut Ui, rect: Rect) {
+    fn paint(&self, ui: &mut Ui, rect: Rect, view_proj: glam::Mat4) {
         let gpu = self.gpu.clone();
-        let view_proj = self
-            .camera
-            .view_projection(rect.width() / rect.height().max(1.0));
         let callback = egui_glow::CallbackFn::new(move |info, painter| {
             let gl = painter.gl();
             let mut gpu = gpu.lock().expect("gpu state");
@@ -210,7 +218,7 @@ impl View3d {
             let Some(renderer) = state.renderer.as_mut() else {
                 return;
             };
-            renderer.upload(gl, &state.batch, state.generation);
+            renderer.upload(gl, &state.batch, state.revision);
             let clip = info.clip_rect_in_pixels();
             // SAFETY: egui_glow made this context current and restores its state afterwards.
             unsafe {

@@ -5,6 +5,8 @@ use bytemuck::{Pod, Zeroable};
 use glam::{Affine3A, Vec3};
 use pv3d_plugins::scene::{Label, Scene, Vertex};
 
+use super::screen_detail::{ScreenDetail, Simplifier};
+
 /// A coloured vertex as the GPU reads it: 16 bytes.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Pod, Zeroable)]
@@ -35,11 +37,16 @@ pub struct SceneBatch {
     pub mesh: Vec<GpuMeshVertex>,
     /// Labels with world-space positions, drawn as text over the 3D view.
     pub labels: Vec<Label>,
+    /// One object's vertices in world space, before simplification.
+    scratch: Vec<GpuVertex>,
+    simplifier: Simplifier,
 }
 
 impl SceneBatch {
-    /// Refills the arrays from `scene`, keeping their capacity.
-    pub fn rebuild(&mut self, scene: &Scene) {
+    /// Refills the arrays from `scene`, keeping their capacity; with `detail`, lines, points
+    /// and fans finer than a pixel are merged (see [`ScreenDetail`]), without, every vertex
+    /// is kept.
+    pub fn rebuild(&mut self, scene: &Scene, detail: Option<&ScreenDetail>) {
         self.lines.clear();
         self.points.clear();
         self.triangles.clear();
@@ -52,11 +59,24 @@ impl SceneBatch {
                 continue;
             }
             let to_world = scene.world_transform(id);
-            append(&mut self.lines, &g.lines, &to_world);
-            append(&mut self.points, &g.points, &to_world);
-            let start = (self.triangles.len(), self.translucent.len());
-            append(&mut self.triangles, &g.triangles, &to_world);
-            move_translucent(&mut self.triangles, start.0, &mut self.translucent);
+            let (scratch, simplifier) = (&mut self.scratch, &mut self.simplifier);
+            to_world_space(scratch, &g.lines, &to_world);
+            match detail {
+                Some(detail) => simplifier.append_lines(detail, scratch, &mut self.lines),
+                None => self.lines.extend_from_slice(scratch),
+            }
+            to_world_space(scratch, &g.points, &to_world);
+            match detail {
+                Some(detail) => simplifier.append_points(detail, scratch, &mut self.points),
+                None => self.points.extend_from_slice(scratch),
+            }
+            let start = self.triangles.len();
+            to_world_space(scratch, &g.triangles, &to_world);
+            match detail {
+                Some(detail) => simplifier.append_triangles(detail, scratch, &mut self.triangles),
+                None => self.triangles.extend_from_slice(scratch),
+            }
+            move_translucent(&mut self.triangles, start, &mut self.translucent);
             self.mesh.extend(g.mesh.iter().map(|v| {
                 GpuMeshVertex {
                     pos: to_world.transform_point3(v.pos).to_array(),
@@ -99,7 +119,9 @@ fn move_translucent(triangles: &mut Vec<GpuVertex>, from: usize, translucent: &m
     triangles.truncate(kept);
 }
 
-fn append(out: &mut Vec<GpuVertex>, vertices: &[Vertex], to_world: &Affine3A) {
+/// Replaces `out`'s contents with `vertices` moved to world space.
+fn to_world_space(out: &mut Vec<GpuVertex>, vertices: &[Vertex], to_world: &Affine3A) {
+    out.clear();
     if *to_world == Affine3A::IDENTITY {
         out.extend(vertices.iter().map(|v| GpuVertex {
             pos: v.pos.to_array(),
@@ -159,7 +181,7 @@ mod tests {
         scene.add(hidden);
 
         let mut batch = SceneBatch::default();
-        batch.rebuild(&scene);
+        batch.rebuild(&scene, None);
         assert_eq!(batch.segment_count(), 1);
         assert_eq!(batch.lines[1].pos, [2.0, 2.0, 0.0]);
         assert!(batch.points.is_empty(), "hidden objects are not drawn");
@@ -184,7 +206,7 @@ mod tests {
         scene.add(ground);
 
         let mut batch = SceneBatch::default();
-        batch.rebuild(&scene);
+        batch.rebuild(&scene, None);
         assert_eq!(batch.triangles.len(), 6, "two opaque triangles");
         assert_eq!(batch.translucent.len(), 3, "one translucent triangle");
         assert!(batch.translucent.iter().all(|v| v.color[3] == 60));

@@ -54,6 +54,9 @@ void main() {
 }
 "#;
 
+/// How wide points are drawn unless told otherwise, pixels.
+pub const POINT_SIZE_PX: f32 = 3.0;
+
 /// How the view is lit and cleared; the lights plugin sets these.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Lighting {
@@ -93,7 +96,7 @@ pub struct SceneRenderer {
     triangles: Buffer,
     translucent: Buffer,
     mesh: Buffer,
-    /// Scene generation last uploaded; `None` forces an upload.
+    /// Batch revision last uploaded; `None` forces an upload.
     uploaded: Option<u64>,
     pub point_size: f32,
     pub lighting: Lighting,
@@ -120,15 +123,16 @@ impl SceneRenderer {
                 translucent: flat_buffer(gl)?,
                 mesh: mesh_buffer(gl)?,
                 uploaded: None,
-                point_size: 3.0,
+                point_size: POINT_SIZE_PX,
                 lighting: Lighting::default(),
             })
         }
     }
 
-    /// Uploads the batch if the scene changed since the last upload.
-    pub fn upload(&mut self, gl: &glow::Context, batch: &SceneBatch, generation: u64) {
-        if self.uploaded == Some(generation) {
+    /// Uploads the batch unless `revision` (a number that changes whenever the batch is
+    /// rebuilt) was the last one uploaded.
+    pub fn upload(&mut self, gl: &glow::Context, batch: &SceneBatch, revision: u64) {
+        if self.uploaded == Some(revision) {
             return;
         }
         // SAFETY: buffers were created on this context; slices are plain old data.
@@ -164,7 +168,7 @@ impl SceneRenderer {
                 batch.mesh.len(),
             );
         }
-        self.uploaded = Some(generation);
+        self.uploaded = Some(revision);
     }
 
     /// Forgets what was uploaded (e.g. after a context change).
