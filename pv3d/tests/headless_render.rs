@@ -117,3 +117,46 @@ fn the_ui_and_the_3d_view_paint_together_offscreen() {
         out.display()
     );
 }
+
+#[test]
+fn labels_that_would_overlap_are_left_out() {
+    use pv3d::app::{HeadlessUi, View3d};
+
+    let mut scene = Scene::new();
+    let mut robots = Object3D::new("robots");
+    let (red, green, blue) = (
+        Rgba::rgb(255, 0, 0),
+        Rgba::rgb(0, 255, 0),
+        Rgba::rgb(0, 0, 255),
+    );
+    robots.geometry.label(Vec3::ZERO, "robot1", red);
+    robots
+        .geometry
+        .label(Vec3::new(0.05, 0.05, 0.0), "robot2", green);
+    robots
+        .geometry
+        .label(Vec3::new(0.0, -3.0, 0.0), "robot3", blue);
+    scene.add(robots);
+
+    let mut ui = HeadlessUi::new(320, 240).expect("headless GL (Mesa EGL)");
+    let mut view = View3d::default();
+    view.camera.distance = 8.0;
+    for _ in 0..3 {
+        ui.run(|ui| {
+            eframe::egui::CentralPanel::default().show(ui, |ui| {
+                view.show(ui, &scene);
+            });
+        });
+    }
+    let image = ui.read_pixels();
+    image
+        .save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("labels.png"))
+        .unwrap();
+    let count = |want: fn(&image::Rgba<u8>) -> bool| image.pixels().filter(|p| want(p)).count();
+    let reds = count(|p| p[0] > 150 && p[1] < 80 && p[2] < 80);
+    let greens = count(|p| p[1] > 150 && p[0] < 80 && p[2] < 80);
+    let blues = count(|p| p[2] > 150 && p[0] < 80 && p[1] < 80);
+    assert!(reds > 20, "the first label is drawn: {reds} pixels");
+    assert_eq!(greens, 0, "the one on top of it is left out");
+    assert!(blues > 20, "a label with room is drawn: {blues} pixels");
+}

@@ -238,22 +238,29 @@ impl View3d {
         });
     }
 
+    /// Draws the labels, leaving out any that would overlap one already drawn: 256 robot
+    /// names on top of each other are unreadable, every other one is not. Zoom in and all
+    /// of them come back.
     fn paint_labels(&self, ui: &mut Ui, rect: Rect) {
         let gpu = self.gpu.lock().expect("gpu state");
         let size = Vec2::new(rect.width(), rect.height());
         let painter = ui.painter_at(rect);
+        let mut taken: Vec<Rect> = Vec::new();
         for label in &gpu.batch.labels {
             let Some(at) = self.camera.to_screen(label.pos, size) else {
                 continue;
             };
             let [r, g, b, a] = label.color.0;
-            painter.text(
-                rect.min + egui::vec2(at.x, at.y),
-                egui::Align2::LEFT_BOTTOM,
-                &label.text,
-                egui::FontId::proportional(13.0),
-                Color32::from_rgba_unmultiplied(r, g, b, a),
-            );
+            let color = Color32::from_rgba_unmultiplied(r, g, b, a);
+            let galley =
+                painter.layout_no_wrap(label.text.clone(), egui::FontId::proportional(13.0), color);
+            let place = egui::Align2::LEFT_BOTTOM
+                .anchor_size(rect.min + egui::vec2(at.x, at.y), galley.size());
+            if !rect.intersects(place) || taken.iter().any(|t| t.intersects(place)) {
+                continue;
+            }
+            taken.push(place);
+            painter.galley(place.min, galley, color);
         }
     }
 }
