@@ -6,8 +6,9 @@
 #
 # Prints "t_s,rss_kib,cpu_s" rows to OUT.csv (if given) and a summary: RSS at the first and
 # last sample after warm-up, its growth, mean CPU (cores) and frames drawn. The simulation
-# runs in-process too, so the CPU is the viewer's plus the simulator's; run it again with
-# `--idle` as a fourth argument for a composition with no robots (the idle viewer).
+# runs in-process too, so the CPU is also split by thread: the simulation and its Player
+# servers, the Player client threads, the UI thread, Mesa's rasteriser threads. Run it again
+# with `--idle` as a fourth argument for a composition with no robots (the idle viewer).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-600}
@@ -32,6 +33,24 @@ else
 fi
 pid=$!
 ticks=$(getconf CLK_TCK)
+# CPU ticks per kind of thread, one "kind ticks" line each.
+thread_ticks() {
+  for task in /proc/"$1"/task/*; do
+    comm=$(cat "$task/comm" 2>/dev/null) || continue
+    stat=$(cat "$task/stat" 2>/dev/null) || continue
+    rest=${stat##*) }
+    read -r -a f <<<"$rest"
+    case "$comm" in
+      player-sim* | player-server*) kind="simulation and its Player servers" ;;
+      player\ *) kind="Player client threads" ;;
+      llvmpipe*) kind="Mesa llvmpipe rasteriser threads" ;;
+      pv3d) kind="UI thread: plugins, batch, egui, GL calls" ;;
+      *) kind="other threads" ;;
+    esac
+    echo "$kind;$((f[11] + f[12]))"
+  done | awk -F";" '{ t[$1] += $2 } END { for (k in t) print k ";" t[k] }'
+}
+threads_first=$(mktemp) threads_last=$(mktemp)
 echo "t_s,rss_kib,cpu_s" >"$out"
 start=$(date +%s.%N)
 samples=()
@@ -44,6 +63,14 @@ while kill -0 "$pid" 2>/dev/null; do
   t=$(awk -v a="$now" -v b="$start" 'BEGIN { printf "%.1f", a - b }')
   echo "$t,$rss,$cpu" >>"$out"
   samples+=("$t,$rss,$cpu")
+  # Thread times from the end of warm-up until shortly before pv3d quits and its threads end.
+  if awk -v t="$t" -v end="$seconds" 'BEGIN { exit !(t >= 30 && t <= end - 6) }'; then
+    if [ ! -s "$threads_first" ]; then
+      { echo "t;$t"; thread_ticks "$pid"; } >"$threads_first"
+    else
+      { echo "t;$t"; thread_ticks "$pid"; } >"$threads_last"
+    fi
+  fi
 done
 wait "$pid" || true
 frames=$(grep -o 'frames: .*' /tmp/soak-stderr.$$ || echo "frames: ?")
@@ -58,3 +85,13 @@ printf '%s\n' "${samples[@]}" | awk -F, -v frames="$frames" '
     printf "CPU: %.3f cores (viewer and in-process simulation)\n", (c1 - c0) / (t1 - t0)
     printf "%s\n", frames
   }'
+if [ -s "$threads_last" ]; then
+  echo "CPU by thread (cores):"
+  awk -F";" -v hz="$ticks" '
+    NR == FNR { if ($1 == "t") t0 = $2; else a[$1] = $2; next }
+    $1 == "t" { t1 = $2; next }
+    { b[$1] = $2 }
+    END { for (k in b) printf "  %.3f  %s\n", (b[k] - a[k]) / hz / (t1 - t0), k }' \
+    "$threads_first" "$threads_last" | sort -rn
+fi
+rm -f "$threads_first" "$threads_last"
