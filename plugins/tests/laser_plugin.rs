@@ -140,3 +140,86 @@ fn bad_parameters_name_the_place() {
         "{err}"
     );
 }
+
+#[test]
+fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
+    use player_proto::interfaces::common::Pose2d;
+    use player_proto::interfaces::laser::{LaserScanAngle, LaserScanPose};
+
+    let device = RecordingDevice::default();
+    let addr: DevAddr = "laser:0".parse().unwrap();
+    let mut scene = Scene::new();
+    let mut anchors = Anchors::default();
+    let mut ctx = PluginContext {
+        scene: &mut scene,
+        device: Some(&device),
+        anchors: &mut anchors,
+        now: Instant::now(),
+    };
+    let create = standard_plugins().constructor("libpv3d_laser").unwrap();
+    let mut plugin = create(laser_config(), &mut ctx).unwrap();
+    let node = plugin.node().unwrap();
+
+    // A scan with the pose it was taken at: the scan is drawn as a plain one would be.
+    device.push(Message::typed(
+        addr,
+        MsgType::Data,
+        Laser::ScanPose(LaserScanPose {
+            scan: LaserScan {
+                min_angle: 0.0,
+                resolution: 0.5,
+                max_range: 8.0,
+                ranges: vec![1.0, 1.0],
+                ..LaserScan::default()
+            },
+            pose: Pose2d {
+                px: 3.0,
+                ..Pose2d::default()
+            },
+        }),
+    ));
+    assert!(plugin.update(&mut ctx));
+    let points: Vec<Vec3> = ctx
+        .scene
+        .get(node)
+        .unwrap()
+        .geometry
+        .points
+        .iter()
+        .map(|p| p.pos)
+        .collect();
+    assert_eq!(points.len(), 2);
+    assert!((points[0] - Vec3::X).length() < 1e-5, "{points:?}");
+
+    // Then a scan with its own bearings (one reading lacks one and is dropped).
+    device.push(Message::typed(
+        addr,
+        MsgType::Data,
+        Laser::ScanAngle(LaserScanAngle {
+            max_range: 8.0,
+            ranges: vec![2.0, 2.0, 2.0],
+            angles: vec![std::f32::consts::FRAC_PI_2, -std::f32::consts::FRAC_PI_2],
+            ..LaserScanAngle::default()
+        }),
+    ));
+    assert!(plugin.update(&mut ctx));
+    let points: Vec<Vec3> = ctx
+        .scene
+        .get(node)
+        .unwrap()
+        .geometry
+        .points
+        .iter()
+        .map(|p| p.pos)
+        .collect();
+    assert_eq!(points.len(), 2, "{points:?}");
+    assert!(
+        (points[0] - Vec3::new(0.0, 2.0, 0.0)).length() < 1e-5,
+        "{points:?}"
+    );
+    assert!(
+        (points[1] - Vec3::new(0.0, -2.0, 0.0)).length() < 1e-5,
+        "{points:?}"
+    );
+    assert!(!plugin.update(&mut ctx), "nothing new: nothing redrawn");
+}

@@ -232,3 +232,126 @@ fn readings_before_the_config_wait_for_it() {
     assert!(plugin.update(&mut ctx));
     assert_eq!(ctx.scene.get(node).unwrap().geometry.points.len(), 181);
 }
+
+#[test]
+fn stamped_ranges_bring_their_own_geometry_and_config() {
+    use player_proto::interfaces::ranger::RangerRangesStamped;
+
+    let device = RecordingDevice::default(); // answers no request: the data must suffice
+    let (scene, robot, node, _) = run(&device, vec![], |d| {
+        d.push(Message::typed(
+            addr(),
+            MsgType::Data,
+            Ranger::RangesStamped(RangerRangesStamped {
+                data: RangerRanges {
+                    ranges: vec![1.0, 2.0, 8.0],
+                },
+                have_geom: 1,
+                geom: RangerGeometry {
+                    pose: Pose3d {
+                        px: 0.1,
+                        ..Pose3d::default()
+                    },
+                    ..RangerGeometry::default()
+                },
+                have_config: 1,
+                config: RangerConfig {
+                    min_angle: -std::f64::consts::FRAC_PI_2,
+                    max_angle: std::f64::consts::FRAC_PI_2,
+                    angular_res: std::f64::consts::FRAC_PI_2,
+                    max_range: 8.0,
+                    ..RangerConfig::default()
+                },
+            }),
+        ));
+    });
+    let object = scene.get(node).unwrap();
+    assert_eq!(object.parent, Some(robot));
+    let world = |p: Vec3| scene.world_transform(node).transform_point3(p);
+    let ahead = world(object.geometry.points[1].pos);
+    assert!(
+        (ahead - Vec3::new(7.1, 0.0, 0.0)).length() < 1e-5,
+        "{ahead}"
+    );
+}
+
+/// The first `PLAYER_RANGER_DATA_RANGE` and the `_INTNS` after it that Stage 4 sent for the
+/// laser of `../shared/captures/ranger_laser_push.jsonl`, or `None` without the captures.
+fn captured_ranges_and_intensities() -> Option<(Message, Message)> {
+    use player_proto::capture::{Direction, parse_capture, stream};
+    use player_proto::wire::FrameDecoder;
+
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/captures");
+    let Ok(text) = std::fs::read_to_string(dir.join("ranger_laser_push.jsonl")) else {
+        eprintln!("note: no captures in {}; test skipped", dir.display());
+        return None;
+    };
+    let bytes = stream(&parse_capture(&text).unwrap(), Direction::ServerToClient);
+    let mut frames = FrameDecoder::default();
+    frames.extend(&bytes);
+    frames.take_banner().unwrap().unwrap();
+    let mut ranges = None;
+    while let Some(frame) = frames.next_frame().unwrap() {
+        let message = Message::decode(frame.header, frame.body).unwrap();
+        match (&message.body, ranges.is_some()) {
+            (player_proto::message::Body::Ranger(Ranger::Ranges(_)), false) => {
+                ranges = Some(message)
+            }
+            (player_proto::message::Body::Ranger(Ranger::Intensities(_)), true) => {
+                return Some((ranges?, message));
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+#[test]
+fn stage_intensities_shade_the_returns_they_belong_to() {
+    let Some((ranges, intensities)) = captured_ranges_and_intensities() else {
+        return;
+    };
+    let device = RecordingDevice::default();
+    // The capture's laser: 180° over 181 samples, 8 m (its GET_CONFIG reply in geom_config).
+    answer(
+        &device,
+        RangerGeometry {
+            element_poses: vec![Pose3d::default()],
+            ..RangerGeometry::default()
+        },
+        RangerConfig {
+            min_angle: -std::f64::consts::FRAC_PI_2,
+            max_angle: std::f64::consts::FRAC_PI_2,
+            angular_res: std::f64::consts::PI / 180.0,
+            max_range: 8.0,
+            ..RangerConfig::default()
+        },
+    );
+    let Some(player_proto::message::Body::Ranger(Ranger::Intensities(values))) =
+        Some(intensities.body.clone())
+    else {
+        unreachable!()
+    };
+    let (scene, _, node, _) = run(&device, vec![], |d| {
+        d.push(ranges);
+        d.push(intensities);
+    });
+    let points = &scene.get(node).unwrap().geometry.points;
+    assert!(!points.is_empty());
+    let mut shades: Vec<u8> = points.iter().map(|p| p.color.0[0]).collect();
+    shades.sort_unstable();
+    shades.dedup();
+    let mut levels: Vec<u64> = values
+        .intensities
+        .iter()
+        .filter(|v| **v > 0.0)
+        .map(|v| v.to_bits())
+        .collect();
+    levels.sort_unstable();
+    levels.dedup();
+    assert_eq!(
+        shades.len(),
+        levels.len(),
+        "one shade per intensity Stage reported for a return: {shades:?}"
+    );
+}

@@ -8,7 +8,7 @@ use player_proto::interfaces::laser::LaserScan;
 use pv3d::render::{
     HeadlessGl, OrbitCamera, POINT_SIZE_PX, SceneBatch, SceneRenderer, ScreenDetail,
 };
-use pv3d_plugins::laser::{ScanStyle, scan_geometry};
+use pv3d_plugins::laser::{Readings, ScanStyle, scan_geometry};
 use pv3d_plugins::scene::{Object3D, Scene};
 
 const SIZE: (u32, u32) = (640, 480);
@@ -47,7 +47,7 @@ fn swarm(fill: bool) -> Scene {
             Quat::from_rotation_z(i as f32),
             Vec3::new(x, y, 0.0),
         );
-        scan_geometry(&scan, &style, &mut laser.geometry);
+        scan_geometry(&Readings::from_scan(&scan), &style, &mut laser.geometry);
         scene.add(laser);
     }
     scene

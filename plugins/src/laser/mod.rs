@@ -3,10 +3,13 @@
 //! Parameters (all optional): `<parentNode interface="position2d" index="0"/>` — the device
 //! whose scene node the laser hangs below (same server); `drawPoints` (1), `drawLines` (0),
 //! `fillLaserCspace` (0), `drawLaserCspace` (0) — the free-space polygon filled and outlined;
-//! `color` (#ff5a3c); `skinFile` — an OBJ model of the scanner drawn at its pose, fitted to
-//! the size its geometry reports (see [`crate::skin`]). The laser's pose on the robot comes
-//! from its geometry request.
+//! `color` (#ff5a3c); `shadeIntensity` (1) — returns shaded by intensity when the device sends
+//! intensities; `skinFile` — an OBJ model of the scanner drawn at its pose, fitted to the size
+//! its geometry reports (see [`crate::skin`]). The laser's pose on the robot comes from its
+//! geometry request. Scans are drawn from whichever of the three data messages the driver
+//! sends (plain, with the pose it was taken at, with a bearing per reading), newest first.
 
+mod readings;
 mod scan_geometry;
 
 use std::time::Instant;
@@ -15,6 +18,7 @@ use glam::{Affine3A, Quat, Vec3};
 use player_proto::interfaces::laser::{self, Laser};
 use player_proto::message::Body;
 
+pub use readings::{Bearings, Readings};
 pub use scan_geometry::{ScanStyle, endpoints, scan_geometry};
 
 use crate::config::{ConfigValueError, PluginConfig};
@@ -27,8 +31,8 @@ use crate::skin::{Skin, fit_into};
 /// The scanner's size until its geometry says otherwise (a SICK LMS200's), m.
 const DEFAULT_SIZE: Vec3 = Vec3::new(0.156, 0.155, 0.19);
 
-/// Subtype of `PLAYER_LASER_DATA_SCAN`.
-const DATA_SCAN: u8 = 1;
+/// Subtypes of `PLAYER_LASER_DATA_SCAN`, `_SCANPOSE` and `_SCANANGLE`.
+const DATA_SUBTYPES: [u8; 3] = [1, 2, 3];
 
 pub struct LaserPlugin {
     config: PluginConfig,
@@ -36,7 +40,8 @@ pub struct LaserPlugin {
     node: NodeId,
     parent: ParentLink,
     geometry_reply: Option<ReplyTicket>,
-    last_seq: Option<u64>,
+    /// The subtype and sequence number of the scan drawn last.
+    last_drawn: Option<(u8, u64)>,
     /// Readings in the newest scan, and the nearest return.
     summary: Option<(usize, Option<f32>, Instant)>,
     skin: Skin,
@@ -73,7 +78,7 @@ impl LaserPlugin {
             node,
             parent,
             geometry_reply,
-            last_seq: None,
+            last_drawn: None,
             summary: None,
             skin,
             skin_node,
@@ -128,9 +133,13 @@ impl LaserPlugin {
     }
 
     fn redraw(&mut self, sample: &Sample, ctx: &mut PluginContext<'_>) -> bool {
-        let Body::Laser(Laser::Scan(scan)) = &sample.message.body else {
-            return false;
+        let scan = match &sample.message.body {
+            Body::Laser(Laser::Scan(scan)) => Readings::from_scan(scan),
+            Body::Laser(Laser::ScanPose(with_pose)) => Readings::from_scan(&with_pose.scan),
+            Body::Laser(Laser::ScanAngle(with_angles)) => Readings::from_scan_angle(with_angles),
+            _ => return false,
         };
+        let scan = &scan;
         let nearest = endpoints(scan)
             .filter(|(_, hit)| *hit)
             .map(|(p, _)| p.length())
@@ -152,6 +161,7 @@ impl Plugin for LaserPlugin {
         config.set("drawLines", flag(self.style.lines));
         config.set("fillLaserCspace", flag(self.style.fill_cspace));
         config.set("drawLaserCspace", flag(self.style.draw_cspace));
+        config.set("shadeIntensity", flag(self.style.shade_intensity));
         config
     }
 
@@ -165,11 +175,16 @@ impl Plugin for LaserPlugin {
     fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
         let mut changed = self.place_from_geometry(ctx);
         changed |= self.parent.attach(self.node, ctx);
-        let sample = ctx.device.and_then(|d| d.latest(DATA_SCAN));
-        if let Some(sample) = sample
-            && self.last_seq != Some(sample.seq)
+        let newest = ctx.device.and_then(|d| {
+            DATA_SUBTYPES
+                .iter()
+                .filter_map(|&subtype| Some((subtype, d.latest(subtype)?)))
+                .max_by_key(|(_, sample)| sample.received)
+        });
+        if let Some((subtype, sample)) = newest
+            && self.last_drawn != Some((subtype, sample.seq))
         {
-            self.last_seq = Some(sample.seq);
+            self.last_drawn = Some((subtype, sample.seq));
             changed |= self.redraw(&sample, ctx);
         }
         changed
@@ -194,9 +209,13 @@ impl Plugin for LaserPlugin {
         ui.checkbox(&mut self.style.lines, "lines");
         ui.checkbox(&mut self.style.fill_cspace, "fill free space");
         ui.checkbox(&mut self.style.draw_cspace, "outline free space");
+        ui.checkbox(
+            &mut self.style.shade_intensity,
+            "shade returns by intensity",
+        );
         if before != self.style {
             // Redraw the newest scan in the new style.
-            self.last_seq = None;
+            self.last_drawn = None;
         }
     }
 

@@ -1,11 +1,15 @@
 //! A laser scan as geometry in the sensor's frame: returns as points and/or a polyline, and the
-//! free space it saw (the "laser C-space") as a filled polygon and its outline.
+//! free space it saw (the "laser C-space") as a filled polygon and its outline. Returns can be
+//! shaded by intensity: dim for the weakest return of the scan, full colour for the strongest.
 
 use glam::Vec3;
-use player_proto::interfaces::laser::LaserScan;
 
+use super::readings::Readings;
 use crate::config::{ConfigValueError, PluginConfig};
 use crate::scene::{Geometry, Rgba};
+
+/// How bright the weakest return is drawn when shading by intensity (the strongest is 1).
+const DIMMEST: f32 = 0.35;
 
 /// How to draw a scan.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -15,6 +19,8 @@ pub struct ScanStyle {
     pub fill_cspace: bool,
     pub draw_cspace: bool,
     pub color: Rgba,
+    /// Returns shaded by their intensity, when the device sends intensities that differ.
+    pub shade_intensity: bool,
     /// Height of the drawing above the sensor origin, m (keeps it off the ground plane).
     pub height: f32,
 }
@@ -27,6 +33,7 @@ impl Default for ScanStyle {
             fill_cspace: false,
             draw_cspace: false,
             color: Rgba::rgb(255, 90, 60),
+            shade_intensity: true,
             height: 0.0,
         }
     }
@@ -34,8 +41,8 @@ impl Default for ScanStyle {
 
 impl ScanStyle {
     /// The style a composition asks for (`drawPoints`, `drawLines`, `fillLaserCspace`,
-    /// `drawLaserCspace`, `color`), with the defaults above: the laser's and the scan-shaped
-    /// ranger's parameters are the same.
+    /// `drawLaserCspace`, `color`, `shadeIntensity`), with the defaults above: the laser's and
+    /// the scan-shaped ranger's parameters are the same.
     pub fn from_config(config: &PluginConfig) -> Result<ScanStyle, ConfigValueError> {
         let defaults = ScanStyle::default();
         Ok(ScanStyle {
@@ -44,14 +51,15 @@ impl ScanStyle {
             fill_cspace: config.bool("fillLaserCspace", defaults.fill_cspace)?,
             draw_cspace: config.bool("drawLaserCspace", defaults.draw_cspace)?,
             color: config.color("color", defaults.color)?,
+            shade_intensity: config.bool("shadeIntensity", defaults.shade_intensity)?,
             height: defaults.height,
         })
     }
 }
 
 /// Endpoint of each reading in the sensor frame. A reading at or beyond `max_range` (no
-/// return) is placed at `max_range`, flagged `false`.
-pub fn endpoints(scan: &LaserScan) -> impl Iterator<Item = (Vec3, bool)> + '_ {
+/// return) is placed at `max_range`, flagged `false`; so is one without a usable bearing.
+pub fn endpoints(scan: &Readings) -> impl Iterator<Item = (Vec3, bool)> + '_ {
     let max = scan.max_range;
     scan.ranges.iter().enumerate().map(move |(i, &r)| {
         let hit = r.is_finite() && r > 0.0 && (max <= 0.0 || r < max);
@@ -63,12 +71,54 @@ pub fn endpoints(scan: &LaserScan) -> impl Iterator<Item = (Vec3, bool)> + '_ {
             0.0
         };
         let a = scan.bearing(i);
+        if !a.is_finite() {
+            return (Vec3::ZERO, false);
+        }
         (Vec3::new(r * a.cos(), r * a.sin(), 0.0), hit)
     })
 }
 
+/// The colour of each return: `style.color`, or — shading by intensity, with intensities that
+/// differ among the returns — from dim for the weakest return to full for the strongest.
+fn return_colors<'a>(
+    scan: &'a Readings,
+    rim: &'a [(Vec3, bool)],
+    style: &ScanStyle,
+) -> impl Fn(usize) -> Rgba + 'a {
+    let shading = if style.shade_intensity && scan.intensities.len() == rim.len() {
+        let hits = || {
+            scan.intensities
+                .iter()
+                .zip(rim)
+                .filter(|(v, (_, hit))| *hit && v.is_finite())
+                .map(|(v, _)| *v)
+        };
+        let lo = hits().fold(f32::INFINITY, f32::min);
+        let hi = hits().fold(f32::NEG_INFINITY, f32::max);
+        (hi > lo).then_some((lo, hi))
+    } else {
+        None
+    };
+    let color = style.color;
+    move |i| match shading {
+        Some((lo, hi)) => {
+            let v = scan.intensities[i];
+            let k = if v.is_finite() {
+                (v - lo) / (hi - lo)
+            } else {
+                0.0
+            };
+            let scale = DIMMEST + (1.0 - DIMMEST) * k.clamp(0.0, 1.0);
+            let [r, g, b, a] = color.0;
+            let dim = |c: u8| (f32::from(c) * scale).round() as u8;
+            Rgba([dim(r), dim(g), dim(b), a])
+        }
+        None => color,
+    }
+}
+
 /// Fills `geometry` (cleared first) with the scan drawn in `style`.
-pub fn scan_geometry(scan: &LaserScan, style: &ScanStyle, geometry: &mut Geometry) {
+pub fn scan_geometry(scan: &Readings, style: &ScanStyle, geometry: &mut Geometry) {
     geometry.clear();
     let lift = Vec3::Z * style.height;
     let rim: Vec<(Vec3, bool)> = endpoints(scan).map(|(p, hit)| (p + lift, hit)).collect();
@@ -90,9 +140,10 @@ pub fn scan_geometry(scan: &LaserScan, style: &ScanStyle, geometry: &mut Geometr
         }
     }
     if style.points {
-        for (p, hit) in &rim {
+        let color_of = return_colors(scan, &rim, style);
+        for (i, (p, hit)) in rim.iter().enumerate() {
             if *hit {
-                geometry.point(*p, style.color);
+                geometry.point(*p, color_of(i));
             }
         }
     }
@@ -101,16 +152,18 @@ pub fn scan_geometry(scan: &LaserScan, style: &ScanStyle, geometry: &mut Geometr
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::laser::readings::Bearings;
 
-    fn scan(ranges: Vec<f32>) -> LaserScan {
+    fn scan(ranges: Vec<f32>) -> Readings {
         let n = ranges.len() as f32;
-        LaserScan {
-            min_angle: -std::f32::consts::FRAC_PI_2,
-            max_angle: std::f32::consts::FRAC_PI_2,
-            resolution: std::f32::consts::PI / (n - 1.0),
-            max_range: 8.0,
+        Readings {
             ranges,
-            ..LaserScan::default()
+            bearings: Bearings::Even {
+                first: -std::f32::consts::FRAC_PI_2,
+                step: std::f32::consts::PI / (n - 1.0),
+            },
+            max_range: 8.0,
+            intensities: Vec::new(),
         }
     }
 
@@ -140,5 +193,48 @@ mod tests {
         );
         assert_eq!(g.lines.len(), 182 * 2, "origin, 181 endpoints, closed");
         assert!(g.points.is_empty());
+    }
+
+    #[test]
+    fn returns_are_shaded_by_intensity_when_intensities_differ() {
+        let style = ScanStyle::default();
+        let mut readings = scan(vec![1.0, 2.0, 3.0, 8.0]);
+        readings.intensities = vec![1.0, 0.5, 0.75, 9.0]; // the last is no return
+        let mut g = Geometry::default();
+        scan_geometry(&readings, &style, &mut g);
+        let reds: Vec<u8> = g.points.iter().map(|p| p.color.0[0]).collect();
+        let middle = (255.0 * (DIMMEST + (1.0 - DIMMEST) * 0.5)).round() as u8;
+        assert_eq!(reds, vec![255, (255.0 * DIMMEST).round() as u8, middle]);
+
+        readings.intensities = vec![1.0; 4];
+        scan_geometry(&readings, &style, &mut g);
+        assert!(
+            g.points.iter().all(|p| p.color == style.color),
+            "all alike: plain"
+        );
+
+        readings.intensities = vec![1.0, 0.5, 0.75, 1.0];
+        let plain = ScanStyle {
+            shade_intensity: false,
+            ..style
+        };
+        scan_geometry(&readings, &plain, &mut g);
+        assert!(
+            g.points.iter().all(|p| p.color == style.color),
+            "shading off"
+        );
+    }
+
+    #[test]
+    fn a_reading_without_a_bearing_is_no_return() {
+        let readings = Readings {
+            ranges: vec![1.0, 1.0],
+            bearings: Bearings::Listed(vec![0.0, f32::NAN]),
+            max_range: 8.0,
+            intensities: Vec::new(),
+        };
+        let mut g = Geometry::default();
+        scan_geometry(&readings, &ScanStyle::default(), &mut g);
+        assert_eq!(g.points.len(), 1);
     }
 }

@@ -5,7 +5,9 @@
 //! the laser plugin's `drawPoints` (1), `drawLines` (0), `fillLaserCspace` (0),
 //! `drawLaserCspace` (0), `color` (#ff5a3c for scans); and the cone parameters of
 //! [`crate::sonar::cone_params`]. The device's pose and its elements' poses come from the
-//! geometry request, the angles and maximum range from the config request.
+//! geometry request, the angles and maximum range from the config request — or from the data
+//! when a driver sends them there (stamped ranges, geometry data). A scan's returns are shaded
+//! by the intensities the device sends (`shadeIntensity`, 1), as Stage does after each scan.
 
 mod shape;
 
@@ -16,10 +18,10 @@ use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::ranger::{self, Ranger, RangerConfig, RangerGeometry};
 use player_proto::message::Body;
 
-pub use shape::{RangerShape, ranger_geometry};
+pub use shape::{RangerData, RangerShape, ranger_geometry};
 
 use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::{ReplyOutcome, ReplyTicket, Sample};
+use crate::device::{DeviceAccess, ReplyOutcome, ReplyTicket, Sample};
 use crate::laser::ScanStyle;
 use crate::parent_link::ParentLink;
 use crate::plugin::{Anchors, Plugin, PluginContext};
@@ -27,8 +29,9 @@ use crate::scene::{NodeId, Object3D, Scene};
 use crate::sonar::cone_params::{cone_style_from_config, cone_style_ui, write_cone_style};
 use crate::sonar::cones::{ConeStyle, Transducer};
 
-/// Subtype of `PLAYER_RANGER_DATA_RANGE`.
-const DATA_RANGES: u8 = 1;
+/// Data subtypes: `PLAYER_RANGER_DATA_RANGE`, `_RANGESTAMPED`, `_INTNS`, `_INTNSSTAMPED`,
+/// `_GEOM`.
+const DATA_SUBTYPES: [u8; 5] = [1, 2, 3, 4, 5];
 
 pub struct RangerPlugin {
     config: PluginConfig,
@@ -44,8 +47,10 @@ pub struct RangerPlugin {
     elements: Vec<Transducer>,
     device_config: Option<RangerConfig>,
     ranges: Vec<f64>,
+    intensities: Vec<f64>,
     shape: RangerShape,
-    last_seq: Option<u64>,
+    /// The sequence number of the last message taken, per data subtype.
+    taken: [Option<u64>; DATA_SUBTYPES.len()],
     received: Option<Instant>,
     redraw_needed: bool,
 }
@@ -86,8 +91,9 @@ impl RangerPlugin {
             elements: Vec::new(),
             device_config: None,
             ranges: Vec::new(),
+            intensities: Vec::new(),
             shape: RangerShape::Empty,
-            last_seq: None,
+            taken: [None; DATA_SUBTYPES.len()],
             received: None,
             redraw_needed: false,
         }))
@@ -136,22 +142,66 @@ impl RangerPlugin {
         self.redraw_needed = true;
     }
 
-    fn take_ranges(&mut self, sample: &Sample) {
-        if let Body::Ranger(Ranger::Ranges(data)) = &sample.message.body {
-            self.ranges.clone_from(&data.ranges);
-            self.received = Some(sample.received);
-            self.redraw_needed = true;
+    /// Takes the data messages that came since the last update, oldest first.
+    fn take_data(&mut self, device: &dyn DeviceAccess, scene: &mut Scene) {
+        let mut new: Vec<Sample> = Vec::new();
+        for (taken, subtype) in self.taken.iter_mut().zip(DATA_SUBTYPES) {
+            if let Some(sample) = device.latest(subtype)
+                && *taken != Some(sample.seq)
+            {
+                *taken = Some(sample.seq);
+                new.push(sample);
+            }
         }
+        new.sort_by_key(|s| s.received);
+        for sample in new {
+            self.take(&sample, scene);
+        }
+    }
+
+    fn take(&mut self, sample: &Sample, scene: &mut Scene) {
+        let Body::Ranger(message) = &sample.message.body else {
+            return;
+        };
+        match message {
+            Ranger::Ranges(data) => self.take_ranges(&data.ranges, sample.received),
+            Ranger::RangesStamped(stamped) => {
+                self.take_ranges(&stamped.data.ranges, sample.received);
+                if stamped.have_geom != 0 {
+                    self.adopt_geometry(&stamped.geom, scene);
+                }
+                if stamped.have_config != 0 {
+                    self.device_config = Some(stamped.config);
+                }
+            }
+            Ranger::Intensities(data) => self.intensities.clone_from(&data.intensities),
+            Ranger::IntensitiesStamped(stamped) => {
+                self.intensities.clone_from(&stamped.data.intensities);
+            }
+            Ranger::GeometryData(geometry) => self.adopt_geometry(geometry, scene),
+            _ => return,
+        }
+        self.redraw_needed = true;
+    }
+
+    fn take_ranges(&mut self, ranges: &[f64], received: Instant) {
+        self.ranges.clear();
+        self.ranges.extend_from_slice(ranges);
+        self.received = Some(received);
     }
 
     fn redraw(&mut self, scene: &mut Scene) -> bool {
         let Some(object) = scene.get_mut(self.node) else {
             return false;
         };
+        let data = RangerData {
+            ranges: &self.ranges,
+            intensities: &self.intensities,
+            elements: &self.elements,
+            config: self.device_config.as_ref(),
+        };
         self.shape = ranger_geometry(
-            &self.ranges,
-            &self.elements,
-            self.device_config.as_ref(),
+            &data,
             &self.scan_style,
             &self.cone_style,
             &mut object.geometry,
@@ -192,6 +242,7 @@ impl Plugin for RangerPlugin {
         config.set("drawLines", flag(self.scan_style.lines));
         config.set("fillLaserCspace", flag(self.scan_style.fill_cspace));
         config.set("drawLaserCspace", flag(self.scan_style.draw_cspace));
+        config.set("shadeIntensity", flag(self.scan_style.shade_intensity));
         write_cone_style(&self.cone_style, &mut config);
         config.set("visible", flag(self.visible));
         config
@@ -207,11 +258,8 @@ impl Plugin for RangerPlugin {
     fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
         let mut changed = self.parent.attach(self.node, ctx);
         self.take_replies(ctx.scene);
-        if let Some(sample) = ctx.device.and_then(|d| d.latest(DATA_RANGES))
-            && self.last_seq != Some(sample.seq)
-        {
-            self.last_seq = Some(sample.seq);
-            self.take_ranges(&sample);
+        if let Some(device) = ctx.device {
+            self.take_data(device, ctx.scene);
         }
         if self.redraw_needed {
             self.redraw_needed = false;
@@ -247,6 +295,10 @@ impl Plugin for RangerPlugin {
                 ui.checkbox(&mut self.scan_style.lines, "lines");
                 ui.checkbox(&mut self.scan_style.fill_cspace, "fill free space");
                 ui.checkbox(&mut self.scan_style.draw_cspace, "outline free space");
+                ui.checkbox(
+                    &mut self.scan_style.shade_intensity,
+                    "shade returns by intensity",
+                );
             }
         }
         if before != (self.scan_style, self.visible) {

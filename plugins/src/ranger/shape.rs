@@ -6,10 +6,9 @@
 //!   plugin draws a scan (points, lines, free space), through its scan geometry code;
 //! * one element and one reading — a single cone (an IR or sonar range finder).
 
-use player_proto::interfaces::laser::LaserScan;
 use player_proto::interfaces::ranger::RangerConfig;
 
-use crate::laser::{ScanStyle, scan_geometry};
+use crate::laser::{Bearings, Readings, ScanStyle, scan_geometry};
 use crate::scene::Geometry;
 use crate::sonar::cones::{ConeStyle, Transducer, cone_geometry};
 
@@ -30,17 +29,32 @@ pub enum RangerShape {
     Empty,
 }
 
-/// Fills `geometry` (cleared first) with `ranges` drawn in the shape the device calls for.
-/// `elements` are the element poses in the drawing's frame; a single element's pose is
-/// expected to be folded into the node's transform by the caller and is not applied here.
+/// What a ranger has told so far.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct RangerData<'a> {
+    /// The newest ranges, m.
+    pub ranges: &'a [f64],
+    /// The newest intensities (used when there is one per range).
+    pub intensities: &'a [f64],
+    /// The element poses in the drawing's frame; a single element's pose is expected to be
+    /// folded into the node's transform by the caller and is not applied here.
+    pub elements: &'a [Transducer],
+    pub config: Option<&'a RangerConfig>,
+}
+
+/// Fills `geometry` (cleared first) with the ranges drawn in the shape the device calls for.
 pub fn ranger_geometry(
-    ranges: &[f64],
-    elements: &[Transducer],
-    config: Option<&RangerConfig>,
+    data: &RangerData<'_>,
     scan_style: &ScanStyle,
     cone_style: &ConeStyle,
     geometry: &mut Geometry,
 ) -> RangerShape {
+    let RangerData {
+        ranges,
+        intensities,
+        elements,
+        config,
+    } = *data;
     geometry.clear();
     if ranges.is_empty() {
         return RangerShape::Empty;
@@ -72,14 +86,16 @@ pub fn ranger_geometry(
     let Some(config) = config else {
         return RangerShape::WaitingForConfig;
     };
-    let scan = LaserScan {
-        min_angle: config.min_angle as f32,
-        max_angle: config.max_angle as f32,
-        resolution: beam_spacing(config, ranges.len()) as f32,
-        max_range: config.max_range as f32,
+    let mut scan = Readings {
         ranges: ranges_f32,
-        ..LaserScan::default()
+        bearings: Bearings::Even {
+            first: config.min_angle as f32,
+            step: beam_spacing(config, ranges.len()) as f32,
+        },
+        max_range: config.max_range as f32,
+        intensities: Vec::new(),
     };
+    scan.set_intensities(intensities.iter().map(|&v| v as f32));
     scan_geometry(&scan, scan_style, geometry);
     RangerShape::Scan
 }
@@ -115,14 +131,12 @@ mod tests {
     #[test]
     fn a_zero_resolution_is_spread_over_the_field_of_view() {
         let mut g = Geometry::default();
-        let shape = ranger_geometry(
-            &[1.0, 1.0, 1.0],
-            &[],
-            Some(&laser_config()),
-            &ScanStyle::default(),
-            &ConeStyle::default(),
-            &mut g,
-        );
+        let data = RangerData {
+            ranges: &[1.0, 1.0, 1.0],
+            config: Some(&laser_config()),
+            ..RangerData::default()
+        };
+        let shape = ranger_geometry(&data, &ScanStyle::default(), &ConeStyle::default(), &mut g);
         assert_eq!(shape, RangerShape::Scan);
         assert!((g.points[2].pos - glam::Vec3::new(0.0, 1.0, 0.0)).length() < 1e-5);
     }
@@ -131,11 +145,43 @@ mod tests {
     fn without_config_a_scan_waits_and_a_single_reading_is_a_cone() {
         let mut g = Geometry::default();
         let style = (ScanStyle::default(), ConeStyle::default());
-        let shape = ranger_geometry(&[1.0, 2.0], &[], None, &style.0, &style.1, &mut g);
+        let two = RangerData {
+            ranges: &[1.0, 2.0],
+            ..RangerData::default()
+        };
+        let shape = ranger_geometry(&two, &style.0, &style.1, &mut g);
         assert_eq!(shape, RangerShape::WaitingForConfig);
         assert!(g.is_empty());
-        let shape = ranger_geometry(&[1.0], &[], None, &style.0, &style.1, &mut g);
+        let one = RangerData {
+            ranges: &[1.0],
+            ..RangerData::default()
+        };
+        let shape = ranger_geometry(&one, &style.0, &style.1, &mut g);
         assert_eq!(shape, RangerShape::Cones);
         assert!(!g.triangles.is_empty());
+    }
+
+    #[test]
+    fn a_scan_shaped_ranger_shades_returns_by_the_intensities_that_match() {
+        let mut g = Geometry::default();
+        let config = laser_config();
+        let mut data = RangerData {
+            ranges: &[1.0, 1.0, 1.0],
+            intensities: &[1.0, 0.5, 1.0],
+            config: Some(&config),
+            ..RangerData::default()
+        };
+        let styles = (ScanStyle::default(), ConeStyle::default());
+        ranger_geometry(&data, &styles.0, &styles.1, &mut g);
+        assert!(
+            g.points[1].color.0[0] < g.points[0].color.0[0],
+            "the weaker is dimmer"
+        );
+        data.intensities = &[1.0, 0.5];
+        ranger_geometry(&data, &styles.0, &styles.1, &mut g);
+        assert!(
+            g.points.iter().all(|p| p.color == styles.0.color),
+            "another scan's"
+        );
     }
 }
