@@ -179,15 +179,7 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
         }),
     ));
     assert!(plugin.update(&mut ctx));
-    let points: Vec<Vec3> = ctx
-        .scene
-        .get(node)
-        .unwrap()
-        .geometry
-        .points
-        .iter()
-        .map(|p| p.pos)
-        .collect();
+    let points = points_of(ctx.scene, node);
     assert_eq!(points.len(), 2);
     assert!((points[0] - Vec3::X).length() < 1e-5, "{points:?}");
 
@@ -203,15 +195,7 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
         }),
     ));
     assert!(plugin.update(&mut ctx));
-    let points: Vec<Vec3> = ctx
-        .scene
-        .get(node)
-        .unwrap()
-        .geometry
-        .points
-        .iter()
-        .map(|p| p.pos)
-        .collect();
+    let points = points_of(ctx.scene, node);
     assert_eq!(points.len(), 2, "{points:?}");
     assert!(
         (points[0] - Vec3::new(0.0, 2.0, 0.0)).length() < 1e-5,
@@ -222,4 +206,10 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
         "{points:?}"
     );
     assert!(!plugin.update(&mut ctx), "nothing new: nothing redrawn");
+}
+
+/// Where the points of `node` are, in its own frame.
+fn points_of(scene: &Scene, node: pv3d_plugins::scene::NodeId) -> Vec<Vec3> {
+    let g = &scene.get(node).unwrap().geometry;
+    g.points.iter().map(|p| p.pos).collect()
 }

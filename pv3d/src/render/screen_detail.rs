@@ -70,28 +70,7 @@ impl Simplifier {
                 && next[0].color == prev[1].color
                 && next[1].color == prev[1].color
         };
-        let segments = &segments[..segments.len() / 2 * 2];
-        let mut start = 0;
-        while start < segments.len() {
-            let mut end = start + 2;
-            while end < segments.len() && continues(&segments[end - 2..end], &segments[end..]) {
-                end += 2;
-            }
-            self.chain.clear();
-            self.chain.push(segments[start]);
-            self.chain
-                .extend(segments[start..end].iter().skip(1).step_by(2));
-            self.simplify_chain(detail);
-            let kept = self.chain.iter().zip(&self.keep).filter(|(_, k)| **k);
-            let mut previous = None;
-            for (&v, _) in kept {
-                if let Some(p) = previous {
-                    out.extend([p, v]);
-                }
-                previous = Some(v);
-            }
-            start = end;
-        }
+        self.simplify_runs(detail, segments, 2, continues, |_, a, b| out.extend([a, b]));
     }
 
     /// Appends `triangles` to `out`, fans simplified: a run of triangles that share their
@@ -106,24 +85,47 @@ impl Simplifier {
         let continues = |prev: &[GpuVertex], next: &[GpuVertex]| {
             next[0] == prev[0] && next[1] == prev[2] && next[2].color == prev[2].color
         };
-        let triangles = &triangles[..triangles.len() / 3 * 3];
+        self.simplify_runs(detail, triangles, 3, continues, |centre, a, b| {
+            out.extend([centre, a, b])
+        });
+    }
+
+    /// Splits `primitives` (`stride` vertices each) into runs in which each primitive
+    /// `continues` the one before; a run's polyline is the second-to-last vertex of its first
+    /// primitive followed by the last vertex of each (a segment chain's vertices; a fan's
+    /// rim). Each run is simplified and `emit` called with the run's first vertex (a fan's
+    /// centre) and every kept pair. A primitive cut short at the end is dropped, as GL would.
+    fn simplify_runs(
+        &mut self,
+        detail: &ScreenDetail,
+        primitives: &[GpuVertex],
+        stride: usize,
+        continues: impl Fn(&[GpuVertex], &[GpuVertex]) -> bool,
+        mut emit: impl FnMut(GpuVertex, GpuVertex, GpuVertex),
+    ) {
+        let primitives = &primitives[..primitives.len() / stride * stride];
         let mut start = 0;
-        while start < triangles.len() {
-            let mut end = start + 3;
-            while end < triangles.len() && continues(&triangles[end - 3..end], &triangles[end..]) {
-                end += 3;
+        while start < primitives.len() {
+            let mut end = start + stride;
+            while end < primitives.len()
+                && continues(&primitives[end - stride..end], &primitives[end..])
+            {
+                end += stride;
             }
-            let centre = triangles[start];
             self.chain.clear();
-            self.chain.push(triangles[start + 1]);
-            self.chain
-                .extend(triangles[start..end].iter().skip(2).step_by(3));
+            self.chain.push(primitives[start + stride - 2]);
+            self.chain.extend(
+                primitives[start..end]
+                    .iter()
+                    .skip(stride - 1)
+                    .step_by(stride),
+            );
             self.simplify_chain(detail);
             let kept = self.chain.iter().zip(&self.keep).filter(|(_, k)| **k);
             let mut previous = None;
             for (&v, _) in kept {
                 if let Some(p) = previous {
-                    out.extend([centre, p, v]);
+                    emit(primitives[start], p, v);
                 }
                 previous = Some(v);
             }
