@@ -15,9 +15,9 @@ mod body;
 mod driving;
 mod goal;
 mod teleop;
+mod trail;
 mod widgets;
 
-use std::collections::VecDeque;
 use std::time::Instant;
 
 use glam::{Affine3A, Quat, Vec2, Vec3};
@@ -35,6 +35,7 @@ use crate::device::ReplyTicket;
 use crate::plugin::{AnchorKey, Anchors, Handled, InputEvent, Plugin, PluginContext, Service};
 use crate::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 use crate::skin::Skin;
+use trail::Trail;
 
 const DATA_STATE: u8 = 1;
 const GO_TO_POINT: &str = "Go to point…";
@@ -51,8 +52,7 @@ pub struct Position2dPlugin {
     pose: (f32, f32, f32),
     velocity: (f32, f32),
     stalled: bool,
-    trail: VecDeque<Vec3>,
-    trail_length: usize,
+    trail: Trail,
     limits: Limits,
     active: bool,
     mode: DriveMode,
@@ -137,8 +137,7 @@ impl Position2dPlugin {
             pose: (0.0, 0.0, 0.0),
             velocity: (0.0, 0.0),
             stalled: false,
-            trail: VecDeque::new(),
-            trail_length,
+            trail: Trail::new(trail_length),
             limits,
             active: false,
             mode,
@@ -173,32 +172,11 @@ impl Position2dPlugin {
     }
 
     fn redraw_trail(&self, scene: &mut Scene) {
-        let Some(node) = scene.get_mut(self.trail_node) else {
-            return;
-        };
-        node.geometry.clear();
-        let faded = self.color.with_alpha(150);
-        let points: Vec<Vec3> = self.trail.iter().copied().collect();
-        for pair in points.windows(2) {
-            node.geometry.line(pair[0], pair[1], faded);
-        }
-        let here = Vec3::new(self.pose.0, self.pose.1, 0.02);
-        let mut cross = |t: Vec2, marker: Rgba| {
-            let at = t.extend(0.02);
-            let r = 0.15;
-            node.geometry
-                .line(at - Vec3::X * r, at + Vec3::X * r, marker);
-            node.geometry
-                .line(at - Vec3::Y * r, at + Vec3::Y * r, marker);
-            node.geometry.line(here, at, marker.with_alpha(120));
-        };
-        match &self.goal {
-            Some(Goal::Point(t)) => cross(*t, Rgba::rgb(250, 200, 60)),
-            Some(Goal::Follow { last_seen, .. }) => cross(*last_seen, Rgba::rgb(240, 110, 200)),
-            None => {}
-        }
-        if let Some(t) = self.dragging {
-            cross(t, Rgba::rgb(90, 220, 240));
+        if let Some(node) = scene.get_mut(self.trail_node) {
+            let robot = Vec2::new(self.pose.0, self.pose.1);
+            let (goal, dragging) = (self.goal.as_ref(), self.dragging);
+            self.trail
+                .draw(&mut node.geometry, self.color, robot, goal, dragging);
         }
     }
 
@@ -244,18 +222,7 @@ impl Position2dPlugin {
                 Vec3::new(self.pose.0, self.pose.1, 0.0),
             );
         }
-        let here = Vec3::new(self.pose.0, self.pose.1, 0.01);
-        if self.trail_length > 0
-            && self
-                .trail
-                .back()
-                .is_none_or(|last| last.distance(here) > 0.02)
-        {
-            self.trail.push_back(here);
-            while self.trail.len() > self.trail_length {
-                self.trail.pop_front();
-            }
-        }
+        self.trail.record(Vec2::new(self.pose.0, self.pose.1));
         self.redraw_trail(ctx.scene);
         true
     }
@@ -264,7 +231,7 @@ impl Position2dPlugin {
 impl Plugin for Position2dPlugin {
     fn save(&self) -> PluginConfig {
         let mut config = self.config.clone();
-        config.set("trailLength", self.trail_length.to_string());
+        config.set("trailLength", self.trail.capacity().to_string());
         config.set("maxSpeed", format!("{}", self.limits.max_speed));
         config.set("maxTurn", format!("{}", self.limits.max_turn));
         config.set("mode", self.mode.name());
