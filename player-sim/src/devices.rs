@@ -10,7 +10,9 @@ use player_proto::interfaces::fiducial::{
 };
 use player_proto::interfaces::laser::{Laser, LaserConfig, LaserGeometry, LaserScan};
 use player_proto::interfaces::position2d::{Position2d, Position2dData, Position2dGeometry};
-use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry, RangerRanges};
+use player_proto::interfaces::ranger::{
+    Ranger, RangerConfig, RangerGeometry, RangerIntensities, RangerRanges,
+};
 use player_proto::interfaces::simulation::{Simulation as SimMsg, SimulationPose2d};
 use player_proto::interfaces::sonar::{Sonar, SonarData, SonarGeometry};
 use player_proto::message::{Body, Message};
@@ -18,7 +20,7 @@ use player_proto::server::{Device, Reply};
 
 use crate::camera_frames::camera_data;
 use crate::served::{ServedDevice, Source};
-use crate::sim::{Command, Simulation, fiducials, ranger_scan};
+use crate::sim::{Command, RangerReturns, Simulation, fiducials, ranger_returns, ranger_scan};
 use crate::world::{Pose, RangerSpec, SensorSpec};
 
 /// A served device, backed by the shared simulation.
@@ -206,10 +208,12 @@ impl SimDevice {
         }
     }
 
-    /// This step's data message (subtype, body), if the device publishes any.
-    pub fn data(sim: &Simulation, source: Source, scan_id: u32) -> Option<(u8, Body)> {
-        Some(match source {
-            Source::Simulation => return None,
+    /// This step's data messages (subtype, body), in the order they are sent: none for the
+    /// simulation, ranges then intensities for a ranger (as Stage sends them), one message
+    /// for every other device.
+    pub fn data(sim: &Simulation, source: Source, scan_id: u32) -> Vec<(u8, Body)> {
+        vec![match source {
+            Source::Simulation => return Vec::new(),
             Source::Position { robot } => {
                 let r = &sim.robots[robot];
                 let (vx, vy, va) = r.velocity;
@@ -223,15 +227,29 @@ impl SimDevice {
                 )
             }
             Source::Ranger { robot, ranger } => {
-                let ranges = ranger_scan(sim, robot, &sim.world.robots[robot].rangers[ranger]);
-                (1, Body::Ranger(Ranger::Ranges(RangerRanges { ranges })))
+                let spec = &sim.world.robots[robot].rangers[ranger];
+                let RangerReturns {
+                    ranges,
+                    intensities,
+                } = ranger_returns(sim, robot, spec);
+                return vec![
+                    (1, Body::Ranger(Ranger::Ranges(RangerRanges { ranges }))),
+                    (
+                        3,
+                        Body::Ranger(Ranger::Intensities(RangerIntensities { intensities })),
+                    ),
+                ];
             }
             Source::Laser { robot, ranger } => {
                 let spec = &sim.world.robots[robot].rangers[ranger];
                 let c = ranger_config(spec);
-                let ranges = ranger_scan(sim, robot, spec)
-                    .into_iter()
-                    .map(|r| r as f32)
+                let returns = ranger_returns(sim, robot, spec);
+                let ranges = returns.ranges.iter().map(|&r| r as f32).collect();
+                // One byte per reading, as Player's rangertolaser converts Stage's values.
+                let intensity: Vec<u8> = returns
+                    .intensities
+                    .iter()
+                    .map(|&v| v.clamp(0.0, 255.0) as u8)
                     .collect();
                 (
                     1,
@@ -241,7 +259,7 @@ impl SimDevice {
                         resolution: c.angular_res as f32,
                         max_range: c.max_range as f32,
                         ranges,
-                        intensity: Default::default(),
+                        intensity: intensity.into(),
                         id: scan_id,
                     })),
                 )
@@ -281,7 +299,7 @@ impl SimDevice {
                     Body::Fiducial(Fiducial::Scan(FiducialData { fiducials: items })),
                 )
             }
-        })
+        }]
     }
 }
 

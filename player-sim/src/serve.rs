@@ -166,8 +166,10 @@ fn step_loop(
             devices
                 .iter()
                 .filter(|(addr, _)| publisher.subscribers(*addr) > 0)
-                .filter_map(|&(addr, source)| {
-                    SimDevice::data(&sim, source, id).map(|(subtype, body)| (addr, subtype, body))
+                .flat_map(|&(addr, source)| {
+                    SimDevice::data(&sim, source, id)
+                        .into_iter()
+                        .map(move |(subtype, body)| (addr, subtype, body))
                 })
                 .map(|(addr, subtype, body)| (addr, subtype, body, sim.time))
                 .collect()

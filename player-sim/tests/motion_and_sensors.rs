@@ -4,7 +4,7 @@
 
 mod support;
 
-use player_sim::sim::{Command, Simulation, fiducials, ranger_scan};
+use player_sim::sim::{Command, Simulation, fiducials, ranger_returns, ranger_scan};
 use player_sim::world::{Pose, World};
 use support::{run, worlds, write};
 
@@ -155,4 +155,39 @@ fn the_same_commands_give_the_same_trajectory() {
             .collect::<Vec<_>>()
     };
     assert_eq!(trajectory(), trajectory());
+}
+
+#[test]
+fn rangers_report_the_ranger_return_of_what_they_hit_and_see_through_negative_ones() {
+    let dir = tempfile::tempdir().unwrap();
+    image::GrayImage::from_pixel(800, 800, image::Luma([255]))
+        .save(dir.path().join("blank.png"))
+        .unwrap();
+    // Looking east, north and west (three samples over 180°, first at -90°: south, east,
+    // north): a reflector to the east, a glass pane to the north (invisible to rangers),
+    // the boundary walls elsewhere.
+    let path = write(
+        dir.path(),
+        "returns.world",
+        "floorplan( size [ 8 8 1 ] bitmap \"blank.png\" boundary 1 ranger_return 0.5 )\n\
+         model( name \"reflector\" pose [ 2 0 0 0 ] size [ 0.2 1 0.5 ] ranger_return 2 )\n\
+         model( name \"glass\" pose [ 0 2 0 0 ] size [ 1 0.2 0.5 ] ranger_return -1 )\n\
+         position( name \"r\" pose [ 0 0 0 0 ] ranger( sensor( range [ 0 8 ] fov 180 samples 3 ) ) )\n",
+    );
+    let world = World::load(&path).unwrap();
+    assert!(world.ignored.is_empty(), "{:?}", world.ignored);
+    let sim = Simulation::new(world);
+    let ranger = sim.world.robots[0].rangers[0].clone();
+    let seen = ranger_returns(&sim, 0, &ranger);
+    assert_eq!(seen.intensities, vec![0.5, 2.0, 0.5], "{seen:?}");
+    assert!(
+        (seen.ranges[1] - 1.9).abs() < 0.02,
+        "the reflector's face: {seen:?}"
+    );
+    assert!(
+        seen.ranges[2] > 3.9,
+        "north sees through the glass to the wall: {seen:?}"
+    );
+    // The glass still stops robots and shows to cameras: only rangers see through it.
+    assert_eq!(sim.world.obstacles.len(), 2);
 }

@@ -164,6 +164,17 @@ fn fiducials_and_sonar_rings_of_the_multirobot_world() {
     ring.subscribe().unwrap();
     let (ranges, _) = wait_for("sonar readings", Duration::from_secs(3), || ring.ranges());
     assert_eq!(ranges.ranges.len(), 8);
+    // As Stage does, intensities follow the ranges: what each sonar hit reflects, 0 where it
+    // hit nothing. The front sonar sees lm1, whose retro-reflective tape (robots.inc) returns
+    // 2; the walls return 1.
+    let (intensities, _) = wait_for("intensities", Duration::from_secs(3), || ring.intensities());
+    let values = &intensities.intensities;
+    assert_eq!(values.len(), 8);
+    assert_eq!(values[0], 2.0, "{values:?}");
+    assert!(
+        values[1..].iter().all(|&v| v == 0.0 || v == 1.0),
+        "{values:?}"
+    );
     assert_eq!(
         client.devices().len(),
         8,

@@ -9,7 +9,9 @@ use crate::interfaces::position2d::{
     self, Position2d, Position2dCmdPos, Position2dCmdVel, Position2dData, Position2dGeometry,
     Position2dPower,
 };
-use crate::interfaces::ranger::{self, Ranger, RangerConfig, RangerGeometry, RangerRanges};
+use crate::interfaces::ranger::{
+    self, Ranger, RangerConfig, RangerGeometry, RangerIntensities, RangerRanges,
+};
 use crate::interfaces::sonar::{self, Sonar, SonarData, SonarGeometry};
 use crate::message::{Body, Message};
 use crate::wire::{DevAddr, Interface};
@@ -195,6 +197,16 @@ impl RangerProxy<'_> {
         let s = self.newest(1)?;
         match &s.message.body {
             Body::Ranger(Ranger::Ranges(d)) => Some((d.clone(), s)),
+            _ => None,
+        }
+    }
+
+    /// The newest intensities (`PLAYER_RANGER_DATA_INTNS`), which Stage sends after each
+    /// RANGE message.
+    pub fn intensities(&self) -> Option<(RangerIntensities, Stamped)> {
+        let s = self.newest(3)?;
+        match &s.message.body {
+            Body::Ranger(Ranger::Intensities(d)) => Some((d.clone(), s)),
             _ => None,
         }
     }

@@ -58,10 +58,17 @@ pub struct Stamped {
 pub(crate) type DataKey = (Interface, u16, u8);
 
 /// Per-device counters for rates.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct DeviceStats {
+    /// DATA messages.
     pub messages: u64,
     pub bytes: u64,
+    /// Readings: DATA messages with a server time of their own. A driver that sends one
+    /// reading as several messages stamped alike (Stage's ranger: ranges, then intensities)
+    /// counts once, so this is the rate a person means by "10 Hz".
+    pub updates: u64,
+    /// The server time of the last DATA message, s.
+    pub last_server_time: f64,
 }
 
 #[derive(Default)]
@@ -131,6 +138,10 @@ impl Shared {
             let s = stats.entry((a.interf, a.index)).or_default();
             s.messages += 1;
             s.bytes += size as u64;
+            if s.updates == 0 || message.header.timestamp != s.last_server_time {
+                s.updates += 1;
+                s.last_server_time = message.header.timestamp;
+            }
         }
         let key = (a.interf, a.index, message.header.subtype);
         let mut latest = self.latest.lock().expect("latest");
@@ -152,5 +163,39 @@ impl Shared {
             .lock()
             .expect("latest")
             .retain(|(i, n, _), _| !(*i == interf && *n == index));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::interfaces::ranger::{Ranger, RangerIntensities, RangerRanges};
+    use crate::wire::{DevAddr, MsgType};
+
+    fn stamped(body: Ranger, time: f64) -> Message {
+        let addr: DevAddr = "ranger:0".parse().unwrap();
+        let mut m = Message::typed(addr, MsgType::Data, body);
+        m.header.timestamp = time;
+        m
+    }
+
+    #[test]
+    fn a_reading_sent_as_several_messages_counts_as_one_update() {
+        let shared = Shared::new(DataMode::Push, false);
+        shared
+            .subscriptions
+            .lock()
+            .unwrap()
+            .insert((Interface::RANGER, 0));
+        for time in [1.0, 1.1] {
+            let ranges = RangerRanges { ranges: vec![1.0] };
+            let intensities = RangerIntensities {
+                intensities: vec![1.0],
+            };
+            assert!(shared.store(stamped(Ranger::Ranges(ranges), time), 60));
+            assert!(shared.store(stamped(Ranger::Intensities(intensities), time), 60));
+        }
+        let stats = shared.stats.lock().unwrap()[&(Interface::RANGER, 0)];
+        assert_eq!((stats.messages, stats.updates), (4, 2));
     }
 }

@@ -13,7 +13,10 @@ pub use camera::{Frame, render_camera};
 pub use geometry::GroundBox;
 pub use nearby::{NearbyBoxes, SolidBox};
 pub use noise::Noise;
-pub use sensors::{FiducialHit, body_at, fiducials, on_robot, ranger_scan, ranger_scan_exhaustive};
+pub use sensors::{
+    FiducialHit, RangerReturns, body_at, fiducials, on_robot, ranger_returns, ranger_scan,
+    ranger_scan_exhaustive,
+};
 
 use crate::world::{Drive, Pose, World};
 

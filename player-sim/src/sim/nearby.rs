@@ -23,6 +23,8 @@ pub struct SolidBox<'a> {
     /// Height above the floor, m (for the camera).
     pub height: f64,
     pub color: [u8; 3],
+    /// What rangers report hitting it; negative: they see through it.
+    pub ranger_return: f64,
     /// The blocks inside the box, in its frame; empty for a plain box.
     shape: &'a [Polygon],
 }
@@ -73,16 +75,21 @@ impl<'a> NearbyBoxes<'a> {
             .filter(|(i, _)| Some(*i) != except)
             .map(|(_, (state, spec))| {
                 let body = body_at(state.pose, spec.origin);
-                (body, spec.size, spec.color, &spec.shape[..])
+                (
+                    body,
+                    spec.size,
+                    spec.color,
+                    spec.ranger_return,
+                    &spec.shape[..],
+                )
             });
-        let obstacles = sim
-            .world
-            .obstacles
-            .iter()
-            .map(|o| (body_at(o.pose, o.origin), o.size, o.color, &o.shape[..]));
+        let obstacles = sim.world.obstacles.iter().map(|o| {
+            let body = body_at(o.pose, o.origin);
+            (body, o.size, o.color, o.ranger_return, &o.shape[..])
+        });
         let boxes = robots
             .chain(obstacles)
-            .filter_map(|(pose, size, color, shape)| {
+            .filter_map(|(pose, size, color, ranger_return, shape)| {
                 let radius = size[0].hypot(size[1]) / 2.0;
                 let centre_distance = (pose.x - x).hypot(pose.y - y);
                 (centre_distance - radius <= reach).then(|| {
@@ -97,6 +104,7 @@ impl<'a> NearbyBoxes<'a> {
                         radius,
                         height: size[2],
                         color,
+                        ranger_return,
                         shape,
                     }
                 })
@@ -115,9 +123,21 @@ impl<'a> NearbyBoxes<'a> {
 
     /// The nearest box along the ray from `(x, y)` at `angle`, within `max`: (distance, box).
     pub fn nearest(&self, x: f64, y: f64, angle: f64, max: f64) -> Option<(f64, &SolidBox<'a>)> {
+        self.nearest_where(x, y, angle, max, |_| true)
+    }
+
+    /// [`NearbyBoxes::nearest`] among the boxes `counts` accepts.
+    pub fn nearest_where(
+        &self,
+        x: f64,
+        y: f64,
+        angle: f64,
+        max: f64,
+        counts: impl Fn(&SolidBox<'a>) -> bool,
+    ) -> Option<(f64, &SolidBox<'a>)> {
         let (dy, dx) = angle.sin_cos();
         let mut best: Option<(f64, &SolidBox<'a>)> = None;
-        for b in &self.boxes {
+        for b in self.boxes.iter().filter(|b| counts(b)) {
             let limit = best.map_or(max, |(d, _)| d);
             if !b.may_hit(x, y, dx, dy, limit) {
                 continue;

@@ -25,8 +25,11 @@ pub fn body_at(pose: Pose, origin: Pose) -> Pose {
     }
 }
 
-/// Distance to the nearest thing along a ray, up to `max`: the floorplan by grid traversal and
-/// the boxes near the sensor.
+/// What a beam hit: its distance, and the `ranger_return` of the thing hit.
+type Hit = (f64, f64);
+
+/// The nearest thing along a ray a ranger sees, up to `max`: the floorplan by grid traversal
+/// and the boxes near the sensor, except those with a negative `ranger_return`.
 fn cast(
     sim: &Simulation,
     boxes: &NearbyBoxes,
@@ -34,10 +37,15 @@ fn cast(
     y: f64,
     angle: f64,
     max: f64,
-) -> Option<f64> {
-    let floor = floor_distance(sim, x, y, angle, max);
-    let limit = floor.unwrap_or(max);
-    let thing = boxes.nearest(x, y, angle, limit).map(|(d, _)| d);
+) -> Option<Hit> {
+    let floor = (sim.world.floor_ranger_return >= 0.0)
+        .then(|| floor_distance(sim, x, y, angle, max))
+        .flatten()
+        .map(|d| (d, sim.world.floor_ranger_return));
+    let limit = floor.map_or(max, |(d, _)| d);
+    let thing = boxes
+        .nearest_where(x, y, angle, limit, |b| b.ranger_return >= 0.0)
+        .map(|(d, b)| (d, b.ranger_return));
     thing.or(floor)
 }
 
@@ -50,7 +58,7 @@ fn floor_distance(sim: &Simulation, x: f64, y: f64, angle: f64, max: f64) -> Opt
 }
 
 /// The same distance by testing every box: the unpruned reference the pruned cast is tested
-/// against and the benchmark's baseline.
+/// against and the benchmark's baseline (for worlds where rangers see everything).
 fn cast_exhaustive(
     sim: &Simulation,
     from: usize,
@@ -74,6 +82,19 @@ fn cast_exhaustive(
 /// over the field of view (first at -fov/2); for a ring, one reading per sensor. A beam that
 /// hits nothing reads the maximum range.
 pub fn ranger_scan(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Vec<f64> {
+    ranger_returns(sim, robot, ranger).ranges
+}
+
+/// A ranger's readings as Stage reports them: ranges, and intensities — the `ranger_return`
+/// of what each beam hit, 0 where it hit nothing.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RangerReturns {
+    pub ranges: Vec<f64>,
+    pub intensities: Vec<f64>,
+}
+
+/// [`ranger_scan`] with the intensities.
+pub fn ranger_returns(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> RangerReturns {
     scan_with(sim, robot, ranger, |origin, max| {
         let boxes = NearbyBoxes::around(sim, Some(robot), origin.x, origin.y, max);
         move |angle| cast(sim, &boxes, origin.x, origin.y, angle, max)
@@ -82,20 +103,21 @@ pub fn ranger_scan(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Vec<f
 
 /// [`ranger_scan`] testing every box against every beam (no pruning): the reference.
 pub fn ranger_scan_exhaustive(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Vec<f64> {
-    scan_with(sim, robot, ranger, |origin, max| {
-        move |angle| cast_exhaustive(sim, robot, origin.x, origin.y, angle, max)
-    })
+    let scan = scan_with(sim, robot, ranger, |origin, max| {
+        move |angle| cast_exhaustive(sim, robot, origin.x, origin.y, angle, max).map(|d| (d, 1.0))
+    });
+    scan.ranges
 }
 
 /// A ranger's beams, each cast by the caster `prepare` makes for a sensor's origin and reach.
-fn scan_with<F: Fn(f64) -> Option<f64>>(
+fn scan_with<F: Fn(f64) -> Option<Hit>>(
     sim: &Simulation,
     robot: usize,
     ranger: &RangerSpec,
     prepare: impl Fn(Pose, f64) -> F,
-) -> Vec<f64> {
+) -> RangerReturns {
     let base = on_robot(sim.robots[robot].pose, ranger.pose);
-    let mut out = Vec::new();
+    let mut out = RangerReturns::default();
     for (index, sensor) in ranger.sensors.iter().enumerate() {
         let origin = on_robot(base, sensor.pose);
         let caster = prepare(origin, sensor.max_range);
@@ -110,17 +132,21 @@ fn scan_with<F: Fn(f64) -> Option<f64>>(
         let first = if n > 1 { -sensor.fov / 2.0 } else { 0.0 };
         for i in 0..n {
             let angle = origin.a + first + i as f64 * step;
-            let reading = match caster(angle) {
+            let (reading, intensity) = match caster(angle) {
                 // A beam that hits nothing reads the maximum, as a real one does: no noise.
-                None => sensor.max_range,
-                Some(range) => sim.noise.range(
-                    range,
-                    sensor.min_range,
-                    sensor.max_range,
-                    &[sim.steps, robot as u64, place, index as u64, i as u64],
+                None => (sensor.max_range, 0.0),
+                Some((range, intensity)) => (
+                    sim.noise.range(
+                        range,
+                        sensor.min_range,
+                        sensor.max_range,
+                        &[sim.steps, robot as u64, place, index as u64, i as u64],
+                    ),
+                    intensity,
                 ),
             };
-            out.push(reading.max(sensor.min_range));
+            out.ranges.push(reading.max(sensor.min_range));
+            out.intensities.push(intensity);
         }
     }
     out

@@ -6,7 +6,7 @@ use std::path::Path;
 
 use super::blocks::{self, Polygon, placed};
 use super::models::Model;
-use super::properties::{color_of, err, numbers, opt_number, pose_of, string};
+use super::properties::{color_of, err, numbers, opt_number, pose_of, ranger_return_of, string};
 use super::{Floorplan, OccupancyGrid, Pose, World};
 use crate::worldfile::WorldFileError;
 
@@ -27,6 +27,7 @@ impl World {
         let pose = pose_of(model)?;
         self.floor_height = size.get(2).copied().unwrap_or(1.0);
         self.floor_color = color_of(model)?;
+        self.floor_ranger_return = ranger_return_of(model)?;
         if opt_number(model, "boundary")?.is_some_and(|b| b != 0.0) {
             for wall in boundary_walls([size[0], size[1]], pose) {
                 self.pending_floor.push((wall, model.pos.clone()));

@@ -21,7 +21,8 @@ pub use models::{Model, Types, read_with_includes};
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
 use properties::{
-    color_of, err, fiducial_of, name_of, number, opt_number, origin_of, pose_of, size_of,
+    color_of, err, fiducial_of, name_of, number, opt_number, origin_of, pose_of, ranger_return_of,
+    size_of,
 };
 
 /// Stage's drive models.
@@ -96,6 +97,8 @@ pub struct RobotSpec {
     pub color: [u8; 3],
     pub drive: Drive,
     pub fiducial_id: Option<i32>,
+    /// What rangers report hitting it (Stage's `ranger_return`); negative: they see through.
+    pub ranger_return: f64,
     /// Where the body's centre lies from `pose`, in the robot's frame (Stage's `origin`:
     /// Stage's pioneer.inc puts a Pioneer's 4 cm behind the point it turns about).
     pub origin: Pose,
@@ -116,6 +119,8 @@ pub struct BoxObstacle {
     pub size: [f64; 3],
     pub color: [u8; 3],
     pub fiducial_id: Option<i32>,
+    /// What rangers report hitting it (Stage's `ranger_return`); negative: they see through.
+    pub ranger_return: f64,
     /// Where the body's centre lies from `pose`, in the model's frame (Stage's `origin`).
     pub origin: Pose,
     /// The model's `block`s, scaled to its size, in its own frame (empty when it has none).
@@ -154,6 +159,8 @@ pub struct World {
     /// The floorplan's wall height (its size's z) and colour, for the camera.
     pub floor_height: f64,
     pub floor_color: [u8; 3],
+    /// What rangers report hitting the floorplan's walls (its `ranger_return`).
+    pub floor_ranger_return: f64,
     pub robots: Vec<RobotSpec>,
     pub obstacles: Vec<BoxObstacle>,
     /// "ignored: <what> at file:line", once each.
@@ -179,6 +186,7 @@ const READ: &[&str] = &[
     "origin",
     "fiducial_return",
     "obstacle_return",
+    "ranger_return",
     "range_min",
     "range_max",
     "range_max_id",
@@ -197,6 +205,7 @@ impl World {
             resolution: DEFAULT_RESOLUTION,
             floor_height: 1.0,
             floor_color: [77, 77, 77],
+            floor_ranger_return: 1.0,
             ..World::default()
         };
         let base = path.parent().unwrap_or(Path::new("."));
@@ -342,6 +351,7 @@ impl World {
                     size,
                     color: color_of(model)?,
                     fiducial_id: fiducial_of(model)?,
+                    ranger_return: ranger_return_of(model)?,
                     origin: origin_of(model)?,
                     shape: blocks::model_blocks(model, [size[0], size[1]])?,
                 };

@@ -118,6 +118,12 @@ fn random_color(pos: &Pos) -> [u8; 3] {
     [h, h >> 8, h >> 16].map(|c| 64 + (c as u8) % 192)
 }
 
+/// Stage's `ranger_return`: the reflectance rangers report for this model (1 unless set);
+/// negative = invisible to rangers.
+pub(super) fn ranger_return_of(m: &Model) -> Result<f64, WorldFileError> {
+    Ok(opt_number(m, "ranger_return")?.unwrap_or(1.0))
+}
+
 pub(super) fn fiducial_of(m: &Model) -> Result<Option<i32>, WorldFileError> {
     Ok(opt_number(m, "fiducial_return")?
         .map(|v| v as i32)

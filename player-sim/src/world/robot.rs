@@ -6,7 +6,7 @@ use super::blocks::model_blocks;
 use super::models::Model;
 use super::properties::{
     color_of, err, fiducial_of, name_of, number, numbers, opt_number, origin_of, pose_from,
-    pose_of, size_of, string,
+    pose_of, ranger_return_of, size_of, string,
 };
 use super::{CameraSpec, Drive, FiducialSpec, Pose, RangerSpec, RobotSpec, SensorSpec, World};
 use crate::worldfile::WorldFileError;
@@ -44,6 +44,7 @@ impl World {
             color: color_of(model)?,
             drive,
             fiducial_id: fiducial_of(model)?,
+            ranger_return: ranger_return_of(model)?,
             origin: origin_of(model)?,
             shape: model_blocks(model, [size[0], size[1]])?,
             rangers: Vec::new(),

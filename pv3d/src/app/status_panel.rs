@@ -69,7 +69,7 @@ impl StatusPanel {
         ui.colored_label(color, state.to_string());
         let mut cells = Vec::new();
         for (_, _, addr) in used.iter().filter(|(h, p, _)| h == host && *p == port) {
-            let count = client.stats(*addr).messages;
+            let count = client.stats(*addr).updates;
             let entry = self
                 .rates
                 .entry((host.to_string(), port, *addr))
