@@ -61,21 +61,23 @@ impl ScanStyle {
 /// return) is placed at `max_range`, flagged `false`; so is one without a usable bearing.
 pub fn endpoints(scan: &Readings) -> impl Iterator<Item = (Vec3, bool)> + '_ {
     let max = scan.max_range;
-    scan.ranges.iter().enumerate().map(move |(i, &r)| {
-        let hit = r.is_finite() && r > 0.0 && (max <= 0.0 || r < max);
-        let r = if hit {
-            r
-        } else if max > 0.0 {
-            max
-        } else {
-            0.0
-        };
-        let a = scan.bearing(i);
-        if !a.is_finite() {
-            return (Vec3::ZERO, false);
-        }
-        (Vec3::new(r * a.cos(), r * a.sin(), 0.0), hit)
-    })
+    scan.ranges
+        .iter()
+        .zip(scan.directions())
+        .map(move |(&r, direction)| {
+            let hit = r.is_finite() && r > 0.0 && (max <= 0.0 || r < max);
+            let r = if hit {
+                r
+            } else if max > 0.0 {
+                max
+            } else {
+                0.0
+            };
+            let Some((cos, sin)) = direction else {
+                return (Vec3::ZERO, false);
+            };
+            (Vec3::new(r * cos, r * sin, 0.0), hit)
+        })
 }
 
 /// The colour of each return: `style.color`, or — shading by intensity, with intensities that
