@@ -13,6 +13,7 @@ use pv3d::app::{
 };
 use pv3d::composition::{Composition, ParserRegistry, emit_document};
 use pv3d::embedded_world::serve_world;
+use pv3d::render::Projection;
 use pv3d::robots::RobotManager;
 
 /// Player Viewer 3D: compose Player devices into a 3D viewer and tele-operation tool.
@@ -80,6 +81,17 @@ struct Cli {
     /// Seconds to wait for the Player servers' device lists before building the scene.
     #[arg(long, default_value_t = 3.0, value_name = "SECONDS")]
     connect_timeout: f64,
+
+    /// The view to start in: the map-like top view or the perspective one (T switches).
+    #[arg(long, value_enum, default_value_t = StartView::Top)]
+    view: StartView,
+}
+
+/// The projection the 3D view starts in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum StartView {
+    Top,
+    Perspective,
 }
 
 fn parse_size(text: &str) -> Result<(u32, u32), String> {
@@ -170,6 +182,10 @@ fn main() -> Result<()> {
     let registry = pv3d_plugins::standard_plugins();
     let lookup = robots.clone();
     let mut viewer = Viewer::new(instances, registry, &|device| lookup.device(device));
+    viewer.view.camera.projection = match cli.view {
+        StartView::Top => Projection::Top,
+        StartView::Perspective => Projection::Perspective,
+    };
     if !composition.clients.is_empty() {
         viewer.robots = Some(robots);
         viewer.composer = Some(composer);

@@ -230,3 +230,46 @@ fn a_world_drawn_with_blocks_shows_its_block_walls() {
     let crate_pixels = count(&image, |p| p[0] > 120 && p[1] < 60 && p[2] < 60);
     assert!(crate_pixels > 300, "the crate: {crate_pixels} pixels");
 }
+
+#[test]
+fn the_view_can_start_in_perspective() {
+    let dir = tempfile::tempdir().unwrap();
+    // Where the room's walls begin on the left, in the wall rows nearest the top and the
+    // bottom of the picture: the same for a map, further in at the far side in perspective.
+    let left_edges = |view: &str| {
+        let image = screenshot(
+            &["--world", "stage-worlds/classroom.world", "--view", view],
+            "1.0",
+            "900x700",
+            &dir.path().join(format!("{view}.png")),
+        );
+        let is_wall = |p: &image::Rgba<u8>| {
+            (130..=175).contains(&p[0])
+                && (i32::from(p[0]) - i32::from(p[2])).abs() < 20
+                && (i32::from(p[0]) - i32::from(p[1])).abs() < 12
+        };
+        // Right of the item tree, above the status panel.
+        let rows: Vec<(u32, u32)> = (0..560)
+            .filter_map(|y| {
+                let x = (330..image.width()).find(|&x| is_wall(image.get_pixel(x, y)))?;
+                Some((y, x))
+            })
+            .collect();
+        assert!(
+            rows.len() > 100,
+            "{view}: the room shows ({} rows)",
+            rows.len()
+        );
+        (rows[2].1, rows[rows.len() - 3].1)
+    };
+    let (top_far, top_near) = left_edges("top");
+    assert!(
+        top_far.abs_diff(top_near) <= 4,
+        "a map: {top_far} vs {top_near}"
+    );
+    let (far, near) = left_edges("perspective");
+    assert!(
+        far > near + 20,
+        "perspective: far side {far} right of near side {near}"
+    );
+}
