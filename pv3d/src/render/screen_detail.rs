@@ -185,11 +185,12 @@ impl Simplifier {
             if b - a < 2 || pa.is_nan() || pb.is_nan() {
                 continue;
             }
+            let segment = Segment::new(pa, pb);
             let (mut farthest, mut farthest_squared) = (a, 0.0);
-            for i in a + 1..b {
-                let d = distance_squared_to_segment(self.at[i], pa, pb);
+            for (i, &p) in self.at[a + 1..b].iter().enumerate() {
+                let d = segment.distance_squared(p);
                 if d > farthest_squared {
-                    (farthest, farthest_squared) = (i, d);
+                    (farthest, farthest_squared) = (a + 1 + i, d);
                 }
             }
             if farthest_squared >= tolerance_squared {
@@ -200,16 +201,35 @@ impl Simplifier {
     }
 }
 
-/// The squared distance from `p` to the segment `a`–`b`.
-fn distance_squared_to_segment(p: Vec2, a: Vec2, b: Vec2) -> f32 {
-    let ab = b - a;
-    let length_squared = ab.length_squared();
-    let t = if length_squared > 0.0 {
-        ((p - a).dot(ab) / length_squared).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.distance_squared(a + ab * t)
+/// A segment on screen, ready for many distance queries (the inner loop of the
+/// simplification: one division per span, not per vertex).
+struct Segment {
+    start: Vec2,
+    along: Vec2,
+    inverse_length_squared: f32,
+}
+
+impl Segment {
+    fn new(start: Vec2, end: Vec2) -> Segment {
+        let along = end - start;
+        let length_squared = along.length_squared();
+        Segment {
+            start,
+            along,
+            inverse_length_squared: if length_squared > 0.0 {
+                1.0 / length_squared
+            } else {
+                0.0
+            },
+        }
+    }
+
+    /// The squared distance from `p` to the segment.
+    fn distance_squared(&self, p: Vec2) -> f32 {
+        let from_start = p - self.start;
+        let t = (from_start.dot(self.along) * self.inverse_length_squared).clamp(0.0, 1.0);
+        (from_start - self.along * t).length_squared()
+    }
 }
 
 #[cfg(test)]
@@ -259,7 +279,11 @@ mod tests {
             .map(|p| {
                 segments
                     .chunks(2)
-                    .map(|s| distance_squared_to_segment(px(p), px(&s[0]), px(&s[1])).sqrt())
+                    .map(|s| {
+                        Segment::new(px(&s[0]), px(&s[1]))
+                            .distance_squared(px(p))
+                            .sqrt()
+                    })
                     .fold(f32::INFINITY, f32::min)
             })
             .fold(0.0, f32::max)
