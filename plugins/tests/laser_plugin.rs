@@ -1,7 +1,8 @@
 //! The laser plugin fed known data fills the scene as expected (no GL involved).
 
+mod support;
+
 use std::sync::Arc;
-use std::time::Instant;
 
 use glam::Vec3;
 use player_proto::interfaces::common::{BBox3d, Pose3d};
@@ -10,9 +11,9 @@ use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
 use pv3d_plugins::config::{DeviceRef, Param};
 use pv3d_plugins::device::RecordingDevice;
-use pv3d_plugins::plugin::{AnchorKey, Anchors, PluginContext};
-use pv3d_plugins::scene::{Object3D, Scene};
+use pv3d_plugins::scene::Scene;
 use pv3d_plugins::{PluginConfig, standard_plugins};
+use support::Harness;
 
 fn laser_config() -> PluginConfig {
     let mut parent = Param::new("parentNode", "");
@@ -56,32 +57,14 @@ fn scans_become_points_below_the_robot_at_the_geometry_pose() {
         ))),
     ));
 
-    let mut scene = Scene::new();
-    let mut anchors = Anchors::default();
-    let mut robot = Object3D::new("robot");
-    robot.transform = glam::Affine3A::from_translation(Vec3::new(5.0, 0.0, 0.0));
-    let robot = scene.add(robot);
-    anchors.publish(
-        AnchorKey {
-            host: "localhost".into(),
-            port: 6665,
-            interface: "position2d".into(),
-            index: 0,
-        },
-        robot,
-    );
-
-    let registry = standard_plugins();
-    let create = registry.constructor("libpv3d_laser").unwrap();
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: Some(&device),
-        anchors: &mut anchors,
-        now: Instant::now(),
+    let mut h = Harness {
+        device,
+        ..Harness::default()
     };
-    let mut plugin = create(laser_config(), &mut ctx).unwrap();
+    let robot = h.robot_at(5.0);
+    let mut plugin = h.make(laser_config()).unwrap();
     assert_eq!(
-        device.requests.lock().unwrap().len(),
+        h.device.requests.lock().unwrap().len(),
         1,
         "geometry was asked for"
     );
@@ -93,11 +76,13 @@ fn scans_become_points_below_the_robot_at_the_geometry_pose() {
         ranges: vec![2.0, 1.0],
         ..LaserScan::default()
     };
-    device.push(Message::typed(addr, MsgType::Data, Laser::Scan(scan)));
-    assert!(plugin.update(&mut ctx));
-    assert!(!plugin.update(&mut ctx), "nothing new, nothing redrawn");
+    h.device
+        .push(Message::typed(addr, MsgType::Data, Laser::Scan(scan)));
+    assert!(plugin.update(&mut h.ctx()));
+    assert!(!plugin.update(&mut h.ctx()), "nothing new, nothing redrawn");
 
     let node = plugin.node().unwrap();
+    let scene = &h.scene;
     let object = scene.get(node).unwrap();
     assert_eq!(object.parent, Some(robot));
     assert_eq!(object.geometry.points.len(), 2);
@@ -123,15 +108,9 @@ fn bad_parameters_name_the_place() {
         origin: "test.xml:7:3".into(),
         ..Param::new("drawPoints", "sometimes")
     });
-    let mut scene = Scene::new();
-    let mut anchors = Anchors::default();
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: None,
-        anchors: &mut anchors,
-        now: Instant::now(),
-    };
-    let err = match standard_plugins().constructor("libpv3d_laser").unwrap()(config, &mut ctx) {
+    let mut h = Harness::default();
+    let create = standard_plugins().constructor("libpv3d_laser").unwrap();
+    let err = match create(config, &mut h.ctx_without_device()) {
         Err(e) => e.to_string(),
         Ok(_) => panic!("accepted a bad flag"),
     };
@@ -146,22 +125,13 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
     use player_proto::interfaces::common::Pose2d;
     use player_proto::interfaces::laser::{LaserScanAngle, LaserScanPose};
 
-    let device = RecordingDevice::default();
     let addr: DevAddr = "laser:0".parse().unwrap();
-    let mut scene = Scene::new();
-    let mut anchors = Anchors::default();
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: Some(&device),
-        anchors: &mut anchors,
-        now: Instant::now(),
-    };
-    let create = standard_plugins().constructor("libpv3d_laser").unwrap();
-    let mut plugin = create(laser_config(), &mut ctx).unwrap();
+    let mut h = Harness::default();
+    let mut plugin = h.make(laser_config()).unwrap();
     let node = plugin.node().unwrap();
 
     // A scan with the pose it was taken at: the scan is drawn as a plain one would be.
-    device.push(Message::typed(
+    h.device.push(Message::typed(
         addr,
         MsgType::Data,
         Laser::ScanPose(LaserScanPose {
@@ -178,13 +148,13 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
             },
         }),
     ));
-    assert!(plugin.update(&mut ctx));
-    let points = points_of(ctx.scene, node);
+    assert!(plugin.update(&mut h.ctx()));
+    let points = points_of(&h.scene, node);
     assert_eq!(points.len(), 2);
     assert!((points[0] - Vec3::X).length() < 1e-5, "{points:?}");
 
     // Then a scan with its own bearings (one reading lacks one and is dropped).
-    device.push(Message::typed(
+    h.device.push(Message::typed(
         addr,
         MsgType::Data,
         Laser::ScanAngle(LaserScanAngle {
@@ -194,8 +164,8 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
             ..LaserScanAngle::default()
         }),
     ));
-    assert!(plugin.update(&mut ctx));
-    let points = points_of(ctx.scene, node);
+    assert!(plugin.update(&mut h.ctx()));
+    let points = points_of(&h.scene, node);
     assert_eq!(points.len(), 2, "{points:?}");
     assert!(
         (points[0] - Vec3::new(0.0, 2.0, 0.0)).length() < 1e-5,
@@ -205,7 +175,7 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
         (points[1] - Vec3::new(0.0, -2.0, 0.0)).length() < 1e-5,
         "{points:?}"
     );
-    assert!(!plugin.update(&mut ctx), "nothing new: nothing redrawn");
+    assert!(!plugin.update(&mut h.ctx()), "nothing new: nothing redrawn");
 }
 
 /// Where the points of `node` are, in its own frame.

@@ -2,21 +2,24 @@
 //! tele-operation sends safe velocity commands (and way-points in position mode); actions on
 //! clicked objects ("Go to", "Follow") and the dragged target.
 
-use std::time::{Duration, Instant};
+mod support;
+
+use std::time::Duration;
 
 use glam::Vec3;
 use player_proto::interfaces::common::Pose2d;
 use player_proto::interfaces::position2d::{Position2d, Position2dData};
 use player_proto::message::{Body, Message};
 use player_proto::{DevAddr, MsgType};
+use pv3d_plugins::PluginConfig;
 use pv3d_plugins::action::ObjectRef;
 use pv3d_plugins::config::DeviceRef;
 use pv3d_plugins::config::Param;
 use pv3d_plugins::device::{LinkState, RecordingDevice};
-use pv3d_plugins::plugin::{AnchorKey, Anchors, InputEvent, Plugin, PluginContext};
+use pv3d_plugins::plugin::{AnchorKey, InputEvent, Plugin};
 use pv3d_plugins::scene::Object3D;
 use pv3d_plugins::scene::Scene;
-use pv3d_plugins::{PluginConfig, standard_plugins};
+use support::Harness;
 
 fn config() -> PluginConfig {
     PluginConfig {
@@ -59,25 +62,7 @@ fn velocities(device: &RecordingDevice) -> Vec<(f64, f64)> {
         .collect()
 }
 
-struct World {
-    scene: Scene,
-    anchors: Anchors,
-    device: RecordingDevice,
-    now: Instant,
-}
-
-impl World {
-    fn ctx(&mut self) -> PluginContext<'_> {
-        PluginContext {
-            scene: &mut self.scene,
-            device: Some(&self.device),
-            anchors: &mut self.anchors,
-            now: self.now,
-        }
-    }
-}
-
-fn world() -> (World, Box<dyn Plugin>) {
+fn world() -> (Harness, Box<dyn Plugin>) {
     world_with(config())
 }
 
@@ -102,17 +87,9 @@ fn marker(scene: &mut Scene, id: i32, x: f32, y: f32) -> pv3d_plugins::scene::No
     scene.add(o)
 }
 
-fn world_with(config: PluginConfig) -> (World, Box<dyn Plugin>) {
-    let mut w = World {
-        scene: Scene::new(),
-        anchors: Anchors::default(),
-        device: RecordingDevice::default(),
-        now: Instant::now(),
-    };
-    let create = standard_plugins()
-        .constructor("libpv3d_position2d")
-        .unwrap();
-    let plugin = create(config, &mut w.ctx()).unwrap();
+fn world_with(config: PluginConfig) -> (Harness, Box<dyn Plugin>) {
+    let mut w = Harness::default();
+    let plugin = w.make(config).unwrap();
     (w, plugin)
 }
 
@@ -263,16 +240,7 @@ fn position_mode_sends_one_waypoint_and_writes_the_mode_back() {
 
     let mut bad = config();
     bad.params.push(Param::new("mode", "warp"));
-    let mut w2 = World {
-        scene: Scene::new(),
-        anchors: Anchors::default(),
-        device: RecordingDevice::default(),
-        now: Instant::now(),
-    };
-    let create = standard_plugins()
-        .constructor("libpv3d_position2d")
-        .unwrap();
-    let err = create(bad, &mut w2.ctx()).err().unwrap().to_string();
+    let err = Harness::default().make(bad).err().unwrap().to_string();
     assert!(err.contains("<mode>") && err.contains("warp"), "{err}");
 }
 
@@ -283,7 +251,7 @@ fn a_dragged_target_shows_but_is_sent_only_on_release() {
     plugin.update(&mut w.ctx());
     plugin.on_event(&InputEvent::Activated(true), &mut w.ctx());
     // The dragged target is drawn in cyan, a goal in amber.
-    let drawn_in = |w: &World, rgb: [u8; 3]| -> usize {
+    let drawn_in = |w: &Harness, rgb: [u8; 3]| -> usize {
         w.scene
             .iter()
             .filter(|(_, o)| o.name.ends_with("trail"))

@@ -1,20 +1,22 @@
 //! The ranger plugin fed known data draws a laser-like ranger as a scan and a sonar-like one
 //! (Stage's sonar ring) as one cone per element, at the poses its geometry reports.
 
+mod support;
+
 use std::sync::Arc;
-use std::time::Instant;
 
 use glam::Vec3;
 use player_proto::interfaces::common::{BBox3d, Pose3d};
 use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry, RangerRanges};
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
+use pv3d_plugins::PluginConfig;
 use pv3d_plugins::config::{DeviceRef, Param};
 use pv3d_plugins::device::RecordingDevice;
-use pv3d_plugins::plugin::{AnchorKey, Anchors, Plugin, PluginContext};
-use pv3d_plugins::scene::{NodeId, Object3D, Scene};
+use pv3d_plugins::plugin::Plugin;
+use pv3d_plugins::scene::{NodeId, Scene};
 use pv3d_plugins::sonar::cones::ARC_SEGMENTS;
-use pv3d_plugins::{PluginConfig, standard_plugins};
+use support::Harness;
 
 fn addr() -> DevAddr {
     "ranger:1".parse().unwrap()
@@ -55,38 +57,24 @@ fn push_ranges(device: &RecordingDevice, ranges: Vec<f64>) {
     ));
 }
 
-/// Makes the plugin in a scene with a robot at (5, 0) facing +x; returns the robot's node.
+/// Makes the plugin with `device` in a scene with a robot at (5, 0) facing +x, lets `feed`
+/// give the device its data, and updates the plugin once; returns the scene, the robot's node,
+/// the plugin's node and the plugin.
 fn run(
-    device: &RecordingDevice,
+    device: RecordingDevice,
     params: Vec<Param>,
     feed: impl FnOnce(&RecordingDevice),
 ) -> (Scene, NodeId, NodeId, Box<dyn Plugin>) {
-    let mut scene = Scene::new();
-    let mut anchors = Anchors::default();
-    let mut robot = Object3D::new("robot");
-    robot.transform = glam::Affine3A::from_translation(Vec3::new(5.0, 0.0, 0.0));
-    let robot = scene.add(robot);
-    anchors.publish(
-        AnchorKey {
-            host: "localhost".into(),
-            port: 6665,
-            interface: "position2d".into(),
-            index: 0,
-        },
-        robot,
-    );
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: Some(device),
-        anchors: &mut anchors,
-        now: Instant::now(),
+    let mut h = Harness {
+        device,
+        ..Harness::default()
     };
-    let create = standard_plugins().constructor("libpv3d_ranger").unwrap();
-    let mut plugin = match create(ranger_config(params), &mut ctx) {
-        Ok(p) => p,
-        Err(e) => panic!("{e}"),
-    };
-    let asked: Vec<u8> = device
+    let robot = h.robot_at(5.0);
+    let mut plugin = h
+        .make(ranger_config(params))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let asked: Vec<u8> = h
+        .device
         .requests
         .lock()
         .unwrap()
@@ -94,11 +82,11 @@ fn run(
         .map(|r| r.0)
         .collect();
     assert_eq!(asked, vec![1, 5], "geometry and config asked for");
-    feed(device);
-    assert!(plugin.update(&mut ctx));
-    assert!(!plugin.update(&mut ctx), "nothing new, nothing redrawn");
+    feed(&h.device);
+    assert!(plugin.update(&mut h.ctx()));
+    assert!(!plugin.update(&mut h.ctx()), "nothing new, nothing redrawn");
     let node = plugin.node().unwrap();
-    (scene, robot, node, plugin)
+    (h.scene, robot, node, plugin)
 }
 
 #[test]
@@ -125,7 +113,7 @@ fn a_laser_like_ranger_is_drawn_as_the_laser_plugin_draws_a_scan() {
         },
     );
     let params = vec![Param::new("fillLaserCspace", "1")];
-    let (scene, robot, node, plugin) = run(&device, params, |d| {
+    let (scene, robot, node, plugin) = run(device, params, |d| {
         push_ranges(d, vec![1.0, 2.0, 8.0]);
     });
     let object = scene.get(node).unwrap();
@@ -183,7 +171,7 @@ fn a_sonar_ring_served_as_ranger_is_one_cone_per_element() {
             ..RangerConfig::default()
         },
     );
-    let (scene, _, node, _) = run(&device, vec![Param::new("coneAngle", "60")], |d| {
+    let (scene, _, node, _) = run(device, vec![Param::new("coneAngle", "60")], |d| {
         push_ranges(d, vec![1.0, 1.0, 3.0, 1.0, 1.0, 1.0, 1.0, 1.0]);
     });
     let g = &scene.get(node).unwrap().geometry;
@@ -201,23 +189,14 @@ fn a_sonar_ring_served_as_ranger_is_one_cone_per_element() {
 
 #[test]
 fn readings_before_the_config_wait_for_it() {
-    let device = RecordingDevice::default();
-    let mut scene = Scene::new();
-    let mut anchors = Anchors::default();
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: Some(&device),
-        anchors: &mut anchors,
-        now: Instant::now(),
-    };
-    let create = standard_plugins().constructor("libpv3d_ranger").unwrap();
-    let Ok(mut plugin) = create(ranger_config(vec![]), &mut ctx) else {
+    let mut h = Harness::default();
+    let Ok(mut plugin) = h.make(ranger_config(vec![])) else {
         panic!("default config refused");
     };
-    push_ranges(&device, vec![1.0; 181]);
-    plugin.update(&mut ctx);
+    push_ranges(&h.device, vec![1.0; 181]);
+    plugin.update(&mut h.ctx());
     let node = plugin.node().unwrap();
-    assert!(ctx.scene.get(node).unwrap().geometry.is_empty());
+    assert!(h.scene.get(node).unwrap().geometry.is_empty());
 
     // The config comes late: the readings already there are drawn with it.
     let config = RangerConfig {
@@ -228,9 +207,9 @@ fn readings_before_the_config_wait_for_it() {
         ..RangerConfig::default()
     };
     let reply = Message::typed(addr(), MsgType::Ack, Ranger::Config(config));
-    assert_eq!(device.answer_later(5, Ok(Arc::new(reply))), 1);
-    assert!(plugin.update(&mut ctx));
-    assert_eq!(ctx.scene.get(node).unwrap().geometry.points.len(), 181);
+    assert_eq!(h.device.answer_later(5, Ok(Arc::new(reply))), 1);
+    assert!(plugin.update(&mut h.ctx()));
+    assert_eq!(h.scene.get(node).unwrap().geometry.points.len(), 181);
 }
 
 #[test]
@@ -238,7 +217,7 @@ fn stamped_ranges_bring_their_own_geometry_and_config() {
     use player_proto::interfaces::ranger::RangerRangesStamped;
 
     let device = RecordingDevice::default(); // answers no request: the data must suffice
-    let (scene, robot, node, _) = run(&device, vec![], |d| {
+    let (scene, robot, node, _) = run(device, vec![], |d| {
         d.push(Message::typed(
             addr(),
             MsgType::Data,
@@ -332,7 +311,7 @@ fn stage_intensities_shade_the_returns_they_belong_to() {
     else {
         unreachable!()
     };
-    let (scene, _, node, _) = run(&device, vec![], |d| {
+    let (scene, _, node, _) = run(device, vec![], |d| {
         d.push(ranges);
         d.push(intensities);
     });

@@ -2,21 +2,21 @@
 //! with a user count; a missing or broken file leaves the box body and says why; a laser
 //! wears its skin at the size its geometry reports.
 
+mod support;
+
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-use std::time::Instant;
 
 use glam::Vec3;
 use player_proto::interfaces::common::{BBox3d, Pose3d};
 use player_proto::interfaces::laser::{Laser, LaserGeometry};
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
+use pv3d_plugins::PluginConfig;
 use pv3d_plugins::config::{DeviceRef, Param};
-use pv3d_plugins::device::RecordingDevice;
-use pv3d_plugins::plugin::{Anchors, Plugin, PluginContext};
-use pv3d_plugins::scene::Scene;
+use pv3d_plugins::plugin::Plugin;
 use pv3d_plugins::skin::{MeshManager, Skin, SkinError};
-use pv3d_plugins::{PluginConfig, standard_plugins};
+use support::Harness;
 
 fn rover_obj() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/skins/rover.obj")
@@ -48,40 +48,14 @@ fn config(library: &str, interface: &str, dir: &Path, skin: &str) -> PluginConfi
     }
 }
 
-struct World {
-    scene: Scene,
-    anchors: Anchors,
-    device: RecordingDevice,
-}
-
-impl World {
-    fn new() -> World {
-        World {
-            scene: Scene::new(),
-            anchors: Anchors::default(),
-            device: RecordingDevice::default(),
-        }
-    }
-
-    fn make(&mut self, config: PluginConfig) -> Box<dyn Plugin> {
-        let create = standard_plugins().constructor(&config.library).unwrap();
-        let mut ctx = PluginContext {
-            scene: &mut self.scene,
-            device: Some(&self.device),
-            anchors: &mut self.anchors,
-            now: Instant::now(),
-        };
-        create(config, &mut ctx).unwrap()
-    }
-
-    fn mesh_vertices(&self, plugin: &dyn Plugin) -> usize {
-        self.scene
-            .get(plugin.node().unwrap())
-            .unwrap()
-            .geometry
-            .mesh
-            .len()
-    }
+/// Vertices of the lit mesh `plugin` draws (its skin, or the box it falls back to).
+fn mesh_vertices(w: &Harness, plugin: &dyn Plugin) -> usize {
+    w.scene
+        .get(plugin.node().unwrap())
+        .unwrap()
+        .geometry
+        .mesh
+        .len()
 }
 
 #[test]
@@ -99,21 +73,22 @@ fn robots_wearing_one_file_share_one_mesh_read_once() {
     std::fs::copy(rover_obj(), dir.join("rover.obj")).unwrap();
     let file = dir.join("rover.obj");
     let manager = MeshManager::shared();
-    let mut w = World::new();
-    let make = |w: &mut World| {
+    let mut w = Harness::default();
+    let make = |w: &mut Harness| {
         w.make(config(
             "libpv3d_position2d",
             "position2d",
             &dir,
             "rover.obj",
         ))
+        .unwrap()
     };
     let mut robots: Vec<Box<dyn Plugin>> = (0..3).map(|_| make(&mut w)).collect();
     assert_eq!(manager.reads(&file), 1, "one file, read once");
     assert_eq!(manager.users(&file), 3);
     for robot in &robots {
         assert_eq!(
-            w.mesh_vertices(robot.as_ref()),
+            mesh_vertices(&w, robot.as_ref()),
             116 * 3,
             "the skin, not the box"
         );
@@ -144,7 +119,7 @@ fn a_missing_or_broken_skin_leaves_the_box_and_says_where() {
         "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n",
     )
     .unwrap();
-    let mut w = World::new();
+    let mut w = Harness::default();
     for file in ["missing.obj", "past_the_end.obj", "no_faces.obj", "nan.obj"] {
         let c = config("libpv3d_position2d", "position2d", &dir, file);
         let skin = Skin::from_config(&c);
@@ -156,8 +131,12 @@ fn a_missing_or_broken_skin_leaves_the_box_and_says_where() {
                 && error.ends_with("; drawing the box body"),
             "{error}"
         );
-        let robot = w.make(c);
-        assert_eq!(w.mesh_vertices(robot.as_ref()), 36, "{file}: the box body");
+        let robot = w.make(c).unwrap();
+        assert_eq!(
+            mesh_vertices(&w, robot.as_ref()),
+            36,
+            "{file}: the box body"
+        );
     }
     let direct = MeshManager::shared().acquire(&dir.join("past_the_end.obj"));
     assert!(
@@ -170,7 +149,7 @@ fn a_missing_or_broken_skin_leaves_the_box_and_says_where() {
 fn a_laser_wears_its_skin_at_the_size_its_geometry_reports() {
     let dir = scratch("laser");
     std::fs::copy(rover_obj(), dir.join("scanner.obj")).unwrap();
-    let mut w = World::new();
+    let mut w = Harness::default();
     let geometry = LaserGeometry {
         pose: Pose3d {
             px: 0.1,
@@ -192,14 +171,10 @@ fn a_laser_wears_its_skin_at_the_size_its_geometry_reports() {
             Laser::Geometry(geometry),
         ))),
     ));
-    let mut laser = w.make(config("libpv3d_laser", "laser", &dir, "scanner.obj"));
-    let mut ctx = PluginContext {
-        scene: &mut w.scene,
-        device: Some(&w.device),
-        anchors: &mut w.anchors,
-        now: Instant::now(),
-    };
-    laser.update(&mut ctx);
+    let mut laser = w
+        .make(config("libpv3d_laser", "laser", &dir, "scanner.obj"))
+        .unwrap();
+    laser.update(&mut w.ctx());
     let (skin, body) = w
         .scene
         .iter()
