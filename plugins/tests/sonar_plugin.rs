@@ -1,8 +1,9 @@
 //! The sonar plugin fed known data draws one cone per transducer at the poses the sonar's
 //! geometry reports, as long as each reading, below its robot (no GL involved).
 
+mod support;
+
 use std::sync::Arc;
-use std::time::Instant;
 
 use glam::Vec3;
 use player_proto::interfaces::common::Pose3d;
@@ -11,10 +12,10 @@ use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
 use pv3d_plugins::config::{DeviceRef, Param};
 use pv3d_plugins::device::{RecordingDevice, RequestFailure};
-use pv3d_plugins::plugin::{AnchorKey, Anchors, Plugin, PluginContext};
-use pv3d_plugins::scene::{Object3D, Scene};
+use pv3d_plugins::plugin::Plugin;
 use pv3d_plugins::sonar::cones::ARC_SEGMENTS;
 use pv3d_plugins::{PluginConfig, standard_plugins};
+use support::Harness;
 
 fn addr() -> DevAddr {
     "sonar:0".parse().unwrap()
@@ -43,30 +44,8 @@ fn sonar_config(extra: Vec<Param>) -> PluginConfig {
     }
 }
 
-/// A scene with a robot at x = 5 published as position2d:0 of localhost:6665.
-fn scene_with_robot() -> (Scene, Anchors, pv3d_plugins::scene::NodeId) {
-    let mut scene = Scene::new();
-    let mut anchors = Anchors::default();
-    let mut robot = Object3D::new("robot");
-    robot.transform = glam::Affine3A::from_translation(Vec3::new(5.0, 0.0, 0.0));
-    let robot = scene.add(robot);
-    anchors.publish(
-        AnchorKey {
-            host: "localhost".into(),
-            port: 6665,
-            interface: "position2d".into(),
-            index: 0,
-        },
-        robot,
-    );
-    (scene, anchors, robot)
-}
-
-fn make(config: PluginConfig, ctx: &mut PluginContext<'_>) -> Box<dyn Plugin> {
-    match standard_plugins().constructor("libpv3d_sonar").unwrap()(config, ctx) {
-        Ok(p) => p,
-        Err(e) => panic!("{e}"),
-    }
+fn make(h: &mut Harness, config: PluginConfig) -> Box<dyn Plugin> {
+    h.make(config).unwrap_or_else(|e| panic!("{e}"))
 }
 
 #[test]
@@ -91,14 +70,13 @@ fn one_cone_per_transducer_at_its_pose_as_long_as_its_reading() {
             Sonar::Geometry(SonarGeometry { poses }),
         ))),
     ));
-    let (mut scene, mut anchors, robot) = scene_with_robot();
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: Some(&device),
-        anchors: &mut anchors,
-        now: Instant::now(),
+    let mut h = Harness {
+        device,
+        ..Harness::default()
     };
-    let mut plugin = make(sonar_config(vec![]), &mut ctx);
+    let robot = h.robot_at(5.0);
+    let mut plugin = make(&mut h, sonar_config(vec![]));
+    let device = &h.device;
     assert_eq!(
         device.requests.lock().unwrap()[0].0,
         1,
@@ -112,8 +90,9 @@ fn one_cone_per_transducer_at_its_pose_as_long_as_its_reading() {
             ranges: vec![1.0, 2.0],
         }),
     ));
-    assert!(plugin.update(&mut ctx));
-    assert!(!plugin.update(&mut ctx), "nothing new, nothing redrawn");
+    assert!(plugin.update(&mut h.ctx()));
+    assert!(!plugin.update(&mut h.ctx()), "nothing new, nothing redrawn");
+    let scene = &h.scene;
 
     let node = plugin.node().unwrap();
     let object = scene.get(node).unwrap();
@@ -142,24 +121,22 @@ fn without_geometry_the_transducers_are_drawn_on_a_ring_and_state_is_saved() {
         .lock()
         .unwrap()
         .push((1, Err(RequestFailure::Nack)));
-    let (mut scene, mut anchors, _) = scene_with_robot();
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: Some(&device),
-        anchors: &mut anchors,
-        now: Instant::now(),
+    let mut h = Harness {
+        device,
+        ..Harness::default()
     };
+    h.robot_at(5.0);
     let config = sonar_config(vec![Param::new("drawConeOutline", "0")]);
-    let mut plugin = make(config, &mut ctx);
-    device.push(Message::typed(
+    let mut plugin = make(&mut h, config);
+    h.device.push(Message::typed(
         addr(),
         MsgType::Data,
         Sonar::Ranges(SonarData {
             ranges: vec![1.0; 4],
         }),
     ));
-    assert!(plugin.update(&mut ctx));
-    let object = scene.get(plugin.node().unwrap()).unwrap();
+    assert!(plugin.update(&mut h.ctx()));
+    let object = h.scene.get(plugin.node().unwrap()).unwrap();
     assert_eq!(object.geometry.triangles.len(), 4 * ARC_SEGMENTS * 3);
     assert!(object.geometry.lines.is_empty(), "outlines switched off");
     // Four cones, facing +x, +y, -x, -y: their far points spread all round.
@@ -190,14 +167,9 @@ fn bad_parameters_name_the_place() {
         origin: "test.xml:4:5".into(),
         ..Param::new("alpha", "opaque")
     }]);
-    let (mut scene, mut anchors, _) = scene_with_robot();
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: None,
-        anchors: &mut anchors,
-        now: Instant::now(),
-    };
-    let err = match standard_plugins().constructor("libpv3d_sonar").unwrap()(config, &mut ctx) {
+    let mut h = Harness::default();
+    let create = standard_plugins().constructor("libpv3d_sonar").unwrap();
+    let err = match create(config, &mut h.ctx_without_device()) {
         Err(e) => e.to_string(),
         Ok(_) => panic!("accepted a bad alpha"),
     };
