@@ -1,24 +1,17 @@
 //! The renderer draws where the camera says, with no window and no X server.
 
+mod support;
+
 use glam::{Affine3A, Vec2, Vec3};
-use pv3d::render::{HeadlessGl, OrbitCamera, SceneBatch, SceneRenderer};
+use pv3d::render::{HeadlessGl, OrbitCamera, SceneBatch};
 use pv3d_plugins::scene::{Object3D, Rgba, Scene};
+use support::draw_batch;
 
 fn render(scene: &Scene, camera: &OrbitCamera, size: (u32, u32)) -> image::RgbaImage {
     let gl = HeadlessGl::new(size.0, size.1).expect("headless GL (Mesa EGL)");
-    let mut renderer = SceneRenderer::new(&gl.gl).unwrap();
-    renderer.point_size = 5.0;
     let mut batch = SceneBatch::default();
     batch.rebuild(scene, None);
-    gl.bind();
-    renderer.upload(&gl.gl, &batch, scene.generation());
-    renderer.draw(
-        &gl.gl,
-        camera.view_projection(size.0 as f32 / size.1 as f32),
-    );
-    let image = gl.read_pixels();
-    renderer.destroy(&gl.gl);
-    image
+    draw_batch(&gl, &batch, camera, 5.0)
 }
 
 #[test]

@@ -2,14 +2,15 @@
 //! finer than a pixel merged paint the same pixels, within the tolerance, as every vertex
 //! drawn — while sending the renderer several times fewer primitives.
 
+mod support;
+
 use glam::{Affine3A, Quat, Vec2, Vec3};
 use image::RgbaImage;
 use player_proto::interfaces::laser::LaserScan;
-use pv3d::render::{
-    HeadlessGl, OrbitCamera, POINT_SIZE_PX, SceneBatch, SceneRenderer, ScreenDetail,
-};
+use pv3d::render::{HeadlessGl, OrbitCamera, POINT_SIZE_PX, SceneBatch, ScreenDetail};
 use pv3d_plugins::laser::{Readings, ScanStyle, scan_geometry};
 use pv3d_plugins::scene::{Object3D, Scene};
+use support::draw_batch;
 
 const SIZE: (u32, u32) = (640, 480);
 
@@ -51,18 +52,6 @@ fn swarm(fill: bool) -> Scene {
         scene.add(laser);
     }
     scene
-}
-
-fn draw(gl: &HeadlessGl, batch: &SceneBatch, camera: &OrbitCamera) -> RgbaImage {
-    let mut renderer = SceneRenderer::new(&gl.gl).expect("renderer");
-    renderer.upload(&gl.gl, batch, 0);
-    renderer.draw(
-        &gl.gl,
-        camera.view_projection(SIZE.0 as f32 / SIZE.1 as f32),
-    );
-    let image = gl.read_pixels();
-    renderer.destroy(&gl.gl);
-    image
 }
 
 /// Pixels painted in `a` (not background) with no painted pixel of `b` within `reach`.
@@ -114,8 +103,8 @@ fn merged_detail_paints_what_every_vertex_paints() {
             |b: &SceneBatch| b.lines.len() / 2 + b.points.len() + b.translucent.len() / 3;
         let (every, fewer) = (primitives(&full), primitives(&merged));
 
-        let every_image = draw(&gl, &full, &camera);
-        let merged_image = draw(&gl, &merged, &camera);
+        let every_image = draw_batch(&gl, &full, &camera, POINT_SIZE_PX);
+        let merged_image = draw_batch(&gl, &merged, &camera, POINT_SIZE_PX);
         let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"));
         every_image
             .save(dir.join(format!("detail_every_{fill}_{distance}.png")))

@@ -1,5 +1,5 @@
-//! What the pv3d binary's tests share: running it, and counting the pixels of the things the
-//! standard plugins draw in their default colours.
+//! What the pv3d tests share: running the binary, drawing a batch offscreen, and counting the
+//! pixels of the things the standard plugins draw in their default colours.
 
 #![allow(dead_code)] // each test file uses its own part
 
@@ -7,6 +7,7 @@ use std::path::Path;
 use std::process::{Command, Output};
 
 use image::{Rgba, RgbaImage};
+use pv3d::render::{HeadlessGl, OrbitCamera, SceneBatch, SceneRenderer};
 
 /// The pv3d binary, run from the checkout's top folder (so `stage-worlds/…` and `configs/…`
 /// paths work as in the README).
@@ -74,4 +75,23 @@ pub fn laser_pixels(image: &RgbaImage) -> usize {
     count(image, |p| {
         p[0] > 200 && (70..=120).contains(&p[1]) && p[2] < 90
     })
+}
+
+/// Draws `batch` through `camera` into `gl`'s framebuffer with a fresh renderer (points
+/// `point_size` pixels wide) and reads the picture back.
+pub fn draw_batch(
+    gl: &HeadlessGl,
+    batch: &SceneBatch,
+    camera: &OrbitCamera,
+    point_size: f32,
+) -> RgbaImage {
+    gl.bind();
+    let mut renderer = SceneRenderer::new(&gl.gl).expect("renderer");
+    renderer.point_size = point_size;
+    renderer.upload(&gl.gl, batch, 0);
+    let (w, h) = gl.size();
+    renderer.draw(&gl.gl, camera.view_projection(w as f32 / h as f32));
+    let image = gl.read_pixels();
+    renderer.destroy(&gl.gl);
+    image
 }
