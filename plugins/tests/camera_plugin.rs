@@ -2,6 +2,8 @@
 //! frames are not decoded again, the rate and age are measured, bad frames are reported, and
 //! the window hands egui a texture of the frame's size — all without OpenGL.
 
+mod support;
+
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -10,12 +12,11 @@ use player_proto::interfaces::camera::{
 };
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
+use pv3d_plugins::PluginConfig;
 use pv3d_plugins::camera::frames::{CameraFrames, Offered};
 use pv3d_plugins::config::DeviceRef;
-use pv3d_plugins::device::{RecordingDevice, Sample};
-use pv3d_plugins::plugin::{Anchors, PluginContext};
-use pv3d_plugins::scene::Scene;
-use pv3d_plugins::{PluginConfig, standard_plugins};
+use pv3d_plugins::device::Sample;
+use support::Harness;
 
 fn addr() -> DevAddr {
     "camera:0".parse().unwrap()
@@ -156,9 +157,6 @@ fn jpeg_frames_decode_and_bad_frames_say_why_keeping_the_last_good_one() {
 
 #[test]
 fn the_plugin_shows_the_frame_as_a_texture_of_its_size_without_gl() {
-    let device = RecordingDevice::default();
-    let mut scene = Scene::new();
-    let mut anchors = Anchors::default();
     let config = PluginConfig {
         library: "libpv3d_camera".into(),
         id: "camera".into(),
@@ -171,27 +169,21 @@ fn the_plugin_shows_the_frame_as_a_texture_of_its_size_without_gl() {
         origin: "test.xml:1:1".into(),
         ..PluginConfig::default()
     };
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: Some(&device),
-        anchors: &mut anchors,
-        now: Instant::now(),
-    };
-    let create = standard_plugins().constructor("libpv3d_camera").unwrap();
-    let Ok(mut plugin) = create(config, &mut ctx) else {
+    let mut h = Harness::default();
+    let Ok(mut plugin) = h.make(config) else {
         panic!("default config refused");
     };
-    device.push(Message::typed(
+    h.device.push(Message::typed(
         addr(),
         MsgType::Data,
         Camera::State(rgb_frame(40, 30, [9, 9, 9])),
     ));
-    assert!(!plugin.update(&mut ctx), "the scene does not change");
+    assert!(!plugin.update(&mut h.ctx()), "the scene does not change");
 
     // A headless egui pass: no viewport support, so the window is embedded.
     let egui_ctx = egui::Context::default();
     let output = egui_ctx.run_ui(egui::RawInput::default(), |ui| {
-        plugin.windows(ui.ctx(), &mut ctx);
+        plugin.windows(ui.ctx(), &mut h.ctx());
     });
     let sizes: Vec<[usize; 2]> = output
         .textures_delta

@@ -1,16 +1,14 @@
 //! The fiducial plugin fed a scan: one tagged, labelled marker per detection.
 
-use std::time::Instant;
+mod support;
 
 use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::fiducial::{Fiducial, FiducialData, FiducialItem};
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
+use pv3d_plugins::PluginConfig;
 use pv3d_plugins::config::{DeviceRef, Param};
-use pv3d_plugins::device::RecordingDevice;
-use pv3d_plugins::plugin::{Anchors, PluginContext};
-use pv3d_plugins::scene::Scene;
-use pv3d_plugins::{PluginConfig, standard_plugins};
+use support::Harness;
 
 #[test]
 fn detections_become_tagged_markers() {
@@ -28,16 +26,8 @@ fn detections_become_tagged_markers() {
         params: vec![tag],
         ..PluginConfig::default()
     };
-    let device = RecordingDevice::default();
-    let (mut scene, mut anchors) = (Scene::new(), Anchors::default());
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: Some(&device),
-        anchors: &mut anchors,
-        now: Instant::now(),
-    };
-    let mut plugin =
-        standard_plugins().constructor("libpv3d_fiducial").unwrap()(config, &mut ctx).unwrap();
+    let mut h = Harness::default();
+    let mut plugin = h.make(config).unwrap();
     let item = |id, px| FiducialItem {
         id,
         pose: Pose3d {
@@ -50,8 +40,10 @@ fn detections_become_tagged_markers() {
         fiducials: vec![item(7, 2.0), item(0, 6.0)],
     };
     let addr: DevAddr = "fiducial:0".parse().unwrap();
-    device.push(Message::typed(addr, MsgType::Data, Fiducial::Scan(scan)));
-    assert!(plugin.update(&mut ctx));
+    h.device
+        .push(Message::typed(addr, MsgType::Data, Fiducial::Scan(scan)));
+    assert!(plugin.update(&mut h.ctx()));
+    let scene = &h.scene;
     let markers: Vec<_> = scene
         .iter()
         .filter(|(_, o)| o.has_tag("fiducial"))

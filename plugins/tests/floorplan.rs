@@ -1,9 +1,12 @@
 //! Walls stand where a floorplan bitmap's dark pixels are.
 
+mod support;
+
 use std::path::Path;
 
 use pv3d_plugins::ground::{Placement, walls_from_bitmap};
 use pv3d_plugins::scene::{Geometry, Rgba};
+use support::Harness;
 
 #[test]
 fn the_arena_bitmap_becomes_walls_in_place() {
@@ -43,8 +46,6 @@ fn the_arena_bitmap_becomes_walls_in_place() {
 #[test]
 fn block_walls_stand_up_and_bad_ones_say_where() {
     use pv3d_plugins::config::{Param, PluginConfig};
-    use pv3d_plugins::plugin::{Anchors, PluginContext};
-    use pv3d_plugins::scene::Scene;
 
     let wall = |text: &str| {
         let mut p = Param::new("wall", text);
@@ -57,27 +58,14 @@ fn block_walls_stand_up_and_bad_ones_say_where() {
         origin: "blocks.xml:3:3".into(),
         ..PluginConfig::default()
     };
-    let mut scene = Scene::new();
-    let mut anchors = Anchors::default();
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: None,
-        anchors: &mut anchors,
-        now: std::time::Instant::now(),
-    };
-    let create = pv3d_plugins::standard_plugins()
-        .constructor("libpv3d_ground")
-        .unwrap();
+    let mut h = Harness::default();
     // An L-shaped partition: six walls and a four-triangle top.
-    create(
-        config(vec![
-            wall("0 0  2 0  2 0.2  0.2 0.2  0.2 2  0 2"),
-            Param::new("wallHeight", "0.8"),
-        ]),
-        &mut ctx,
-    )
+    h.make(config(vec![
+        wall("0 0  2 0  2 0.2  0.2 0.2  0.2 2  0 2"),
+        Param::new("wallHeight", "0.8"),
+    ]))
     .unwrap();
-    let (_, ground) = ctx.scene.iter().next().unwrap();
+    let (_, ground) = h.scene.iter().next().unwrap();
     assert_eq!(ground.geometry.mesh.len(), 6 * 6 + 4 * 3);
     let top = ground
         .geometry
@@ -87,7 +75,8 @@ fn block_walls_stand_up_and_bad_ones_say_where() {
         .fold(0.0, f32::max);
     assert!((top - 0.8).abs() < 1e-6, "wallHeight: {top}");
 
-    let err = create(config(vec![wall("0 0 1")]), &mut ctx)
+    let err = h
+        .make(config(vec![wall("0 0 1")]))
         .err()
         .unwrap()
         .to_string();
