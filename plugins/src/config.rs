@@ -183,6 +183,20 @@ impl PluginConfig {
             .filter(|t| !t.is_empty())
     }
 
+    /// Sets a flag as [`PluginConfig::bool`] reads it back: `1` or `0`.
+    pub fn set_bool(&mut self, name: &str, value: bool) {
+        self.set(name, if value { "1" } else { "0" });
+    }
+
+    /// `kind` followed by the device this plugin draws (`Laser laser:0@host:6665`), or `kind`
+    /// alone for a plugin with no device: the item tree's and the scene's names.
+    pub fn titled(&self, kind: &str) -> String {
+        match &self.device {
+            Some(d) => format!("{kind} {d}"),
+            None => kind.to_string(),
+        }
+    }
+
     /// Sets (or adds) a parameter's text, for writing state back.
     pub fn set(&mut self, name: &str, text: impl Into<String>) {
         let text = text.into();

@@ -48,15 +48,12 @@ impl CameraPlugin {
 impl Plugin for CameraPlugin {
     fn save(&self) -> PluginConfig {
         let mut config = self.config.clone();
-        config.set("showWindow", if self.show_window { "1" } else { "0" });
+        config.set_bool("showWindow", self.show_window);
         config
     }
 
     fn title(&self) -> String {
-        match &self.config.device {
-            Some(d) => format!("Camera {d}"),
-            None => "Camera".into(),
-        }
+        self.config.titled("Camera")
     }
 
     /// Takes the newest frame. The scene does not change: the image lives in its window.

@@ -95,10 +95,7 @@ impl Plugin for FiducialPlugin {
     }
 
     fn title(&self) -> String {
-        match &self.config.device {
-            Some(d) => format!("Fiducials {d}"),
-            None => "Fiducials".into(),
-        }
+        self.config.titled("Fiducials")
     }
 
     fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {

@@ -56,10 +56,7 @@ impl LaserPlugin {
     ) -> Result<Box<dyn Plugin>, ConfigValueError> {
         let style = ScanStyle::from_config(&config)?;
         let parent = ParentLink::from_config(&config);
-        let name = match &config.device {
-            Some(d) => format!("laser {d}"),
-            None => "laser".to_string(),
-        };
+        let name = config.titled("laser");
         let mut object = Object3D::new(name);
         object.tags.push("laser".into());
         let node = ctx.scene.add(object);
@@ -156,20 +153,12 @@ impl LaserPlugin {
 impl Plugin for LaserPlugin {
     fn save(&self) -> PluginConfig {
         let mut config = self.config.clone();
-        let flag = |b: bool| if b { "1" } else { "0" };
-        config.set("drawPoints", flag(self.style.points));
-        config.set("drawLines", flag(self.style.lines));
-        config.set("fillLaserCspace", flag(self.style.fill_cspace));
-        config.set("drawLaserCspace", flag(self.style.draw_cspace));
-        config.set("shadeIntensity", flag(self.style.shade_intensity));
+        self.style.write(&mut config);
         config
     }
 
     fn title(&self) -> String {
-        match &self.config.device {
-            Some(d) => format!("Laser {d}"),
-            None => "Laser".into(),
-        }
+        self.config.titled("Laser")
     }
 
     fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
@@ -204,16 +193,7 @@ impl Plugin for LaserPlugin {
             }
         }
         self.skin.ui(ui);
-        let before = self.style;
-        ui.checkbox(&mut self.style.points, "points");
-        ui.checkbox(&mut self.style.lines, "lines");
-        ui.checkbox(&mut self.style.fill_cspace, "fill free space");
-        ui.checkbox(&mut self.style.draw_cspace, "outline free space");
-        ui.checkbox(
-            &mut self.style.shade_intensity,
-            "shade returns by intensity",
-        );
-        if before != self.style {
+        if self.style.ui(ui) {
             // Redraw the newest scan in the new style.
             self.last_drawn = None;
         }

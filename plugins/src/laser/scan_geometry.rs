@@ -57,6 +57,28 @@ impl ScanStyle {
     }
 }
 
+impl ScanStyle {
+    /// Writes the style back as [`ScanStyle::from_config`] reads it.
+    pub fn write(&self, config: &mut PluginConfig) {
+        config.set_bool("drawPoints", self.points);
+        config.set_bool("drawLines", self.lines);
+        config.set_bool("fillLaserCspace", self.fill_cspace);
+        config.set_bool("drawLaserCspace", self.draw_cspace);
+        config.set_bool("shadeIntensity", self.shade_intensity);
+    }
+
+    /// The scan controls of a plugin's panel. Returns whether anything changed.
+    pub fn ui(&mut self, ui: &mut egui::Ui) -> bool {
+        let before = *self;
+        ui.checkbox(&mut self.points, "points");
+        ui.checkbox(&mut self.lines, "lines");
+        ui.checkbox(&mut self.fill_cspace, "fill free space");
+        ui.checkbox(&mut self.draw_cspace, "outline free space");
+        ui.checkbox(&mut self.shade_intensity, "shade returns by intensity");
+        before != *self
+    }
+}
+
 /// Endpoint of each reading in the sensor frame. A reading at or beyond `max_range` (no
 /// return) is placed at `max_range`, flagged `false`; so is one without a usable bearing.
 pub fn endpoints(scan: &Readings) -> impl Iterator<Item = (Vec3, bool)> + '_ {

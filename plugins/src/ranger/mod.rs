@@ -64,10 +64,7 @@ impl RangerPlugin {
         let cone_style = cone_style_from_config(&config)?;
         let visible = config.bool("visible", true)?;
         let parent = ParentLink::from_config(&config);
-        let name = match &config.device {
-            Some(d) => format!("ranger {d}"),
-            None => "ranger".to_string(),
-        };
+        let name = config.titled("ranger");
         let mut object = Object3D::new(name);
         object.tags.push("ranger".into());
         object.visible = visible;
@@ -237,22 +234,14 @@ fn pose_transform(pose: &Pose3d) -> Affine3A {
 impl Plugin for RangerPlugin {
     fn save(&self) -> PluginConfig {
         let mut config = self.config.clone();
-        let flag = |b: bool| if b { "1" } else { "0" };
-        config.set("drawPoints", flag(self.scan_style.points));
-        config.set("drawLines", flag(self.scan_style.lines));
-        config.set("fillLaserCspace", flag(self.scan_style.fill_cspace));
-        config.set("drawLaserCspace", flag(self.scan_style.draw_cspace));
-        config.set("shadeIntensity", flag(self.scan_style.shade_intensity));
+        self.scan_style.write(&mut config);
         write_cone_style(&self.cone_style, &mut config);
-        config.set("visible", flag(self.visible));
+        config.set_bool("visible", self.visible);
         config
     }
 
     fn title(&self) -> String {
-        match &self.config.device {
-            Some(d) => format!("Ranger {d}"),
-            None => "Ranger".into(),
-        }
+        self.config.titled("Ranger")
     }
 
     fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
@@ -282,26 +271,12 @@ impl Plugin for RangerPlugin {
             RangerShape::Empty => "no readings yet".into(),
         };
         ui.label(what);
-        let before = (self.scan_style, self.visible);
-        ui.checkbox(&mut self.visible, "visible");
-        match self.shape {
-            RangerShape::Cones => {
-                if cone_style_ui(ui, &mut self.cone_style) {
-                    self.redraw_needed = true;
-                }
-            }
-            _ => {
-                ui.checkbox(&mut self.scan_style.points, "points");
-                ui.checkbox(&mut self.scan_style.lines, "lines");
-                ui.checkbox(&mut self.scan_style.fill_cspace, "fill free space");
-                ui.checkbox(&mut self.scan_style.draw_cspace, "outline free space");
-                ui.checkbox(
-                    &mut self.scan_style.shade_intensity,
-                    "shade returns by intensity",
-                );
-            }
-        }
-        if before != (self.scan_style, self.visible) {
+        let mut changed = ui.checkbox(&mut self.visible, "visible").changed();
+        changed |= match self.shape {
+            RangerShape::Cones => cone_style_ui(ui, &mut self.cone_style),
+            _ => self.scan_style.ui(ui),
+        };
+        if changed {
             self.redraw_needed = true;
         }
     }

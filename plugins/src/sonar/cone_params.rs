@@ -32,9 +32,8 @@ pub fn cone_style_from_config(config: &PluginConfig) -> Result<ConeStyle, Config
 
 /// Writes the state a person can change in the panel back into `config`.
 pub fn write_cone_style(style: &ConeStyle, config: &mut PluginConfig) {
-    let flag = |b: bool| if b { "1" } else { "0" };
-    config.set("drawCones", flag(style.fill));
-    config.set("drawConeOutline", flag(style.outline));
+    config.set_bool("drawCones", style.fill);
+    config.set_bool("drawConeOutline", style.outline);
     config.set(
         "alpha",
         format!("{:.2}", f32::from(style.fill_alpha) / 255.0),

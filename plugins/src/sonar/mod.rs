@@ -62,10 +62,7 @@ impl SonarPlugin {
         let style = cone_style_from_config(&config)?;
         let visible = config.bool("visible", true)?;
         let parent = ParentLink::from_config(&config);
-        let name = match &config.device {
-            Some(d) => format!("sonar {d}"),
-            None => "sonar".to_string(),
-        };
+        let name = config.titled("sonar");
         let mut object = Object3D::new(name);
         object.tags.push("sonar".into());
         object.visible = visible;
@@ -160,15 +157,12 @@ impl Plugin for SonarPlugin {
     fn save(&self) -> PluginConfig {
         let mut config = self.config.clone();
         write_cone_style(&self.style, &mut config);
-        config.set("visible", if self.visible { "1" } else { "0" });
+        config.set_bool("visible", self.visible);
         config
     }
 
     fn title(&self) -> String {
-        match &self.config.device {
-            Some(d) => format!("Sonar {d}"),
-            None => "Sonar".into(),
-        }
+        self.config.titled("Sonar")
     }
 
     fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
