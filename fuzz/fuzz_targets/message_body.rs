@@ -3,29 +3,15 @@
 //! offers it (camera pixels to RGBA, map tiles inflated), as a viewer would.
 #![no_main]
 
-use bytes::Bytes;
 use libfuzzer_sys::fuzz_target;
 use player_proto::interfaces::camera::Camera;
 use player_proto::interfaces::map::Map;
+use player_proto::fuzz_input::message_parts;
 use player_proto::message::{Body, Message};
-use player_proto::wire::{DevAddr, Header, Interface, MsgType};
 
 fuzz_target!(|data: &[u8]| {
-    if data.len() < 4 {
+    let Some((header, body)) = message_parts(data) else {
         return;
-    }
-    let interf = Interface(u16::from_be_bytes([data[0], data[1]]) % 70);
-    let Some(msg_type) = MsgType::from_code(data[2] % 6 + 1) else {
-        return;
-    };
-    let body = Bytes::copy_from_slice(&data[4..]);
-    let header = Header {
-        addr: DevAddr::local(interf, 0),
-        msg_type,
-        subtype: data[3],
-        timestamp: 0.0,
-        seq: 0,
-        size: body.len() as u32,
     };
     if let Ok(message) = Message::decode(header, body) {
         let encoded = message.to_bytes();

@@ -13,6 +13,8 @@ mod macros;
 
 pub mod capture;
 pub mod client;
+#[doc(hidden)]
+pub mod fuzz_input;
 pub mod interfaces;
 pub mod logging;
 pub mod message;

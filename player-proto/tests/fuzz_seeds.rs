@@ -4,9 +4,8 @@
 
 use std::path::Path;
 
-use bytes::Bytes;
+use player_proto::fuzz_input::message_parts;
 use player_proto::message::{Body, Message};
-use player_proto::wire::{DevAddr, Header, Interface, MsgType};
 
 #[test]
 fn every_message_body_seed_decodes_to_a_typed_body() {
@@ -16,19 +15,9 @@ fn every_message_body_seed_decodes_to_a_typed_body() {
         let path = entry.unwrap().path();
         let data = std::fs::read(&path).unwrap();
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
-        assert!(data.len() >= 4, "{name}: too short for the target's prefix");
         // Exactly as fuzz/fuzz_targets/message_body.rs reads it.
-        let interf = Interface(u16::from_be_bytes([data[0], data[1]]) % 70);
-        let msg_type = MsgType::from_code(data[2] % 6 + 1).unwrap();
-        let body = Bytes::copy_from_slice(&data[4..]);
-        let header = Header {
-            addr: DevAddr::local(interf, 0),
-            msg_type,
-            subtype: data[3],
-            timestamp: 0.0,
-            seq: 0,
-            size: body.len() as u32,
-        };
+        let (header, body) = message_parts(&data)
+            .unwrap_or_else(|| panic!("{name}: too short for the target's prefix"));
         let message =
             Message::decode(header, body.clone()).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(

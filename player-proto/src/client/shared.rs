@@ -67,8 +67,8 @@ pub struct DeviceStats {
     /// reading as several messages stamped alike (Stage's ranger: ranges, then intensities)
     /// counts once, so this is the rate a person means by "10 Hz".
     pub updates: u64,
-    /// The server time of the last DATA message, s.
-    pub last_server_time: f64,
+    /// The server time of the last DATA message, s (what tells a new reading).
+    pub(crate) last_server_time: f64,
 }
 
 #[derive(Default)]
