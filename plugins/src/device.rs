@@ -17,6 +17,32 @@ pub struct Sample {
     pub seq: u64,
 }
 
+/// Which sample of one data subtype a plugin took last, so that it acts on each sample once
+/// however often it is updated.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct LastTaken {
+    seq: Option<u64>,
+}
+
+impl LastTaken {
+    /// Whether `sample` is another than the one taken last; if so, it is now the one taken.
+    pub fn is_new(&mut self, sample: &Sample) -> bool {
+        let new = self.seq != Some(sample.seq);
+        self.seq = Some(sample.seq);
+        new
+    }
+
+    /// The device's newest sample of `subtype`, unless it was taken already.
+    pub fn newest(&mut self, device: Option<&dyn DeviceAccess>, subtype: u8) -> Option<Sample> {
+        device?.latest(subtype).filter(|s| self.is_new(s))
+    }
+
+    /// Forgets the sample taken, so that the newest is taken again (to redraw it).
+    pub fn forget(&mut self) {
+        self.seq = None;
+    }
+}
+
 /// The state of the connection to the device's server.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum LinkState {
@@ -185,5 +211,34 @@ impl DeviceAccess for RecordingDevice {
             .expect("state")
             .clone()
             .unwrap_or(LinkState::Connected)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use player_proto::DevAddr;
+    use player_proto::interfaces::sonar::{Sonar, SonarData};
+    use player_proto::wire::MsgType;
+
+    #[test]
+    fn each_sample_is_taken_once_until_forgotten() {
+        let device = RecordingDevice::default();
+        let mut taken = LastTaken::default();
+        assert!(taken.newest(Some(&device), 1).is_none(), "nothing yet");
+        let addr: DevAddr = "sonar:0".parse().unwrap();
+        let ranges = Sonar::Ranges(SonarData { ranges: vec![1.0] });
+        device.push(Message::typed(addr, MsgType::Data, ranges));
+        assert!(taken.newest(Some(&device), 1).is_some());
+        assert!(
+            taken.newest(Some(&device), 1).is_none(),
+            "the same sample again"
+        );
+        taken.forget();
+        assert!(
+            taken.newest(Some(&device), 1).is_some(),
+            "taken again after forget"
+        );
+        assert!(taken.newest(None, 1).is_none(), "no device, no sample");
     }
 }

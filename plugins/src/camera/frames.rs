@@ -12,7 +12,7 @@ use image::RgbaImage;
 use player_proto::interfaces::camera::Camera;
 use player_proto::message::{Body, Message};
 
-use crate::device::Sample;
+use crate::device::{LastTaken, Sample};
 
 /// The frame rate is measured over this many most recent arrivals.
 const RATE_WINDOW: usize = 30;
@@ -37,7 +37,7 @@ pub enum Offered {
 /// The newest frame of one camera and its arrival statistics.
 #[derive(Debug, Default)]
 pub struct CameraFrames {
-    last_seq: Option<u64>,
+    taken: LastTaken,
     /// The message whose pixels [`Self::image`] holds, to recognise a republished frame.
     decoded_from: Option<Arc<Message>>,
     image: Option<Arc<RgbaImage>>,
@@ -53,10 +53,9 @@ pub struct CameraFrames {
 impl CameraFrames {
     /// Takes a sample of the camera's data (subtype 1).
     pub fn offer(&mut self, sample: &Sample) -> Offered {
-        if self.last_seq == Some(sample.seq) {
+        if !self.taken.is_new(sample) {
             return Offered::Seen;
         }
-        self.last_seq = Some(sample.seq);
         let Body::Camera(Camera::State(frame)) = &sample.message.body else {
             return Offered::NotAFrame;
         };

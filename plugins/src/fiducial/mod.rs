@@ -12,7 +12,7 @@ use player_proto::interfaces::fiducial::{self, Fiducial};
 use player_proto::message::Body;
 
 use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::ReplyTicket;
+use crate::device::{LastTaken, ReplyTicket};
 use crate::parent_link::ParentLink;
 use crate::plugin::{Anchors, Plugin, PluginContext};
 use crate::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
@@ -30,7 +30,7 @@ pub struct FiducialPlugin {
     parent: ParentLink,
     geometry_reply: Option<ReplyTicket>,
     tags: HashMap<i32, Vec<String>>,
-    last_seq: Option<u64>,
+    scan_taken: LastTaken,
     seen: Vec<(i32, f32)>,
 }
 
@@ -65,7 +65,7 @@ impl FiducialPlugin {
             parent,
             geometry_reply,
             tags,
-            last_seq: None,
+            scan_taken: LastTaken::default(),
             seen: Vec::new(),
         }))
     }
@@ -100,13 +100,9 @@ impl Plugin for FiducialPlugin {
 
     fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
         let changed = self.place(ctx);
-        let Some(sample) = ctx.device.and_then(|d| d.latest(DATA_SCAN)) else {
+        let Some(sample) = self.scan_taken.newest(ctx.device, DATA_SCAN) else {
             return changed;
         };
-        if self.last_seq == Some(sample.seq) {
-            return changed;
-        }
-        self.last_seq = Some(sample.seq);
         let Body::Fiducial(Fiducial::Scan(data)) = &sample.message.body else {
             return changed;
         };

@@ -22,7 +22,7 @@ pub use readings::{Bearings, Readings};
 pub use scan_geometry::{ScanStyle, endpoints, scan_geometry};
 
 use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::{ReplyTicket, Sample};
+use crate::device::{LastTaken, ReplyTicket, Sample};
 use crate::parent_link::ParentLink;
 use crate::plugin::{Anchors, Plugin, PluginContext};
 use crate::scene::{NodeId, Object3D, Rgba, Scene};
@@ -40,8 +40,8 @@ pub struct LaserPlugin {
     node: NodeId,
     parent: ParentLink,
     geometry_reply: Option<ReplyTicket>,
-    /// The subtype and sequence number of the scan drawn last.
-    last_drawn: Option<(u8, u64)>,
+    /// The scan drawn last, per data subtype.
+    drawn: [LastTaken; DATA_SUBTYPES.len()],
     /// Readings in the newest scan, and the nearest return.
     summary: Option<(usize, Option<f32>, Instant)>,
     skin: Skin,
@@ -75,7 +75,7 @@ impl LaserPlugin {
             node,
             parent,
             geometry_reply,
-            last_drawn: None,
+            drawn: [LastTaken::default(); DATA_SUBTYPES.len()],
             summary: None,
             skin,
             skin_node,
@@ -165,15 +165,13 @@ impl Plugin for LaserPlugin {
         let mut changed = self.place_from_geometry(ctx);
         changed |= self.parent.attach(self.node, ctx);
         let newest = ctx.device.and_then(|d| {
-            DATA_SUBTYPES
-                .iter()
-                .filter_map(|&subtype| Some((subtype, d.latest(subtype)?)))
+            (0..DATA_SUBTYPES.len())
+                .filter_map(|i| Some((i, d.latest(DATA_SUBTYPES[i])?)))
                 .max_by_key(|(_, sample)| sample.received)
         });
-        if let Some((subtype, sample)) = newest
-            && self.last_drawn != Some((subtype, sample.seq))
+        if let Some((i, sample)) = newest
+            && self.drawn[i].is_new(&sample)
         {
-            self.last_drawn = Some((subtype, sample.seq));
             changed |= self.redraw(&sample, ctx);
         }
         changed
@@ -195,7 +193,7 @@ impl Plugin for LaserPlugin {
         self.skin.ui(ui);
         if self.style.ui(ui) {
             // Redraw the newest scan in the new style.
-            self.last_drawn = None;
+            self.drawn.iter_mut().for_each(LastTaken::forget);
         }
     }
 

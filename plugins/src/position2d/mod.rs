@@ -31,7 +31,7 @@ pub use widgets::joystick_id;
 
 use crate::action::{Action, ObjectRef};
 use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::ReplyTicket;
+use crate::device::{LastTaken, ReplyTicket};
 use crate::plugin::{AnchorKey, Anchors, Handled, InputEvent, Plugin, PluginContext, Service};
 use crate::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 use crate::skin::Skin;
@@ -48,7 +48,7 @@ pub struct Position2dPlugin {
     anchor: Option<AnchorKey>,
     geometry_reply: Option<ReplyTicket>,
     size: Vec3,
-    last_seq: Option<u64>,
+    state_taken: LastTaken,
     pose: (f32, f32, f32),
     velocity: (f32, f32),
     stalled: bool,
@@ -133,7 +133,7 @@ impl Position2dPlugin {
             anchor,
             geometry_reply,
             size,
-            last_seq: None,
+            state_taken: LastTaken::default(),
             pose: (0.0, 0.0, 0.0),
             velocity: (0.0, 0.0),
             stalled: false,
@@ -199,13 +199,9 @@ impl Position2dPlugin {
     }
 
     fn take_state(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let Some(sample) = ctx.device.and_then(|d| d.latest(DATA_STATE)) else {
+        let Some(sample) = self.state_taken.newest(ctx.device, DATA_STATE) else {
             return false;
         };
-        if self.last_seq == Some(sample.seq) {
-            return false;
-        }
-        self.last_seq = Some(sample.seq);
         let Body::Position2d(Position2d::State(state)) = &sample.message.body else {
             return false;
         };

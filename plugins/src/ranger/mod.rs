@@ -21,7 +21,7 @@ use player_proto::message::Body;
 pub use shape::{RangerData, RangerShape, ranger_geometry};
 
 use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::{DeviceAccess, ReplyOutcome, ReplyTicket, Sample};
+use crate::device::{DeviceAccess, LastTaken, ReplyOutcome, ReplyTicket, Sample};
 use crate::laser::ScanStyle;
 use crate::parent_link::ParentLink;
 use crate::plugin::{Anchors, Plugin, PluginContext};
@@ -49,8 +49,8 @@ pub struct RangerPlugin {
     ranges: Vec<f64>,
     intensities: Vec<f64>,
     shape: RangerShape,
-    /// The sequence number of the last message taken, per data subtype.
-    taken: [Option<u64>; DATA_SUBTYPES.len()],
+    /// The last message taken, per data subtype.
+    taken: [LastTaken; DATA_SUBTYPES.len()],
     received: Option<Instant>,
     redraw_needed: bool,
 }
@@ -90,7 +90,7 @@ impl RangerPlugin {
             ranges: Vec::new(),
             intensities: Vec::new(),
             shape: RangerShape::Empty,
-            taken: [None; DATA_SUBTYPES.len()],
+            taken: [LastTaken::default(); DATA_SUBTYPES.len()],
             received: None,
             redraw_needed: false,
         }))
@@ -143,12 +143,7 @@ impl RangerPlugin {
     fn take_data(&mut self, device: &dyn DeviceAccess, scene: &mut Scene) {
         let mut new: Vec<Sample> = Vec::new();
         for (taken, subtype) in self.taken.iter_mut().zip(DATA_SUBTYPES) {
-            if let Some(sample) = device.latest(subtype)
-                && *taken != Some(sample.seq)
-            {
-                *taken = Some(sample.seq);
-                new.push(sample);
-            }
+            new.extend(taken.newest(Some(device), subtype));
         }
         new.sort_by_key(|s| s.received);
         for sample in new {

@@ -15,7 +15,7 @@ use player_proto::interfaces::sonar::{self, Sonar};
 use player_proto::message::Body;
 
 use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::{ReplyTicket, Sample};
+use crate::device::{LastTaken, ReplyTicket, Sample};
 use crate::parent_link::ParentLink;
 use crate::plugin::{Anchors, Plugin, PluginContext};
 use crate::scene::{NodeId, Object3D, Scene};
@@ -48,7 +48,7 @@ pub struct SonarPlugin {
     transducers: Vec<Transducer>,
     pose_source: PoseSource,
     ranges: Vec<f32>,
-    last_seq: Option<u64>,
+    ranges_taken: LastTaken,
     last_geom_seq: Option<u64>,
     received: Option<Instant>,
     redraw_needed: bool,
@@ -80,7 +80,7 @@ impl SonarPlugin {
             transducers: Vec::new(),
             pose_source: PoseSource::Assumed,
             ranges: Vec::new(),
-            last_seq: None,
+            ranges_taken: LastTaken::default(),
             last_geom_seq: None,
             received: None,
             redraw_needed: false,
@@ -170,10 +170,7 @@ impl Plugin for SonarPlugin {
         self.take_geometry_reply();
         if let Some(device) = ctx.device {
             self.take_geometry_data(device.latest(DATA_GEOM));
-            if let Some(sample) = device.latest(DATA_RANGES)
-                && self.last_seq != Some(sample.seq)
-            {
-                self.last_seq = Some(sample.seq);
+            if let Some(sample) = self.ranges_taken.newest(Some(device), DATA_RANGES) {
                 self.take_ranges(&sample);
             }
         }
