@@ -16,8 +16,8 @@
 //! store, and messages lost (replaced in the server's queue, or never read).
 //!
 //! ```sh
-//! cargo run --release -p pv3d-bench --bin scale -- --out bench/results
-//! cargo run --release -p pv3d-bench --bin scale -- --lidar --out bench/results
+//! cargo run --release -p bench --bin scale -- --out bench/results
+//! cargo run --release -p bench --bin scale -- --lidar --out bench/results
 //! ```
 //!
 //! Results and their reading: `bench/RESULTS.md`.

@@ -3,7 +3,7 @@
 
 use std::time::Duration;
 
-use pv3d_bench::{Design, PointConfig, TrafficConfig, run_point};
+use bench::{Design, PointConfig, TrafficConfig, run_point};
 
 #[test]
 fn both_designs_receive_data_at_three_robots() {

@@ -16,7 +16,6 @@ pub mod client;
 #[doc(hidden)]
 pub mod fuzz_input;
 pub mod interfaces;
-pub mod logging;
 pub mod message;
 pub mod server;
 pub mod summary;

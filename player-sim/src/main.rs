@@ -50,7 +50,7 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
-    player_proto::logging::init("info");
+    player_tools::logging::init("info");
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -1,29 +1,15 @@
-//! The pv3d component model and the standard plugins.
-//!
-//! * [`scene`] — the tree of objects plugins fill and the viewer draws (no OpenGL here).
-//! * [`plugin`] — the `Plugin` trait, its context, events, services and the registry.
-//! * [`config`] — plugin parameters with defaults and errors that say where.
-//! * [`device`] — what a plugin sees of its Player device.
+//! The standard pv3d components, one folder each: ground (with floorplans, grid, lights),
+//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera and zones. Each is built
+//! on the `framework` crate alone and can be read without the rest of the application.
 
-pub mod action;
+use framework::PluginRegistry;
+
 pub mod camera;
-pub mod config;
-pub mod device;
-pub mod plugin;
-pub mod scene;
-
-pub use action::{Action, ObjectRef};
-pub use config::{ConfigValueError, Param, PluginConfig};
-pub use device::{DeviceAccess, LinkState, Sample};
-pub use plugin::{Handled, InputEvent, Plugin, PluginContext, PluginRegistry};
-
 pub mod fiducial;
 pub mod ground;
 pub mod laser;
-pub mod parent_link;
 pub mod position2d;
 pub mod ranger;
-pub mod skin;
 pub mod sonar;
 pub mod zones;
 

@@ -7,16 +7,16 @@ mod support;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+use framework::PluginConfig;
+use framework::config::DeviceRef;
+use framework::device::Sample;
 use player_proto::interfaces::camera::{
     COMPRESS_JPEG, COMPRESS_RAW, Camera, CameraData, FORMAT_MONO8, FORMAT_RGB888,
 };
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
-use pv3d_plugins::PluginConfig;
-use pv3d_plugins::camera::frames::{CameraFrames, Offered};
-use pv3d_plugins::config::DeviceRef;
-use pv3d_plugins::device::Sample;
-use support::Harness;
+use plugins::camera::frames::{CameraFrames, Offered};
+use support::harness;
 
 fn addr() -> DevAddr {
     "camera:0".parse().unwrap()
@@ -169,7 +169,7 @@ fn the_plugin_shows_the_frame_as_a_texture_of_its_size_without_gl() {
         origin: "test.xml:1:1".into(),
         ..PluginConfig::default()
     };
-    let mut h = Harness::default();
+    let mut h = harness();
     let Ok(mut plugin) = h.make(config) else {
         panic!("default config refused");
     };

@@ -2,13 +2,13 @@
 
 mod support;
 
+use framework::PluginConfig;
+use framework::config::{DeviceRef, Param};
 use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::fiducial::{Fiducial, FiducialData, FiducialItem};
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
-use pv3d_plugins::PluginConfig;
-use pv3d_plugins::config::{DeviceRef, Param};
-use support::Harness;
+use support::harness;
 
 #[test]
 fn detections_become_tagged_markers() {
@@ -26,7 +26,7 @@ fn detections_become_tagged_markers() {
         params: vec![tag],
         ..PluginConfig::default()
     };
-    let mut h = Harness::default();
+    let mut h = harness();
     let mut plugin = h.make(config).unwrap();
     let item = |id, px| FiducialItem {
         id,

@@ -4,9 +4,9 @@ mod support;
 
 use std::path::Path;
 
-use pv3d_plugins::ground::{Placement, walls_from_bitmap};
-use pv3d_plugins::scene::{Geometry, Rgba};
-use support::Harness;
+use framework::scene::{Geometry, Rgba};
+use plugins::ground::{Placement, walls_from_bitmap};
+use support::harness;
 
 #[test]
 fn the_arena_bitmap_becomes_walls_in_place() {
@@ -45,7 +45,7 @@ fn the_arena_bitmap_becomes_walls_in_place() {
 
 #[test]
 fn block_walls_stand_up_and_bad_ones_say_where() {
-    use pv3d_plugins::config::{Param, PluginConfig};
+    use framework::config::{Param, PluginConfig};
 
     let wall = |text: &str| {
         let mut p = Param::new("wall", text);
@@ -58,7 +58,7 @@ fn block_walls_stand_up_and_bad_ones_say_where() {
         origin: "blocks.xml:3:3".into(),
         ..PluginConfig::default()
     };
-    let mut h = Harness::default();
+    let mut h = harness();
     // An L-shaped partition: six walls and a four-triangle top.
     h.make(config(vec![
         wall("0 0  2 0  2 0.2  0.2 0.2  0.2 2  0 2"),

@@ -4,16 +4,17 @@ mod support;
 
 use std::sync::Arc;
 
+use framework::PluginConfig;
+use framework::config::{DeviceRef, Param};
+use framework::device::RecordingDevice;
+use framework::scene::Scene;
 use glam::Vec3;
 use player_proto::interfaces::common::{BBox3d, Pose3d};
 use player_proto::interfaces::laser::{Laser, LaserGeometry, LaserScan};
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
-use pv3d_plugins::config::{DeviceRef, Param};
-use pv3d_plugins::device::RecordingDevice;
-use pv3d_plugins::scene::Scene;
-use pv3d_plugins::{PluginConfig, standard_plugins};
-use support::Harness;
+use plugins::standard_plugins;
+use support::{Harness, harness};
 
 fn laser_config() -> PluginConfig {
     let mut parent = Param::new("parentNode", "");
@@ -59,7 +60,7 @@ fn scans_become_points_below_the_robot_at_the_geometry_pose() {
 
     let mut h = Harness {
         device,
-        ..Harness::default()
+        ..harness()
     };
     let robot = h.robot_at(5.0);
     let mut plugin = h.make(laser_config()).unwrap();
@@ -108,7 +109,7 @@ fn bad_parameters_name_the_place() {
         origin: "test.xml:7:3".into(),
         ..Param::new("drawPoints", "sometimes")
     });
-    let mut h = Harness::default();
+    let mut h = harness();
     let create = standard_plugins().constructor("libpv3d_laser").unwrap();
     let err = match create(config, &mut h.ctx_without_device()) {
         Err(e) => e.to_string(),
@@ -126,7 +127,7 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
     use player_proto::interfaces::laser::{LaserScanAngle, LaserScanPose};
 
     let addr: DevAddr = "laser:0".parse().unwrap();
-    let mut h = Harness::default();
+    let mut h = harness();
     let mut plugin = h.make(laser_config()).unwrap();
     let node = plugin.node().unwrap();
 
@@ -179,7 +180,7 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
 }
 
 /// Where the points of `node` are, in its own frame.
-fn points_of(scene: &Scene, node: pv3d_plugins::scene::NodeId) -> Vec<Vec3> {
+fn points_of(scene: &Scene, node: framework::scene::NodeId) -> Vec<Vec3> {
     let g = &scene.get(node).unwrap().geometry;
     g.points.iter().map(|p| p.pos).collect()
 }

@@ -6,20 +6,20 @@ mod support;
 
 use std::time::Duration;
 
+use framework::PluginConfig;
+use framework::action::ObjectRef;
+use framework::config::DeviceRef;
+use framework::config::Param;
+use framework::device::{LinkState, RecordingDevice};
+use framework::plugin::{AnchorKey, InputEvent, Plugin};
+use framework::scene::Object3D;
+use framework::scene::Scene;
 use glam::Vec3;
 use player_proto::interfaces::common::Pose2d;
 use player_proto::interfaces::position2d::{Position2d, Position2dData};
 use player_proto::message::{Body, Message};
 use player_proto::{DevAddr, MsgType};
-use pv3d_plugins::PluginConfig;
-use pv3d_plugins::action::ObjectRef;
-use pv3d_plugins::config::DeviceRef;
-use pv3d_plugins::config::Param;
-use pv3d_plugins::device::{LinkState, RecordingDevice};
-use pv3d_plugins::plugin::{AnchorKey, InputEvent, Plugin};
-use pv3d_plugins::scene::Object3D;
-use pv3d_plugins::scene::Scene;
-use support::Harness;
+use support::{Harness, harness};
 
 fn config() -> PluginConfig {
     PluginConfig {
@@ -80,7 +80,7 @@ fn waypoints(device: &RecordingDevice) -> Vec<(f64, f64, f64)> {
 }
 
 /// A fiducial marker as the fiducial plugin makes it (re-created every scan).
-fn marker(scene: &mut Scene, id: i32, x: f32, y: f32) -> pv3d_plugins::scene::NodeId {
+fn marker(scene: &mut Scene, id: i32, x: f32, y: f32) -> framework::scene::NodeId {
     let mut o = Object3D::new(format!("marker {id}"));
     o.tags = vec!["fiducial".into(), format!("id:{id}"), "person".into()];
     o.transform = glam::Affine3A::from_translation(Vec3::new(x, y, 0.0));
@@ -88,7 +88,7 @@ fn marker(scene: &mut Scene, id: i32, x: f32, y: f32) -> pv3d_plugins::scene::No
 }
 
 fn world_with(config: PluginConfig) -> (Harness, Box<dyn Plugin>) {
-    let mut w = Harness::default();
+    let mut w = harness();
     let plugin = w.make(config).unwrap();
     (w, plugin)
 }
@@ -240,7 +240,7 @@ fn position_mode_sends_one_waypoint_and_writes_the_mode_back() {
 
     let mut bad = config();
     bad.params.push(Param::new("mode", "warp"));
-    let err = Harness::default().make(bad).err().unwrap().to_string();
+    let err = harness().make(bad).err().unwrap().to_string();
     assert!(err.contains("<mode>") && err.contains("warp"), "{err}");
 }
 

@@ -5,18 +5,18 @@ mod support;
 
 use std::sync::Arc;
 
+use framework::PluginConfig;
+use framework::config::{DeviceRef, Param};
+use framework::device::RecordingDevice;
+use framework::plugin::Plugin;
+use framework::scene::{NodeId, Scene};
 use glam::Vec3;
 use player_proto::interfaces::common::{BBox3d, Pose3d};
 use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry, RangerRanges};
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
-use pv3d_plugins::PluginConfig;
-use pv3d_plugins::config::{DeviceRef, Param};
-use pv3d_plugins::device::RecordingDevice;
-use pv3d_plugins::plugin::Plugin;
-use pv3d_plugins::scene::{NodeId, Scene};
-use pv3d_plugins::sonar::cones::ARC_SEGMENTS;
-use support::Harness;
+use plugins::sonar::cones::ARC_SEGMENTS;
+use support::{Harness, harness};
 
 fn addr() -> DevAddr {
     "ranger:1".parse().unwrap()
@@ -67,7 +67,7 @@ fn run(
 ) -> (Scene, NodeId, NodeId, Box<dyn Plugin>) {
     let mut h = Harness {
         device,
-        ..Harness::default()
+        ..harness()
     };
     let robot = h.robot_at(5.0);
     let mut plugin = h
@@ -189,7 +189,7 @@ fn a_sonar_ring_served_as_ranger_is_one_cone_per_element() {
 
 #[test]
 fn readings_before_the_config_wait_for_it() {
-    let mut h = Harness::default();
+    let mut h = harness();
     let Ok(mut plugin) = h.make(ranger_config(vec![])) else {
         panic!("default config refused");
     };

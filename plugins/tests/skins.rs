@@ -7,16 +7,16 @@ mod support;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+use framework::PluginConfig;
+use framework::config::{DeviceRef, Param};
+use framework::plugin::Plugin;
+use framework::skin::{MeshManager, Skin, SkinError};
 use glam::Vec3;
 use player_proto::interfaces::common::{BBox3d, Pose3d};
 use player_proto::interfaces::laser::{Laser, LaserGeometry};
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
-use pv3d_plugins::PluginConfig;
-use pv3d_plugins::config::{DeviceRef, Param};
-use pv3d_plugins::plugin::Plugin;
-use pv3d_plugins::skin::{MeshManager, Skin, SkinError};
-use support::Harness;
+use support::{Harness, harness};
 
 fn rover_obj() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/skins/rover.obj")
@@ -73,7 +73,7 @@ fn robots_wearing_one_file_share_one_mesh_read_once() {
     std::fs::copy(rover_obj(), dir.join("rover.obj")).unwrap();
     let file = dir.join("rover.obj");
     let manager = MeshManager::shared();
-    let mut w = Harness::default();
+    let mut w = harness();
     let make = |w: &mut Harness| {
         w.make(config(
             "libpv3d_position2d",
@@ -119,7 +119,7 @@ fn a_missing_or_broken_skin_leaves_the_box_and_says_where() {
         "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n",
     )
     .unwrap();
-    let mut w = Harness::default();
+    let mut w = harness();
     for file in ["missing.obj", "past_the_end.obj", "no_faces.obj", "nan.obj"] {
         let c = config("libpv3d_position2d", "position2d", &dir, file);
         let skin = Skin::from_config(&c);
@@ -149,7 +149,7 @@ fn a_missing_or_broken_skin_leaves_the_box_and_says_where() {
 fn a_laser_wears_its_skin_at_the_size_its_geometry_reports() {
     let dir = scratch("laser");
     std::fs::copy(rover_obj(), dir.join("scanner.obj")).unwrap();
-    let mut w = Harness::default();
+    let mut w = harness();
     let geometry = LaserGeometry {
         pose: Pose3d {
             px: 0.1,

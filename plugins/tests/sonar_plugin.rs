@@ -5,17 +5,18 @@ mod support;
 
 use std::sync::Arc;
 
+use framework::PluginConfig;
+use framework::config::{DeviceRef, Param};
+use framework::device::{RecordingDevice, RequestFailure};
+use framework::plugin::Plugin;
 use glam::Vec3;
 use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::sonar::{Sonar, SonarData, SonarGeometry};
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
-use pv3d_plugins::config::{DeviceRef, Param};
-use pv3d_plugins::device::{RecordingDevice, RequestFailure};
-use pv3d_plugins::plugin::Plugin;
-use pv3d_plugins::sonar::cones::ARC_SEGMENTS;
-use pv3d_plugins::{PluginConfig, standard_plugins};
-use support::Harness;
+use plugins::sonar::cones::ARC_SEGMENTS;
+use plugins::standard_plugins;
+use support::{Harness, harness};
 
 fn addr() -> DevAddr {
     "sonar:0".parse().unwrap()
@@ -72,7 +73,7 @@ fn one_cone_per_transducer_at_its_pose_as_long_as_its_reading() {
     ));
     let mut h = Harness {
         device,
-        ..Harness::default()
+        ..harness()
     };
     let robot = h.robot_at(5.0);
     let mut plugin = make(&mut h, sonar_config(vec![]));
@@ -123,7 +124,7 @@ fn without_geometry_the_transducers_are_drawn_on_a_ring_and_state_is_saved() {
         .push((1, Err(RequestFailure::Nack)));
     let mut h = Harness {
         device,
-        ..Harness::default()
+        ..harness()
     };
     h.robot_at(5.0);
     let config = sonar_config(vec![Param::new("drawConeOutline", "0")]);
@@ -167,7 +168,7 @@ fn bad_parameters_name_the_place() {
         origin: "test.xml:4:5".into(),
         ..Param::new("alpha", "opaque")
     }]);
-    let mut h = Harness::default();
+    let mut h = harness();
     let create = standard_plugins().constructor("libpv3d_sonar").unwrap();
     let err = match create(config, &mut h.ctx_without_device()) {
         Err(e) => e.to_string(),

@@ -2,12 +2,12 @@
 
 use std::time::Instant;
 
+use framework::config::{Param, PluginConfig};
+use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::{NodeId, Object3D, Scene};
 use glam::{Affine3A, Vec3};
-use pv3d_plugins::config::{Param, PluginConfig};
-use pv3d_plugins::plugin::{Anchors, Plugin, PluginContext};
-use pv3d_plugins::scene::{NodeId, Object3D, Scene};
-use pv3d_plugins::standard_plugins;
-use pv3d_plugins::zones::ZonesPlugin;
+use plugins::standard_plugins;
+use plugins::zones::ZonesPlugin;
 
 /// An L-shaped dock: 2 × 2 m with its top-right metre missing.
 const L_DOCK: &str = "0 0  2 0  2 1  1 1  1 2  0 2";

@@ -17,6 +17,7 @@ use std::time::Instant;
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, Criterion, criterion_group, criterion_main};
 use eframe::glow::HasContext;
+use framework::device::{DeviceAccess, RecordingDevice};
 use glam::Vec2;
 use player_proto::interfaces::common::Pose2d;
 use player_proto::interfaces::laser::{Laser, LaserScan};
@@ -28,7 +29,6 @@ use pv3d::composition::{Composition, FoundDevice, ParserRegistry, instantiate, p
 use pv3d::render::{
     HeadlessGl, OrbitCamera, POINT_SIZE_PX, SceneBatch, SceneRenderer, ScreenDetail,
 };
-use pv3d_plugins::device::{DeviceAccess, RecordingDevice};
 
 const ROBOTS: u16 = 256;
 const BEAMS: usize = 361;
@@ -85,7 +85,7 @@ impl Swarm {
             ));
         }
         let instances = instantiate(&composition(fill), &found);
-        let viewer = Viewer::new(instances, pv3d_plugins::standard_plugins(), &|d| {
+        let viewer = Viewer::new(instances, plugins::standard_plugins(), &|d| {
             links
                 .get(&(d.port, d.addr.interf))
                 .map(|l| l.clone() as Arc<dyn DeviceAccess>)

@@ -107,7 +107,7 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
 }
 
 fn main() -> Result<()> {
-    player_proto::logging::init("info");
+    player_tools::logging::init("info");
     let mut cli = Cli::parse();
     if cli.demo {
         cli.world = Some(pv3d::demo::world_file());
@@ -179,7 +179,7 @@ fn main() -> Result<()> {
         return Ok(());
     }
 
-    let registry = pv3d_plugins::standard_plugins();
+    let registry = plugins::standard_plugins();
     let lookup = robots.clone();
     let mut viewer = Viewer::new(instances, registry, &|device| lookup.device(device));
     viewer.view.camera.projection = match cli.view {

@@ -2,9 +2,9 @@
 
 mod support;
 
+use framework::scene::{Object3D, Rgba, Scene};
 use glam::{Affine3A, Vec2, Vec3};
 use pv3d::render::{HeadlessGl, OrbitCamera, SceneBatch};
-use pv3d_plugins::scene::{Object3D, Rgba, Scene};
 use support::draw_batch;
 
 fn render(scene: &Scene, camera: &OrbitCamera, size: (u32, u32)) -> image::RgbaImage {

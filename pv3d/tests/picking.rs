@@ -2,9 +2,9 @@
 //! object drawn under the pointer — in the top view and in the perspective view after orbiting
 //! — and nothing beside it.
 
+use framework::scene::{Aabb, Object3D, Scene};
 use glam::{Affine3A, Vec2, Vec3};
 use pv3d::render::OrbitCamera;
-use pv3d_plugins::scene::{Aabb, Object3D, Scene};
 
 fn ndc(pixel: Vec2, size: Vec2) -> Vec2 {
     Vec2::new(pixel.x / size.x * 2.0 - 1.0, 1.0 - pixel.y / size.y * 2.0)

@@ -34,7 +34,7 @@ pub fn viewer_for(composition: &Composition) -> Viewer {
     let mut composer = Composer::new(composition.clone());
     let instances = composer.initial(&robots);
     let lookup = robots.clone();
-    let mut viewer = Viewer::new(instances, pv3d_plugins::standard_plugins(), &|device| {
+    let mut viewer = Viewer::new(instances, plugins::standard_plugins(), &|device| {
         lookup.device(device)
     });
     viewer.robots = Some(robots);

@@ -7,11 +7,11 @@
 use std::path::PathBuf;
 use std::time::Duration;
 
+use framework::scene::NodeId;
 use glam::Vec3;
 use player_sim::sim::Command;
 use pv3d::app::Viewer;
-use pv3d_integration_tests::{load, repo_root, run_for, run_until, serve, sim_pose, viewer_for};
-use pv3d_plugins::scene::NodeId;
+use tests::{load, repo_root, run_for, run_until, serve, sim_pose, viewer_for};
 
 fn distance(a: (f64, f64, f64), b: (f64, f64, f64)) -> f64 {
     ((a.0 - b.0).powi(2) + (a.1 - b.1).powi(2)).sqrt()

@@ -3,7 +3,7 @@
 
 use std::time::Duration;
 
-use pv3d_integration_tests::{load, point_at, run_until, serve_on_port, unused_port, viewer_for};
+use tests::{load, point_at, run_until, serve_on_port, unused_port, viewer_for};
 
 #[test]
 fn a_server_that_answers_late_gets_its_plugins() {

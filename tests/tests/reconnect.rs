@@ -5,9 +5,7 @@
 use std::time::Duration;
 
 use player_sim::sim::Command;
-use pv3d_integration_tests::{
-    load, point_at, run_for, run_until, serve_on_port, sim_pose, unused_port, viewer_for,
-};
+use tests::{load, point_at, run_for, run_until, serve_on_port, sim_pose, unused_port, viewer_for};
 
 fn distance(a: (f64, f64, f64), b: (f64, f64, f64)) -> f64 {
     ((a.0 - b.0).powi(2) + (a.1 - b.1).powi(2)).sqrt()

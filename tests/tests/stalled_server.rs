@@ -9,7 +9,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
 use player_proto::client::ConnectionState;
-use pv3d_integration_tests::{load, run_until, serve, viewer_for};
+use tests::{load, run_until, serve, viewer_for};
 
 /// Forwards TCP between the viewer and the server until frozen; frozen, it forwards nothing
 /// either way (connections stay open), as a hung server looks from outside.

@@ -5,7 +5,7 @@
 use std::time::Duration;
 
 use glam::Vec3;
-use pv3d_integration_tests::{load, run_for, run_until, serve, sim_pose, viewer_for};
+use tests::{load, run_for, run_until, serve, sim_pose, viewer_for};
 
 fn distance(a: (f64, f64, f64), b: (f64, f64)) -> f64 {
     ((a.0 - b.0).powi(2) + (a.1 - b.1).powi(2)).sqrt()

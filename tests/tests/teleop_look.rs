@@ -7,10 +7,10 @@
 
 use std::time::{Duration, Instant};
 
+use framework::scene::NodeId;
 use glam::Vec3;
 use pv3d::app::HeadlessUi;
-use pv3d_integration_tests::{load, run_for, serve, sim_pose, viewer_for};
-use pv3d_plugins::scene::NodeId;
+use tests::{load, run_for, serve, sim_pose, viewer_for};
 
 fn robot_near(viewer: &pv3d::app::Viewer, x: f64, y: f64) -> NodeId {
     let scene = viewer.scene();

@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 use egui::{Event, Modifiers, PointerButton, Pos2, RawInput, Rect, pos2, vec2};
 use glam::Vec3;
 use pv3d::app::Viewer;
-use pv3d_integration_tests::{load, run_for, run_until, serve, sim_pose, viewer_for};
+use tests::{load, run_for, run_until, serve, sim_pose, viewer_for};
 
 /// One window frame: update, then the UI with `events`.
 struct Window {
@@ -180,7 +180,7 @@ fn the_joystick_over_the_view_drives_and_letting_go_stops() {
     // The pad of robot "robot" (the template's id) over the view, without opening the tree.
     let pad = window
         .ctx
-        .read_response(pv3d_plugins::position2d::joystick_id("robot", "view"))
+        .read_response(plugins::position2d::joystick_id("robot", "view"))
         .expect("the joystick is shown over the view")
         .rect;
     let start = sim_pose(&running, 0);

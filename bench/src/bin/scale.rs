@@ -1,4 +1,4 @@
-//! The scale sweep: `cargo run --release -p pv3d-bench --bin scale -- --out bench/results`
+//! The scale sweep: `cargo run --release -p bench --bin scale -- --out bench/results`
 //! (add `--lidar` for 1081 beams at 40 Hz). Prints the table and writes it, with a PNG plot,
 //! into the output folder.
 
@@ -6,8 +6,8 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use anyhow::Context;
+use bench::{Design, PointConfig, TrafficConfig, plot, report, run_point};
 use clap::Parser;
-use pv3d_bench::{Design, PointConfig, TrafficConfig, plot, report, run_point};
 
 #[derive(Parser)]
 #[command(about = "One client thread per robot vs one polling thread, N robots")]
@@ -45,7 +45,7 @@ fn main() -> anyhow::Result<()> {
     tracing_subscriber::fmt()
         .with_env_filter(
             tracing_subscriber::EnvFilter::try_from_default_env()
-                .unwrap_or_else(|_| "error,pv3d_bench=info".into()),
+                .unwrap_or_else(|_| "error,bench=info".into()),
         )
         .with_writer(std::io::stderr)
         .init();

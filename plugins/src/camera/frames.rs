@@ -12,7 +12,7 @@ use image::RgbaImage;
 use player_proto::interfaces::camera::Camera;
 use player_proto::message::{Body, Message};
 
-use crate::device::{LastTaken, Sample};
+use framework::device::{LastTaken, Sample};
 
 /// The frame rate is measured over this many most recent arrivals.
 const RATE_WINDOW: usize = 30;

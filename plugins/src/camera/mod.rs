@@ -9,10 +9,10 @@
 pub mod frames;
 pub mod window;
 
-use crate::config::{ConfigValueError, PluginConfig};
-use crate::plugin::{Anchors, Plugin, PluginContext};
-use crate::scene::Scene;
 use frames::{CameraFrames, Offered};
+use framework::config::{ConfigValueError, PluginConfig};
+use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::Scene;
 use window::CameraWindow;
 
 /// Subtype of `PLAYER_CAMERA_DATA_STATE`.

@@ -11,11 +11,11 @@ use glam::{Affine3A, Quat, Vec3};
 use player_proto::interfaces::fiducial::{self, Fiducial};
 use player_proto::message::Body;
 
-use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::{LastTaken, ReplyTicket};
-use crate::parent_link::ParentLink;
-use crate::plugin::{Anchors, Plugin, PluginContext};
-use crate::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
+use framework::config::{ConfigValueError, PluginConfig};
+use framework::device::{LastTaken, ReplyTicket};
+use framework::parent_link::ParentLink;
+use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 
 const DATA_SCAN: u8 = 1;
 /// Drawn size of a marker, m.

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use glam::Vec3;
 
-use crate::scene::{Geometry, Rgba};
+use framework::scene::{Geometry, Rgba};
 
 /// Where a bitmap lies: its size in metres and the position of its centre.
 #[derive(Debug, Clone, Copy, PartialEq)]

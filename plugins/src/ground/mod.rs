@@ -14,10 +14,10 @@ pub use floorplan::{Placement, walls_from_bitmap};
 
 use glam::Vec3;
 
-use crate::config::{ConfigValueError, Param, PluginConfig};
-use crate::plugin::{Anchors, Plugin, PluginContext};
-use crate::scene::polygon::{parse_corners, prism};
-use crate::scene::{NodeId, Object3D, Rgba, Scene, SceneLighting};
+use framework::config::{ConfigValueError, Param, PluginConfig};
+use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::polygon::{parse_corners, prism};
+use framework::scene::{NodeId, Object3D, Rgba, Scene, SceneLighting};
 
 /// Fixed scene content placed once: the ground plane, the grid.
 struct Fixture {
@@ -115,7 +115,7 @@ impl Ground {
                     None => height,
                 };
                 let color = match wall.attr("color") {
-                    Some(c) => crate::config::parse_color(c.trim()).ok_or_else(|| {
+                    Some(c) => framework::config::parse_color(c.trim()).ok_or_else(|| {
                         bad(format!("color {c:?} is not a colour such as #808080"))
                     })?,
                     None => wall_color,

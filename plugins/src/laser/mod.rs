@@ -5,7 +5,7 @@
 //! `fillLaserCspace` (0), `drawLaserCspace` (0) — the free-space polygon filled and outlined;
 //! `color` (#ff5a3c); `shadeIntensity` (1) — returns shaded by intensity when the device sends
 //! intensities; `skinFile` — an OBJ model of the scanner drawn at its pose, fitted to the size
-//! its geometry reports (see [`crate::skin`]). The laser's pose on the robot comes from its
+//! its geometry reports (see [`framework::skin`]). The laser's pose on the robot comes from its
 //! geometry request. Scans are drawn from whichever of the three data messages the driver
 //! sends (plain, with the pose it was taken at, with a bearing per reading), newest first.
 
@@ -21,12 +21,12 @@ use player_proto::message::Body;
 pub use readings::{Bearings, Readings};
 pub use scan_geometry::{ScanStyle, endpoints, scan_geometry};
 
-use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::{LastTaken, ReplyTicket, Sample};
-use crate::parent_link::ParentLink;
-use crate::plugin::{Anchors, Plugin, PluginContext};
-use crate::scene::{NodeId, Object3D, Rgba, Scene};
-use crate::skin::{Skin, fit_into};
+use framework::config::{ConfigValueError, PluginConfig};
+use framework::device::{LastTaken, ReplyTicket, Sample};
+use framework::parent_link::ParentLink;
+use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::{NodeId, Object3D, Rgba, Scene};
+use framework::skin::{Skin, fit_into};
 
 /// The scanner's size until its geometry says otherwise (a SICK LMS200's), m.
 const DEFAULT_SIZE: Vec3 = Vec3::new(0.156, 0.155, 0.19);

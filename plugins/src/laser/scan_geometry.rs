@@ -5,8 +5,8 @@
 use glam::Vec3;
 
 use super::readings::Readings;
-use crate::config::{ConfigValueError, PluginConfig};
-use crate::scene::{Geometry, Rgba};
+use framework::config::{ConfigValueError, PluginConfig};
+use framework::scene::{Geometry, Rgba};
 
 /// How bright the weakest return is drawn when shading by intensity (the strongest is 1).
 const DIMMEST: f32 = 0.35;

@@ -5,8 +5,8 @@ use glam::Vec2;
 
 use super::Position2dPlugin;
 use super::goal::{Goal, stand_off};
-use crate::action::{Action, ObjectRef};
-use crate::plugin::PluginContext;
+use framework::action::{Action, ObjectRef};
+use framework::plugin::PluginContext;
 
 impl Position2dPlugin {
     pub(super) fn offered_actions(&self, target: &ObjectRef) -> Vec<Action> {

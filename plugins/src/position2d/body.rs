@@ -3,8 +3,8 @@
 
 use glam::Vec3;
 
-use crate::scene::{Geometry, Rgba};
-use crate::skin::{SkinMesh, fit_into};
+use framework::scene::{Geometry, Rgba};
+use framework::skin::{SkinMesh, fit_into};
 
 /// Fills `g` (cleared first) with a body of `size` (length x, width y, height z): the skin
 /// when there is one, else a box.

@@ -12,7 +12,7 @@ use player_proto::message::Body;
 use super::Position2dPlugin;
 use super::goal::{DriveMode, Goal, heading, stand_off};
 use super::teleop::{joystick_velocity, steer_towards};
-use crate::plugin::PluginContext;
+use framework::plugin::PluginContext;
 
 /// How often velocity commands are repeated while driving.
 const COMMAND_PERIOD: Duration = Duration::from_millis(100);

@@ -4,7 +4,7 @@
 use glam::Vec2;
 
 use super::teleop::ARRIVED;
-use crate::action::ObjectRef;
+use framework::action::ObjectRef;
 
 /// How commands reach the base: velocities the viewer steers with, or way-points the server
 /// drives to itself (Player's position command).

@@ -8,7 +8,7 @@
 //! Parameters: `trailLength` (200 poses), `maxSpeed` (0.5 m/s), `maxTurn` (1.0 rad/s),
 //! `color` (#3c8cdc), `mode` (`velocity` or `position`; velocity), `followDistance` (0.8 m:
 //! how far short of an object "Go to" and "Follow" stop), `skinFile` (an OBJ model drawn
-//! in place of the box, fitted to the robot's size; see [`crate::skin`]).
+//! in place of the box, fitted to the robot's size; see [`framework::skin`]).
 
 mod actions;
 mod body;
@@ -29,12 +29,12 @@ pub use goal::{DriveMode, Goal, stand_off};
 pub use teleop::{ARRIVED, Limits, joystick_velocity, steer_towards, wrap_angle};
 pub use widgets::joystick_id;
 
-use crate::action::{Action, ObjectRef};
-use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::{LastTaken, ReplyTicket};
-use crate::plugin::{AnchorKey, Anchors, Handled, InputEvent, Plugin, PluginContext, Service};
-use crate::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
-use crate::skin::Skin;
+use framework::action::{Action, ObjectRef};
+use framework::config::{ConfigValueError, PluginConfig};
+use framework::device::{LastTaken, ReplyTicket};
+use framework::plugin::{AnchorKey, Anchors, Handled, InputEvent, Plugin, PluginContext, Service};
+use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
+use framework::skin::Skin;
 use trail::Trail;
 
 const DATA_STATE: u8 = 1;

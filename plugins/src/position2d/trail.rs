@@ -7,7 +7,7 @@ use std::collections::VecDeque;
 use glam::{Vec2, Vec3};
 
 use super::goal::Goal;
-use crate::scene::{Geometry, Rgba};
+use framework::scene::{Geometry, Rgba};
 
 /// Poses closer than this to the last one kept are not kept, m (a robot standing still
 /// leaves no trail).

@@ -4,7 +4,7 @@ use glam::Vec2;
 
 use super::Position2dPlugin;
 use super::goal::{DriveMode, Goal};
-use crate::plugin::PluginContext;
+use framework::plugin::PluginContext;
 
 /// The egui id of robot `robot`'s joystick in `place` (`"tree"` or `"view"`), stable so that
 /// tests (and tools) can find the pad: `egui::Context::read_response(joystick_id(..))`.

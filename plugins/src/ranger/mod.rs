@@ -20,14 +20,14 @@ use player_proto::message::Body;
 
 pub use shape::{RangerData, RangerShape, ranger_geometry};
 
-use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::{DeviceAccess, LastTaken, ReplyOutcome, ReplyTicket, Sample};
 use crate::laser::ScanStyle;
-use crate::parent_link::ParentLink;
-use crate::plugin::{Anchors, Plugin, PluginContext};
-use crate::scene::{NodeId, Object3D, Scene};
 use crate::sonar::cone_params::{cone_style_from_config, cone_style_ui, write_cone_style};
 use crate::sonar::cones::{ConeStyle, Transducer};
+use framework::config::{ConfigValueError, PluginConfig};
+use framework::device::{DeviceAccess, LastTaken, ReplyOutcome, ReplyTicket, Sample};
+use framework::parent_link::ParentLink;
+use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::{NodeId, Object3D, Scene};
 
 /// Data subtypes: `PLAYER_RANGER_DATA_RANGE`, `_RANGESTAMPED`, `_INTNS`, `_INTNSSTAMPED`,
 /// `_GEOM`.

@@ -9,8 +9,8 @@
 use player_proto::interfaces::ranger::RangerConfig;
 
 use crate::laser::{Bearings, Readings, ScanStyle, scan_geometry};
-use crate::scene::Geometry;
 use crate::sonar::cones::{ConeStyle, Transducer, cone_geometry};
+use framework::scene::Geometry;
 
 /// Widest opening a per-element configured angle may have and still be taken as the cone width;
 /// beyond it the configured angles describe something else and the `coneAngle` parameter wins.

@@ -6,8 +6,8 @@
 //! when the device does not say), `maxConeLength` (20 m), `maxRange` (none: the device's, when
 //! it says) — readings at or beyond it are "no echo", drawn as a faint outline.
 
-use crate::config::{ConfigValueError, PluginConfig};
 use crate::sonar::cones::ConeStyle;
+use framework::config::{ConfigValueError, PluginConfig};
 
 /// Reads the cone parameters, with the defaults of [`ConeStyle::default`].
 pub fn cone_style_from_config(config: &PluginConfig) -> Result<ConeStyle, ConfigValueError> {
@@ -52,7 +52,7 @@ pub fn cone_style_ui(ui: &mut egui::Ui, style: &mut ConeStyle) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::config::Param;
+    use framework::config::Param;
 
     #[test]
     fn defaults_then_values_then_written_back() {

@@ -7,7 +7,7 @@ use std::f32::consts::TAU;
 use glam::{Vec2, Vec3};
 use player_proto::interfaces::common::Pose3d;
 
-use crate::scene::{Geometry, Rgba};
+use framework::scene::{Geometry, Rgba};
 
 /// Segments of each cone's arc: smooth enough at sonar widths, cheap for a ring of 24.
 pub const ARC_SEGMENTS: usize = 8;

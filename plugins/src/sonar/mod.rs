@@ -14,13 +14,13 @@ use std::time::Instant;
 use player_proto::interfaces::sonar::{self, Sonar};
 use player_proto::message::Body;
 
-use crate::config::{ConfigValueError, PluginConfig};
-use crate::device::{LastTaken, ReplyTicket, Sample};
-use crate::parent_link::ParentLink;
-use crate::plugin::{Anchors, Plugin, PluginContext};
-use crate::scene::{NodeId, Object3D, Scene};
 use cone_params::{cone_style_from_config, cone_style_ui, write_cone_style};
 use cones::{ConeStyle, Transducer, cone_geometry, evenly_spaced};
+use framework::config::{ConfigValueError, PluginConfig};
+use framework::device::{LastTaken, ReplyTicket, Sample};
+use framework::parent_link::ParentLink;
+use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::{NodeId, Object3D, Scene};
 
 /// Subtype of `PLAYER_SONAR_DATA_RANGES`.
 const DATA_RANGES: u8 = 1;

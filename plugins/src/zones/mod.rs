@@ -10,11 +10,11 @@ use std::collections::{HashSet, VecDeque};
 
 use glam::{Vec2, Vec3};
 
-use crate::config::{ConfigValueError, Param, PluginConfig};
-use crate::plugin::{Anchors, Plugin, PluginContext};
-use crate::scene::{NodeId, Object3D, Rgba, Scene};
+use framework::config::{ConfigValueError, Param, PluginConfig};
+use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::{NodeId, Object3D, Rgba, Scene};
 
-use crate::scene::polygon::{contains, parse_corners, triangulate};
+use framework::scene::polygon::{contains, parse_corners, triangulate};
 
 /// Zones lie this far above the ground, under everything else.
 const HEIGHT: f32 = 0.005;
@@ -54,7 +54,7 @@ impl ZonesPlugin {
         for param in config.params.iter().filter(|p| p.name == "zone") {
             let zone = read_zone(&config, param)?;
             let color = match param.attr("color") {
-                Some(text) => crate::config::parse_color(text.trim()).ok_or_else(|| {
+                Some(text) => framework::config::parse_color(text.trim()).ok_or_else(|| {
                     error(
                         &config,
                         param,

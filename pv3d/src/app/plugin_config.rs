@@ -1,7 +1,7 @@
 //! Between composition elements and plugin configurations: a `<plugin>` element becomes a
 //! [`PluginConfig`], and a plugin's saved state becomes an element again.
 
-use pv3d_plugins::config::{DeviceRef, Param, PluginConfig};
+use framework::config::{DeviceRef, Param, PluginConfig};
 
 use crate::composition::{Element, Node, PluginInstance, SourcePos};
 

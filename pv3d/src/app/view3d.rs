@@ -8,8 +8,8 @@ use std::sync::{Arc, Mutex};
 use eframe::egui::{self, Color32, Rect, Sense, Ui};
 use eframe::egui_glow;
 use eframe::glow::{self, HasContext};
+use framework::scene::Scene;
 use glam::{Vec2, Vec3};
-use pv3d_plugins::scene::Scene;
 
 use crate::render::{
     Lighting, OrbitCamera, POINT_SIZE_PX, Projection, SceneBatch, SceneRenderer, ScreenDetail,

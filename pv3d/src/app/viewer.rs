@@ -13,10 +13,10 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use eframe::egui::{self, Ui};
-use pv3d_plugins::config::DeviceRef;
-use pv3d_plugins::device::DeviceAccess;
-use pv3d_plugins::plugin::{Anchors, Plugin, PluginContext, PluginRegistry};
-use pv3d_plugins::scene::Scene;
+use framework::config::DeviceRef;
+use framework::device::DeviceAccess;
+use framework::plugin::{Anchors, Plugin, PluginContext, PluginRegistry};
+use framework::scene::Scene;
 
 use super::composer::Composer;
 use super::plugin_config::{config_from_instance, write_back};

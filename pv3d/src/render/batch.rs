@@ -2,8 +2,8 @@
 //! four GL calls however many robots there are. Buffers are reused from frame to frame.
 
 use bytemuck::{Pod, Zeroable};
+use framework::scene::{Label, Scene, Vertex};
 use glam::{Affine3A, Vec3};
-use pv3d_plugins::scene::{Label, Scene, Vertex};
 
 use super::screen_detail::{ScreenDetail, Simplifier};
 
@@ -165,7 +165,7 @@ pub fn content_bounds(scene: &Scene) -> Option<(Vec3, Vec3)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use pv3d_plugins::scene::{Object3D, Rgba};
+    use framework::scene::{Object3D, Rgba};
 
     #[test]
     fn geometry_lands_in_world_space() {

@@ -2,10 +2,10 @@
 
 use std::sync::{Arc, Mutex};
 
+use framework::device::{DeviceAccess, LinkState, ReplyTicket, RequestFailure, Sample};
 use player_proto::client::{Client, ConnectionState, PendingReply, RequestError};
 use player_proto::message::Body;
 use player_proto::wire::DevAddr;
-use pv3d_plugins::device::{DeviceAccess, LinkState, ReplyTicket, RequestFailure, Sample};
 
 /// One device on a shared client. Subscribes on creation, without waiting.
 pub struct ClientDevice {

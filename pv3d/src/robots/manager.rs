@@ -6,9 +6,9 @@ use std::collections::HashMap;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+use framework::config::DeviceRef;
+use framework::device::DeviceAccess;
 use player_proto::client::{Client, ClientOptions, ConnectionState, Notifier};
-use pv3d_plugins::config::DeviceRef;
-use pv3d_plugins::device::DeviceAccess;
 
 use super::device_link::ClientDevice;
 use crate::composition::{ClientDecl, FoundDevice};

@@ -3,8 +3,8 @@
 
 use std::time::Instant;
 
-use pv3d_plugins::plugin::{Handled, InputEvent, PluginContext};
-use pv3d_plugins::scene::NodeId;
+use framework::plugin::{Handled, InputEvent, PluginContext};
+use framework::scene::NodeId;
 
 use super::{Viewer, popups};
 

@@ -7,9 +7,9 @@
 use std::time::Instant;
 
 use eframe::egui;
-use pv3d_plugins::action::{Action, ObjectRef};
-use pv3d_plugins::plugin::PluginContext;
-use pv3d_plugins::scene::NodeId;
+use framework::action::{Action, ObjectRef};
+use framework::plugin::PluginContext;
+use framework::scene::NodeId;
 
 use super::Viewer;
 

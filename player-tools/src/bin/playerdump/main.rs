@@ -42,20 +42,7 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
-    match run(&Cli::parse()) {
-        Ok(()) => ExitCode::SUCCESS,
-        // The reader went away (`playerdump … | head`): not an error.
-        Err(e)
-            if e.downcast_ref::<std::io::Error>()
-                .is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe) =>
-        {
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("playerdump: {e:#}");
-            ExitCode::FAILURE
-        }
-    }
+    player_tools::exit::exit_code("playerdump", run(&Cli::parse()))
 }
 
 fn run(cli: &Cli) -> Result<()> {

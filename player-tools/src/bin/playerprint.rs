@@ -2,6 +2,7 @@
 //! Player's own playerprint. `playerprint --list` prints the device list with driver names.
 
 use std::collections::HashMap;
+use std::io::Write;
 use std::process::ExitCode;
 use std::sync::Arc;
 use std::sync::mpsc::{RecvTimeoutError, sync_channel};
@@ -50,14 +51,8 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
-    player_proto::logging::init("warn");
-    match run(Cli::parse()) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("playerprint: {e:#}");
-            ExitCode::FAILURE
-        }
-    }
+    player_tools::logging::init("warn");
+    player_tools::exit::exit_code("playerprint", run(Cli::parse()))
 }
 
 fn run(cli: Cli) -> Result<()> {
@@ -77,13 +72,15 @@ fn run(cli: Cli) -> Result<()> {
     if let Some(banner) = client.banner() {
         eprintln!("connected to {}:{} ({banner})", cli.host, cli.port);
     }
+    let mut out = std::io::stdout().lock();
     if cli.list {
         for device in client.devices() {
-            println!(
+            writeln!(
+                out,
                 "{:<16} {}",
                 format!("{}:{}", device.addr.interf, device.addr.index),
                 device.driver
-            );
+            )?;
         }
         return Ok(());
     }
@@ -124,14 +121,15 @@ fn run(cli: Cli) -> Result<()> {
                 if seen.insert((addr, subtype), stamped.seq) == Some(stamped.seq) {
                     continue;
                 }
-                println!(
+                writeln!(
+                    out,
                     "{:>12.3}  {}:{} {}  {}",
                     stamped.server_time,
                     addr.interf,
                     addr.index,
                     subtype,
                     summarize(&stamped.message)
-                );
+                )?;
                 printed += 1;
             }
         }

@@ -1,0 +1,28 @@
+//! The pv3d component model: what a component (a plugin) is and what it works with. Read this
+//! crate to write a component; the standard components live in the `plugins` crate and the
+//! application that composes and draws them in `pv3d`.
+//!
+//! * [`plugin`] — the [`Plugin`] trait, its [`PluginContext`], input events, services and the
+//!   registry of constructors by library name.
+//! * [`scene`] — the tree of [`scene::Object3D`] plugins fill and the viewer draws (no OpenGL
+//!   here: a plugin describes geometry, `pv3d` renders it).
+//! * [`config`] — plugin parameters with defaults and errors that say where.
+//! * [`device`] — what a plugin sees of its Player device.
+//! * [`action`] — what a robot can do with a clicked object (go to, follow).
+//! * [`parent_link`] — hanging a sensor below its robot's node.
+//! * [`skin`] — shared OBJ meshes that replace a robot's box.
+//! * [`testing`] — a scene, anchors and a hand-fed device, to test a plugin without a server.
+
+pub mod action;
+pub mod config;
+pub mod device;
+pub mod parent_link;
+pub mod plugin;
+pub mod scene;
+pub mod skin;
+pub mod testing;
+
+pub use action::{Action, ObjectRef};
+pub use config::{ConfigValueError, Param, PluginConfig};
+pub use device::{DeviceAccess, LinkState, Sample};
+pub use plugin::{Handled, InputEvent, Plugin, PluginContext, PluginRegistry};
