@@ -97,6 +97,19 @@ fn every_captured_message_decodes_typed_and_reencodes_identically() {
     assert!(total >= 800, "only {total} messages");
 }
 
+#[test]
+fn navigation_sessions_of_typed_interfaces_decode_and_reencode_identically() {
+    // The localize and planner sessions join this list once those interfaces have typed bodies.
+    for name in [
+        "nav/devlist_driverinfo.jsonl",
+        "nav/devlist_driverinfo_port6666.jsonl",
+        "nav/map_info_data.jsonl",
+    ] {
+        let (s2c, c2s) = load(name);
+        assert!(!s2c.is_empty() && !c2s.is_empty(), "{name}");
+    }
+}
+
 fn data(messages: &[Message], subtype: u8) -> impl Iterator<Item = &Message> {
     messages
         .iter()
