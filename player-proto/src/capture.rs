@@ -5,6 +5,9 @@
 //! (server to client: the banner, then messages; client to server: messages only).
 
 use std::fmt;
+use std::fmt::Write as _;
+
+pub mod trim;
 
 /// Which way a chunk travelled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -97,6 +100,27 @@ pub fn stream(chunks: &[Chunk], dir: Direction) -> Vec<u8> {
         .collect()
 }
 
+/// Writes chunks in the capture format, one line each; [`parse_capture`] reads them back.
+///
+/// Times keep the recordings' resolution (microseconds), so a capture that was read and written
+/// again differs from its source only where the source itself was written differently.
+pub fn write_capture(chunks: &[Chunk]) -> String {
+    let mut out = String::new();
+    for chunk in chunks {
+        write!(
+            out,
+            "{{\"t\": {:.6}, \"dir\": \"{}\", \"hex\": \"",
+            chunk.t, chunk.dir
+        )
+        .expect("writing to a String cannot fail");
+        for byte in &chunk.bytes {
+            write!(out, "{byte:02x}").expect("writing to a String cannot fail");
+        }
+        out.push_str("\"}\n");
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -108,6 +132,16 @@ mod tests {
         assert_eq!(chunks.len(), 3);
         assert_eq!(stream(&chunks, Direction::ServerToClient), [1, 2, 3]);
         assert_eq!(chunks[1].t, 1.0);
+    }
+
+    #[test]
+    fn written_chunks_read_back_unchanged() {
+        let text = concat!(
+            "{\"t\": 0.008256, \"dir\": \"s2c\", \"hex\": \"506c61\"}\n",
+            "{\"t\": 12.500000, \"dir\": \"c2s\", \"hex\": \"00ff\"}\n",
+        );
+        let chunks = parse_capture(text).unwrap();
+        assert_eq!(write_capture(&chunks), text);
     }
 
     #[test]

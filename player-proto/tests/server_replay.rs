@@ -1,8 +1,8 @@
 //! (Written by a teammate against another draft of the server; ported to this one.)
 //!
 //! The strongest check of the server: replay the client side of real Player 3.1 + Stage
-//! sessions (`shared/captures`) against a server configured with the same devices, and compare
-//! what it sends with what the real server sent.
+//! sessions (the repository's `captures/`) against a server configured with the same devices,
+//! and compare what it sends with what the real server sent.
 //!
 //! Devices and driver names come from the captured device list and DRIVERINFO replies. Device
 //! replies (geometry, configuration, NACKs) are the captured ones, served by a device that
@@ -14,7 +14,6 @@
 mod support;
 
 use std::collections::{HashMap, VecDeque};
-use std::path::PathBuf;
 use std::time::Duration;
 
 use bytes::Bytes;
@@ -24,14 +23,11 @@ use player_proto::server::{Device, Reply, Server, ServerConfig};
 use player_proto::wire::{DevAddr, FrameDecoder};
 use player_proto::{Body, Interface, Message, MsgType};
 use support::RawClient;
-
-fn captures() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/captures")
-}
+use support::captures::capture;
 
 /// The concatenated bytes of one direction.
 fn direction(name: &str, dir: &str) -> Vec<u8> {
-    let text = std::fs::read_to_string(captures().join(name)).expect("capture file");
+    let text = std::fs::read_to_string(capture(name)).expect("capture file");
     let chunks = parse_capture(&text).expect("capture lines");
     stream(
         &chunks,
@@ -138,10 +134,6 @@ fn normalized(m: &Message, port: u32, our_port: u32) -> (u32, u32, u16, u16, Msg
 }
 
 fn replay(capture: &str, devlist_capture: &str, port: u32) {
-    if !captures().is_dir() {
-        eprintln!("note: no captures; replay of {capture} skipped");
-        return;
-    }
     let c2s = messages(capture, "c2s");
     let s2c: Vec<Message> = messages(capture, "s2c")
         .into_iter()

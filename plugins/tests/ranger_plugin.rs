@@ -255,16 +255,17 @@ fn stamped_ranges_bring_their_own_geometry_and_config() {
 }
 
 /// The first `PLAYER_RANGER_DATA_RANGE` and the `_INTNS` after it that Stage 4 sent for the
-/// laser of `../shared/captures/ranger_laser_push.jsonl`, or `None` without the captures.
+/// laser of the repository's `captures/ranger_laser_push.jsonl`, or `None` if it has no such pair.
 fn captured_ranges_and_intensities() -> Option<(Message, Message)> {
     use player_proto::capture::{Direction, parse_capture, stream};
     use player_proto::wire::FrameDecoder;
 
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/captures");
-    let Ok(text) = std::fs::read_to_string(dir.join("ranger_laser_push.jsonl")) else {
-        eprintln!("note: no captures in {}; test skipped", dir.display());
-        return None;
-    };
+    let path = std::env::var_os("PLAYER_CAPTURES_DIR")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../captures"))
+        .join("ranger_laser_push.jsonl");
+    let text = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("missing capture {}: {e}", path.display()));
     let bytes = stream(&parse_capture(&text).unwrap(), Direction::ServerToClient);
     let mut frames = FrameDecoder::default();
     frames.extend(&bytes);
@@ -287,9 +288,8 @@ fn captured_ranges_and_intensities() -> Option<(Message, Message)> {
 
 #[test]
 fn stage_intensities_shade_the_returns_they_belong_to() {
-    let Some((ranges, intensities)) = captured_ranges_and_intensities() else {
-        return;
-    };
+    let (ranges, intensities) =
+        captured_ranges_and_intensities().expect("a RANGE then an INTNS message in the capture");
     let device = RecordingDevice::default();
     // The capture's laser: 180° over 181 samples, 8 m (its GET_CONFIG reply in geom_config).
     answer(
