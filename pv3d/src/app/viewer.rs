@@ -18,10 +18,8 @@ use pv3d_plugins::device::DeviceAccess;
 use pv3d_plugins::plugin::{Anchors, Plugin, PluginContext, PluginRegistry};
 use pv3d_plugins::scene::Scene;
 
-use super::composer::Composer;
-use super::plugin_config::{config_from_instance, write_back};
 use super::view3d::{TargetDrag, View3d};
-use crate::composition::PluginInstance;
+use crate::composition::{Composer, PluginInstance, config_from_instance, write_back};
 
 /// A plugin and what it was made from.
 struct Slot {

@@ -6,6 +6,7 @@
 //! handlers' plugin templates for every device that fits a mask. Every error names
 //! file:line:column.
 
+mod composer;
 mod device_mask;
 mod emit;
 mod error;
@@ -13,12 +14,15 @@ mod include;
 mod instantiate;
 mod model;
 mod parsers;
+mod plugin_config;
 mod xml_tree;
 
+pub use composer::Composer;
 pub use device_mask::{DeviceMask, FoundDevice, MaskError};
 pub use emit::{emit_document, to_xml_string};
 pub use error::{ConfigError, SourcePos};
 pub use instantiate::{PluginInstance, bound_mask, instantiate, is_extension_plugin};
 pub use model::{ClientDecl, Composition, DEFAULT_PORT, ExtensionElement, MaskHandler};
 pub use parsers::{ParserRegistry, extension_plugin};
+pub use plugin_config::{config_from_instance, write_back};
 pub use xml_tree::{Attribute, Element, Node, parse_str};

@@ -7,7 +7,7 @@ use std::collections::HashSet;
 
 use player_proto::client::ConnectionState;
 
-use crate::composition::{Composition, FoundDevice, PluginInstance, instantiate};
+use super::{Composition, FoundDevice, PluginInstance, instantiate};
 use crate::robots::RobotManager;
 
 /// Which servers' devices have been turned into plugins.

@@ -3,7 +3,7 @@
 
 use pv3d_plugins::config::{DeviceRef, Param, PluginConfig};
 
-use crate::composition::{Element, Node, PluginInstance, SourcePos};
+use super::{Element, Node, PluginInstance, SourcePos};
 
 /// The configuration a plugin is made from.
 pub fn config_from_instance(instance: &PluginInstance) -> PluginConfig {
