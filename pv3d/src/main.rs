@@ -173,9 +173,11 @@ fn main() -> Result<()> {
     let instances = composer.initial(&robots);
 
     if let Some(out) = &cli.emit_config {
-        std::fs::write(out, emit_document(&composition, &instances))
+        let mut written = instances.clone();
+        written.extend(composer.waiting().iter().cloned());
+        std::fs::write(out, emit_document(&composition, &written, out))
             .with_context(|| format!("writing {}", out.display()))?;
-        eprintln!("wrote {} ({} plugins)", out.display(), instances.len());
+        eprintln!("wrote {} ({} plugins)", out.display(), written.len());
         return Ok(());
     }
 

@@ -13,15 +13,19 @@ mod error;
 mod include;
 mod instantiate;
 mod model;
+mod parent_node;
 mod parsers;
 mod plugin_config;
+mod relocate;
 mod xml_tree;
 
 pub use composer::Composer;
 pub use device_mask::{DeviceMask, FoundDevice, MaskError};
 pub use emit::{emit_document, to_xml_string};
 pub use error::{ConfigError, SourcePos};
-pub use instantiate::{PluginInstance, bound_mask, instantiate, is_extension_plugin};
+pub use instantiate::{
+    PluginInstance, bind_named, bound_mask, instantiate, instantiate_handlers, is_extension_plugin,
+};
 pub use model::{ClientDecl, Composition, DEFAULT_PORT, ExtensionElement, MaskHandler};
 pub use parsers::{ParserRegistry, extension_plugin};
 pub use plugin_config::{config_from_instance, write_back};
