@@ -3,8 +3,10 @@
 //!
 //! `pv3d a.xml b.xml` loads each file (expanding `xi:include`s relative to the including file),
 //! merges them, and, once the servers have reported their devices, [`instantiate`]s the
-//! handlers' plugin templates for every device that fits a mask. Every error names
-//! file:line:column.
+//! handlers' plugin templates for every device that fits a mask (the [`Composer`] does this
+//! for each server as it answers, and [`config_from_instance`] hands the result to a plugin).
+//! [`emit_document`] writes the result back as a composition that runs as it is. Every error
+//! names file:line:column.
 
 mod composer;
 mod device_mask;
