@@ -8,10 +8,10 @@ use anyhow::{Context, Result, bail};
 use clap::Parser;
 use player_sim::serve::ServeOptions;
 use pv3d::app::{
-    Composer, RedrawPolicy, ScreenshotRequest, UiWaker, Viewer, WindowOptions, headless_screenshot,
+    RedrawPolicy, ScreenshotRequest, UiWaker, Viewer, WindowOptions, headless_screenshot,
     run_window,
 };
-use pv3d::composition::{Composition, ParserRegistry, emit_document};
+use pv3d::composition::{Composer, Composition, ParserRegistry, emit_document};
 use pv3d::embedded_world::serve_world;
 use pv3d::render::Projection;
 use pv3d::robots::RobotManager;
@@ -173,9 +173,11 @@ fn main() -> Result<()> {
     let instances = composer.initial(&robots);
 
     if let Some(out) = &cli.emit_config {
-        std::fs::write(out, emit_document(&composition, &instances))
+        let mut written = instances.clone();
+        written.extend(composer.waiting().iter().cloned());
+        std::fs::write(out, emit_document(&composition, &written, out))
             .with_context(|| format!("writing {}", out.display()))?;
-        eprintln!("wrote {} ({} plugins)", out.display(), instances.len());
+        eprintln!("wrote {} ({} plugins)", out.display(), written.len());
         return Ok(());
     }
 

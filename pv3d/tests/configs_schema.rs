@@ -62,6 +62,7 @@ fn the_schema_refuses_what_the_loader_refuses() {
         "<pv3d><plugin id=\"no-library\"/></pv3d>",
         "<pv3d><handlers><playerClient port=\"http\"/></handlers></pv3d>",
         "<pv3d><handlers><playerDeviceMask index=\"x\"/></handlers></pv3d>",
+        "<pv3d><plugin library=\"libpv3d_laser\"><parentNode index=\"x\"/></plugin></pv3d>",
     ]
     .iter()
     .enumerate()

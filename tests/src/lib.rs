@@ -8,8 +8,8 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use player_sim::serve::{Running, ServeOptions};
-use pv3d::app::{Composer, Viewer};
-use pv3d::composition::{Composition, ParserRegistry};
+use pv3d::app::Viewer;
+use pv3d::composition::{Composer, Composition, ParserRegistry};
 use pv3d::robots::RobotManager;
 
 /// The checkout's top folder.

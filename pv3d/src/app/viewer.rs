@@ -18,10 +18,8 @@ use framework::device::DeviceAccess;
 use framework::plugin::{Anchors, Plugin, PluginContext, PluginRegistry};
 use framework::scene::Scene;
 
-use super::composer::Composer;
-use super::plugin_config::{config_from_instance, write_back};
 use super::view3d::{TargetDrag, View3d};
-use crate::composition::PluginInstance;
+use crate::composition::{Composer, PluginInstance, config_from_instance, write_back};
 
 /// A plugin and what it was made from.
 struct Slot {
@@ -370,22 +368,29 @@ impl Viewer {
         let Some(target) = &self.save_target else {
             return Err(std::io::Error::other("no file to save to (use --save-to)"));
         };
-        let text = crate::composition::emit_document(&target.composition, &self.save());
+        let text =
+            crate::composition::emit_document(&target.composition, &self.save(), &target.path);
         std::fs::write(&target.path, text)?;
         tracing::info!("composition saved to {}", target.path.display());
         Ok(target.path.clone())
     }
 
-    /// The composition's plugin elements with every plugin's current state written back.
+    /// The composition's plugin elements with every plugin's current state written back, and
+    /// the plugins still waiting for their device as they were written.
     pub fn save(&self) -> Vec<PluginInstance> {
-        self.slots
+        let mut saved: Vec<PluginInstance> = self
+            .slots
             .iter()
             .map(|slot| {
                 let mut instance = slot.instance.clone();
                 write_back(&mut instance.element, &slot.plugin.save());
                 instance
             })
-            .collect()
+            .collect();
+        if let Some(composer) = &self.composer {
+            saved.extend(composer.waiting().iter().cloned());
+        }
+        saved
     }
 }
 

@@ -1,19 +1,28 @@
 //! Writing a composition back to XML: `--emit-config`, and saving the plugins' state.
 
 use std::io::Write;
+use std::path::Path;
 
 use quick_xml::Writer;
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
 
 use super::instantiate::PluginInstance;
 use super::model::Composition;
+use super::relocate::relocate_file_parameters;
 use super::xml_tree::{Element, Node};
 
 const XINCLUDE_NS: &str = "http://www.w3.org/2001/XInclude";
 
 /// A `<pv3d>` document holding the composition's servers, its extension elements, and the
-/// given plugin instances written out in full (handlers already applied), ready to edit.
-pub fn emit_document(composition: &Composition, instances: &[PluginInstance]) -> String {
+/// given plugin instances written out in full (handlers already applied, each plugin's mask
+/// the address of its device), ready to edit and run. It is meant to be written to
+/// `written_to`: relative file parameters are rewritten to be read from there.
+pub fn emit_document(
+    composition: &Composition,
+    instances: &[PluginInstance],
+    written_to: &Path,
+) -> String {
+    let folder = written_to.parent().unwrap_or(Path::new(""));
     let mut root = Element::new("pv3d", super::error::SourcePos::generated());
     root.set_attr("xmlns:xi", XINCLUDE_NS);
     if !composition.clients.is_empty() {
@@ -39,7 +48,9 @@ pub fn emit_document(composition: &Composition, instances: &[PluginInstance]) ->
     // Extension elements were written above as they are; their plugin is made anew on load.
     for instance in instances {
         if !super::instantiate::is_extension_plugin(composition, instance) {
-            root.children.push(Node::Element(instance.element.clone()));
+            let mut plugin = instance.element.clone();
+            relocate_file_parameters(&mut plugin, folder);
+            root.children.push(Node::Element(plugin));
         }
     }
     to_xml_string(&root)

@@ -1,15 +1,19 @@
-//! Turning handlers into plugin instances: every device a server reports that fits a handler's
-//! mask gets a copy of the handler's templates, with the template's `<playerDeviceMask>`
-//! replaced by the found device's address (the paper's Fig. 4 and 5).
+//! Turning a composition into plugin instances for the devices the servers reported.
+//!
+//! Every device that fits a handler's mask gets a copy of the handler's templates, with the
+//! template's `<playerDeviceMask>` replaced by the found device's address (the paper's Fig. 4
+//! and 5). A plugin named outright with a `<playerDeviceMask>` is bound to the first device
+//! that fits it, which is what makes an emitted composition (every plugin named outright, its
+//! mask the full address of its device) run as the composition it came from.
 
 use super::device_mask::FoundDevice;
 use super::error::SourcePos;
 use super::model::{Composition, read_mask};
+use super::parent_node::bind_parent_node;
 use super::parsers::extension_plugin;
 use super::xml_tree::{Element, Node};
 
-/// A plugin to create: its configuration element and, when it came from a handler, the device
-/// it was made for.
+/// A plugin to create: its configuration element and the device it was made for, if any.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PluginInstance {
     pub element: Element,
@@ -24,32 +28,71 @@ impl PluginInstance {
     pub fn id(&self) -> &str {
         self.element.attr("id").unwrap_or_default()
     }
+
+    /// Whether this plugin names a device (it has a `<playerDeviceMask>`) that no server has
+    /// reported yet: it is made once one that fits answers.
+    pub fn waits_for_device(&self) -> bool {
+        self.device.is_none() && self.element.child("playerDeviceMask").is_some()
+    }
 }
 
 /// All plugin instances of a composition for the devices the servers reported: first the
-/// handlers' (in handler, then device order), then the plugins named outright. Ids are made
-/// unique by appending the device address where a template is used more than once.
+/// handlers' (in handler, then device order), then the plugins named outright (bound to their
+/// devices where they name one that was reported), then the extensions'. Ids are made unique
+/// by numbering where a template is used more than once.
 pub fn instantiate(composition: &Composition, devices: &[FoundDevice]) -> Vec<PluginInstance> {
+    let mut instances = handler_instances(composition, devices);
+    instances.extend(
+        composition
+            .plugins
+            .iter()
+            .map(|plugin| bind_named(plugin, devices)),
+    );
+    instances.extend(extension_plugins(composition));
+    make_ids_unique(&mut instances);
+    instances
+}
+
+/// The handlers' instances alone (as for a server that answers late), ids made unique.
+pub fn instantiate_handlers(
+    composition: &Composition,
+    devices: &[FoundDevice],
+) -> Vec<PluginInstance> {
+    let mut instances = handler_instances(composition, devices);
+    make_ids_unique(&mut instances);
+    instances
+}
+
+fn handler_instances(composition: &Composition, devices: &[FoundDevice]) -> Vec<PluginInstance> {
     let mut instances = Vec::new();
     for handler in &composition.handlers {
         for device in devices.iter().filter(|d| handler.mask.matches(d)) {
             for template in &handler.templates {
                 instances.push(PluginInstance {
-                    element: bind_template(template, device),
+                    element: bind_to_device(template, device),
                     device: Some(device.clone()),
                 });
             }
         }
     }
-    for plugin in &composition.plugins {
-        instances.push(PluginInstance {
+    instances
+}
+
+/// A plugin named outright: bound to the first of `devices` that fits its
+/// `<playerDeviceMask>` (unset parts of the mask, the server's included, fit any), or left
+/// as it is written when it has no mask or nothing fits.
+pub fn bind_named(plugin: &Element, devices: &[FoundDevice]) -> PluginInstance {
+    let device = bound_mask(plugin).and_then(|mask| devices.iter().find(|d| mask.matches(d)));
+    match device {
+        Some(device) => PluginInstance {
+            element: bind_to_device(plugin, device),
+            device: Some(device.clone()),
+        },
+        None => PluginInstance {
             element: plugin.clone(),
             device: None,
-        });
+        },
     }
-    instances.extend(extension_plugins(composition));
-    make_ids_unique(&mut instances);
-    instances
 }
 
 /// One plugin per built-in extension in use, holding all of that extension's elements
@@ -90,9 +133,11 @@ pub fn is_extension_plugin(composition: &Composition, instance: &PluginInstance)
         .any(|e| extension_plugin(&e.parser) == Some(instance.library()))
 }
 
-/// A copy of `template` whose `<playerDeviceMask>` is the concrete address of `device`.
-fn bind_template(template: &Element, device: &FoundDevice) -> Element {
+/// A copy of `template` whose `<playerDeviceMask>` is the concrete address of `device`, and
+/// whose `<parentNode>` names the robot of that device.
+fn bind_to_device(template: &Element, device: &FoundDevice) -> Element {
     let mut plugin = template.clone();
+    bind_parent_node(&mut plugin, device);
     let address = device_address_element(
         device,
         template.child("playerDeviceMask").map(|m| m.pos.clone()),
@@ -140,8 +185,7 @@ fn make_ids_unique(instances: &mut [PluginInstance]) {
     }
 }
 
-/// The concrete device a plugin element's `<playerDeviceMask>` names, if it names one fully
-/// (interface and index; host and port default to the first server).
+/// The mask of a plugin element's `<playerDeviceMask>`, if it has one.
 pub fn bound_mask(element: &Element) -> Option<super::device_mask::DeviceMask> {
     element
         .child("playerDeviceMask")

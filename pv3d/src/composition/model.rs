@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use super::device_mask::DeviceMask;
 use super::error::{ConfigError, SourcePos};
 use super::include::load_with_includes;
+use super::parent_node::check_parent_node;
 use super::parsers::ParserRegistry;
 use super::xml_tree::Element;
 
@@ -251,5 +252,6 @@ fn checked_plugin(element: &Element) -> Result<Element, ConfigError> {
     if let Some(mask) = element.child("playerDeviceMask") {
         read_mask(mask)?;
     }
+    check_parent_node(element)?;
     Ok(element.clone())
 }

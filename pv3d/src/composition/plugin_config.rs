@@ -3,7 +3,8 @@
 
 use framework::config::{DeviceRef, Param, PluginConfig};
 
-use crate::composition::{Element, Node, PluginInstance, SourcePos};
+use super::relocate::plugin_folder;
+use super::{Element, Node, PluginInstance, SourcePos};
 
 /// The configuration a plugin is made from.
 pub fn config_from_instance(instance: &PluginInstance) -> PluginConfig {
@@ -33,12 +34,7 @@ pub fn config_from_instance(instance: &PluginInstance) -> PluginConfig {
         }),
         params,
         origin: element.pos.to_string(),
-        base_dir: element
-            .pos
-            .file
-            .parent()
-            .map(|p| p.to_path_buf())
-            .unwrap_or_default(),
+        base_dir: plugin_folder(element),
     }
 }
 
