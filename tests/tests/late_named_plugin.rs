@@ -5,7 +5,7 @@
 use std::time::Duration;
 
 use pv3d::composition::{Composition, ParserRegistry};
-use pv3d_integration_tests::{run_until, serve_on_port, unused_port, viewer_for};
+use tests::{run_until, serve_on_port, unused_port, viewer_for};
 
 #[test]
 fn a_named_plugin_waits_for_its_server_and_is_kept_meanwhile() {

@@ -4,10 +4,10 @@
 
 use std::time::Duration;
 
+use framework::scene::NodeId;
 use glam::Vec3;
 use pv3d::app::Viewer;
-use pv3d_integration_tests::{load, run_until, serve, sim_pose, viewer_for};
-use pv3d_plugins::scene::NodeId;
+use tests::{load, run_until, serve, sim_pose, viewer_for};
 
 /// How many robots stage-worlds/oneport.world serves on its one port.
 const ROBOTS: usize = 3;

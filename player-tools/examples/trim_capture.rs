@@ -3,7 +3,7 @@
 //! repository's `captures/` keeps a camera session as a few frames.
 //!
 //! ```text
-//! cargo run -p player-proto --example trim_capture -- --keep-data 2 IN.jsonl OUT.jsonl
+//! cargo run -p player-tools --example trim_capture -- --keep-data 2 IN.jsonl OUT.jsonl
 //! ```
 
 use std::path::PathBuf;
