@@ -266,7 +266,7 @@ fn many_robots_flow_while_one_is_unreachable() {
         robots.add("127.0.0.1", s.port(0), quick()).unwrap();
     }
     robots.add("127.0.0.1", dead_port, quick()).unwrap();
-    assert_eq!(robots.wait_connected(Duration::from_secs(5)), 3);
+    assert_eq!(robots.wait_for_handshakes(Duration::from_secs(5)), 3);
     let feeds: Vec<Feeder> = servers
         .iter()
         .map(|s| Feeder::start(s.publisher(), addr(s, "laser:0")))
