@@ -252,6 +252,15 @@ fn pull_mode_rounds_bring_the_newest_data() {
         "the replace rule left only the newest scan"
     );
     assert_eq!(client.laser(0).scan().unwrap().0.id, 19);
+    for id in 20..23 {
+        s.publisher().publish(addr(&s, "laser:0"), 1, scan(id), 0.0);
+        assert_eq!(client.pull().unwrap(), 1);
+    }
+    assert_eq!(
+        client.rejected(),
+        0,
+        "a data request's ACK is expected, not a reply to nothing"
+    );
 }
 
 #[test]

@@ -38,10 +38,11 @@ impl Robot {
         if let Err(end) = self.handshake(&mut link).await {
             return (end, false);
         }
-        self.set_state(ConnectionState::Connected);
+        // Logged before the state changes, so that whoever sees `Connected` finds it logged.
         if std::mem::take(&mut self.reconnecting) {
             tracing::info!(host = %self.host, port = self.port, "reconnected");
         }
+        self.set_state(ConnectionState::Connected);
         let mut serving = Serving {
             pending: PendingRequests::default(),
             pulls: Vec::new(),
