@@ -117,6 +117,18 @@ fn wait_for(what: &str, timeout: Duration, mut ok: impl FnMut() -> bool) {
     }
 }
 
+/// Waits on the client's state signal.
+fn wait_for_state(
+    client: &Client,
+    what: &str,
+    timeout: Duration,
+    done: impl FnMut(&ConnectionState) -> bool,
+) {
+    if client.wait_for_state(timeout, done).is_none() {
+        panic!("timed out waiting for {what}: {}", client.state());
+    }
+}
+
 fn quick() -> ClientOptions {
     ClientOptions {
         request_timeout: Duration::from_secs(2),
@@ -313,14 +325,17 @@ fn a_restarted_server_gets_its_subscriptions_back() {
     });
     drop(feed);
     drop(s);
-    wait_for("the client to notice", Duration::from_secs(3), || {
-        client.state() != ConnectionState::Connected
-    });
+    wait_for_state(
+        &client,
+        "the client to notice",
+        Duration::from_secs(3),
+        |s| *s != ConnectionState::Connected,
+    );
     let seq_before = client.laser(0).scan().unwrap().1.seq;
 
     let s = server(port, Arc::default());
-    wait_for("reconnection", Duration::from_secs(5), || {
-        client.state() == ConnectionState::Connected
+    wait_for_state(&client, "reconnection", Duration::from_secs(5), |s| {
+        *s == ConnectionState::Connected
     });
     let _feed = Feeder::start(s.publisher(), addr(&s, "laser:0"));
     wait_for(
@@ -353,12 +368,15 @@ fn runtime_data_mode_and_replace_rules_survive_a_server_restart() {
     assert_eq!(client.replace_rules(), vec![rule]);
 
     drop(s);
-    wait_for("the client to notice", Duration::from_secs(3), || {
-        client.state() != ConnectionState::Connected
-    });
+    wait_for_state(
+        &client,
+        "the client to notice",
+        Duration::from_secs(3),
+        |s| *s != ConnectionState::Connected,
+    );
     let s = server(port, Arc::default());
-    wait_for("reconnection", Duration::from_secs(5), || {
-        client.state() == ConnectionState::Connected
+    wait_for_state(&client, "reconnection", Duration::from_secs(5), |s| {
+        *s == ConnectionState::Connected
     });
     for id in 0..20 {
         s.publisher().publish(addr(&s, "laser:0"), 1, scan(id), 0.0);
