@@ -405,6 +405,40 @@ fn runtime_data_mode_and_replace_rules_survive_a_server_restart() {
 }
 
 #[test]
+fn what_is_asked_while_the_server_is_away_holds_once_it_comes() {
+    let port = {
+        let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+        l.local_addr().unwrap().port()
+    };
+    let client = Client::spawn("127.0.0.1", port, quick()).unwrap();
+    assert_eq!(client.replace_rules(), vec![ReplaceRule::newest_data()]);
+    let laser = client.addr(Interface::LASER, 0);
+    assert!(matches!(
+        client.subscribe_async(laser).wait(Duration::from_secs(5)),
+        Err(RequestError::Disconnected(_))
+    ));
+    assert!(matches!(
+        client.set_data_mode(DataMode::Pull),
+        Err(RequestError::Disconnected(_))
+    ));
+    assert_eq!(
+        client.data_mode(),
+        DataMode::Pull,
+        "remembered all the same"
+    );
+
+    let s = server(port, Arc::default());
+    wait_for_state(&client, "the server", Duration::from_secs(5), |s| {
+        *s == ConnectionState::Connected
+    });
+    for id in 0..5 {
+        s.publisher().publish(addr(&s, "laser:0"), 1, scan(id), 0.0);
+    }
+    assert_eq!(client.pull().unwrap(), 1, "PULL, newest only, subscribed");
+    assert_eq!(client.laser(0).scan().unwrap().0.id, 4);
+}
+
+#[test]
 fn a_quiet_server_is_not_taken_for_a_stalled_one() {
     let s = server(0, Arc::default());
     let options = ClientOptions {

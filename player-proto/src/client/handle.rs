@@ -10,6 +10,7 @@ use super::commands::Command;
 use super::options::ClientOptions;
 use super::published::{Board, ConnectionState, DeviceInfo, Snapshot};
 use super::robot_thread;
+use super::session_state::SessionState;
 use super::store::{DataStore, DeviceStats, Stamped};
 use super::{ConnectError, DataMode, ReplaceRule};
 use crate::wire::{Banner, DevAddr, Interface};
@@ -31,13 +32,18 @@ impl Client {
     pub fn spawn(host: &str, port: u16, options: ClientOptions) -> Result<Client, ConnectError> {
         let board = Arc::new(Board::new(Snapshot::new(options.data_mode)));
         let store = Arc::new(DataStore::default());
+        // Made here, so that its data mode and rules are published before this returns; from
+        // now on only the thread changes it.
+        let session = SessionState::new(&options, board.clone());
         let (commands, receiver) = unbounded_channel();
         let thread = {
             let (host, options) = (host.to_string(), options.clone());
             let (board, store) = (board.clone(), store.clone());
             std::thread::Builder::new()
                 .name(format!("player {host}:{port}"))
-                .spawn(move || robot_thread::run(host, port, options, board, store, receiver))
+                .spawn(move || {
+                    robot_thread::run(host, port, options, session, board, store, receiver)
+                })
                 .map_err(|e| ConnectError::Thread(e.to_string()))?
         };
         Ok(Client {

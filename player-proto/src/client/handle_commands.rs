@@ -7,7 +7,7 @@ use std::time::Duration;
 
 use super::commands::Command;
 use super::handle::Client;
-use super::requests::{PendingReply, RequestError, thread_ended};
+use super::requests::{PendingReply, ReplySender, RequestError, thread_ended};
 use super::{DataMode, ReplaceRule};
 use crate::interfaces::player::{self, Player};
 use crate::message::{Body, Message};
@@ -19,7 +19,7 @@ const STUCK_THREAD_MARGIN: Duration = Duration::from_secs(1);
 
 impl Client {
     /// Sends a command to the thread; the reply arrives later.
-    fn ask(&self, command: impl FnOnce(super::requests::ReplySender) -> Command) -> PendingReply {
+    fn ask(&self, command: impl FnOnce(ReplySender) -> Command) -> PendingReply {
         let (reply, receiver) = mpsc::channel();
         if self.commands.send(command(reply.clone())).is_err() {
             let _ = reply.send(Err(thread_ended()));

@@ -7,6 +7,7 @@ use tokio::net::tcp::{OwnedReadHalf, OwnedWriteHalf};
 use tokio::time::Instant;
 
 use super::published::DeviceInfo;
+use super::requests::granted;
 use super::robot_thread::{End, Robot};
 use super::session_state::{device_request, to_server};
 use crate::interfaces::player::{self, DriverInfo, Player};
@@ -128,7 +129,7 @@ impl Robot {
         for (interf, index) in self.session.subscriptions() {
             let open = device_request((interf, index), player::OPEN_MODE);
             let reply = self.call(link, open).await?;
-            if !super::requests::granted(&reply, player::OPEN_MODE) {
+            if !granted(&reply, player::OPEN_MODE) {
                 tracing::warn!(
                     port = self.port,
                     "could not resubscribe {interf}:{index} after reconnecting"

@@ -95,8 +95,12 @@ impl Awaiter {
 pub(crate) enum Resolved {
     /// Handed to its asker.
     Delivered,
-    /// Handed over, and it refused a subscription: the device is no longer subscribed.
-    SubscriptionRefused(Interface, u16),
+    /// Handed to a subscriber; the server granted the subscription or refused it, and the
+    /// newest such answer decides whether the device stays subscribed.
+    Subscription {
+        device: (Interface, u16),
+        granted: bool,
+    },
     /// Nothing was waiting for it.
     Orphan(Box<Message>),
 }
@@ -145,9 +149,10 @@ impl PendingRequests {
         };
         let pending = self.pending.remove(i).expect("index found above");
         let resolved = match &pending.awaiter {
-            Awaiter::Subscriber { device, .. } if !granted(&reply, player::OPEN_MODE) => {
-                Resolved::SubscriptionRefused(device.0, device.1)
-            }
+            Awaiter::Subscriber { device, .. } => Resolved::Subscription {
+                device: *device,
+                granted: granted(&reply, player::OPEN_MODE),
+            },
             _ => Resolved::Delivered,
         };
         pending.awaiter.send(match h.msg_type {

@@ -30,6 +30,7 @@ pub(crate) fn run(
     host: String,
     port: u16,
     options: ClientOptions,
+    session: SessionState,
     board: Arc<Board>,
     store: Arc<DataStore>,
     commands: UnboundedReceiver<Command>,
@@ -44,7 +45,6 @@ pub(crate) fn run(
             return;
         }
     };
-    let session = SessionState::new(&options, board.clone());
     let mut robot = Robot {
         host,
         port,

@@ -135,8 +135,9 @@ impl Robot {
             }
             MsgType::Ack | MsgType::Nack => match serving.pending.resolve(message) {
                 Resolved::Delivered => {}
-                Resolved::SubscriptionRefused(interf, index) => {
-                    self.session.drop_subscription(interf, index, &self.store);
+                Resolved::Subscription { device, granted } => {
+                    self.session
+                        .settle_subscription(device, granted, &self.store);
                 }
                 Resolved::Orphan(orphan) => {
                     self.reject(&format!("a reply to nothing: {}", orphan.header));

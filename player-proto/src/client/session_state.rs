@@ -80,10 +80,25 @@ impl SessionState {
         self.subscriptions.contains(&(interf, index))
     }
 
-    /// Ends a subscription the server refused.
-    pub fn drop_subscription(&mut self, interf: Interface, index: u16, store: &DataStore) {
-        self.subscriptions.remove(&(interf, index));
-        store.forget(interf, index);
+    /// Ends a subscription and forgets its data.
+    fn unsubscribe(&mut self, device: (Interface, u16), store: &DataStore) {
+        self.subscriptions.remove(&device);
+        store.forget(device.0, device.1);
+    }
+
+    /// The server answered a subscription: a refusal ends it (it would only be refused again
+    /// after every reconnect), a grant (re)establishes it.
+    pub fn settle_subscription(
+        &mut self,
+        device: (Interface, u16),
+        granted: bool,
+        store: &DataStore,
+    ) {
+        if granted {
+            self.subscriptions.insert(device);
+        } else {
+            self.unsubscribe(device, store);
+        }
     }
 
     /// Takes a command's change into the session and says what must go out. The change holds
@@ -103,7 +118,7 @@ impl SessionState {
                 }
             }
             Command::Unsubscribe { device, reply } => {
-                self.drop_subscription(device.0, device.1, store);
+                self.unsubscribe(device, store);
                 Outgoing::Request {
                     message: device_request(device, player::CLOSE_MODE),
                     awaiter: Awaiter::Caller(reply),
