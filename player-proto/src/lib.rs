@@ -4,6 +4,7 @@
 //!   the banner, and framing of a byte stream.
 //! * [`interfaces`] — one module per Player interface with its typed messages.
 //! * [`message`] — a header and a typed body; decoding dispatches on interface code.
+//! * [`delivery`] — data modes and replace rules, shared by [`client`] and [`server`].
 //!
 //! Decoding never panics and never allocates more than the bytes received justify; encoding
 //! writes into any [`bytes::BufMut`].
@@ -13,6 +14,7 @@ mod macros;
 
 pub mod capture;
 pub mod client;
+pub mod delivery;
 #[doc(hidden)]
 pub mod fuzz_input;
 pub mod interfaces;

@@ -318,3 +318,41 @@ fn a_server_that_stalls_after_connecting_is_detected_and_left() {
     assert!(connections.load(Ordering::SeqCst) >= 2);
     assert_eq!(client.state(), ConnectionState::Connected);
 }
+
+#[test]
+fn a_server_that_never_works_is_retried_ever_more_slowly() {
+    // Accepts, sends a valid banner, then garbage: every TCP connect succeeds, no session
+    // ever works. The wait between attempts must keep growing, not restart at every connect.
+    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = listener.local_addr().unwrap().port();
+    let connections = Arc::new(AtomicUsize::new(0));
+    let count = connections.clone();
+    std::thread::spawn(move || {
+        for mut stream in listener.incoming().flatten() {
+            count.fetch_add(1, Ordering::SeqCst);
+            let _ = stream.write_all(&Banner::new("3.1.1-dev").unwrap().to_bytes());
+            let _ = stream.write_all(&[0xde; 200]);
+        }
+    });
+    let options = ClientOptions {
+        backoff: Backoff {
+            initial: Duration::from_millis(20),
+            max: Duration::from_secs(60),
+            max_attempts: None,
+        },
+        ..quick()
+    };
+    let client = Client::spawn("127.0.0.1", port, options).unwrap();
+    let fourth = client.wait_for_state(
+        Duration::from_secs(10),
+        |s| matches!(s, ConnectionState::Reconnecting { attempt } if *attempt >= 4),
+    );
+    assert!(
+        fourth.is_some(),
+        "the attempt count should grow across accepted connections, but is {}",
+        client.state()
+    );
+    assert!(connections.load(Ordering::SeqCst) >= 4);
+    let why = client.last_disconnect().expect("the reason is kept");
+    assert!(why.contains("bad header"), "{why}");
+}

@@ -117,6 +117,18 @@ fn wait_for(what: &str, timeout: Duration, mut ok: impl FnMut() -> bool) {
     }
 }
 
+/// Waits on the client's state signal.
+fn wait_for_state(
+    client: &Client,
+    what: &str,
+    timeout: Duration,
+    done: impl FnMut(&ConnectionState) -> bool,
+) {
+    if client.wait_for_state(timeout, done).is_none() {
+        panic!("timed out waiting for {what}: {}", client.state());
+    }
+}
+
 fn quick() -> ClientOptions {
     ClientOptions {
         request_timeout: Duration::from_secs(2),
@@ -252,6 +264,15 @@ fn pull_mode_rounds_bring_the_newest_data() {
         "the replace rule left only the newest scan"
     );
     assert_eq!(client.laser(0).scan().unwrap().0.id, 19);
+    for id in 20..23 {
+        s.publisher().publish(addr(&s, "laser:0"), 1, scan(id), 0.0);
+        assert_eq!(client.pull().unwrap(), 1);
+    }
+    assert_eq!(
+        client.rejected(),
+        0,
+        "a data request's ACK is expected, not a reply to nothing"
+    );
 }
 
 #[test]
@@ -266,7 +287,7 @@ fn many_robots_flow_while_one_is_unreachable() {
         robots.add("127.0.0.1", s.port(0), quick()).unwrap();
     }
     robots.add("127.0.0.1", dead_port, quick()).unwrap();
-    assert_eq!(robots.wait_connected(Duration::from_secs(5)), 3);
+    assert_eq!(robots.wait_for_handshakes(Duration::from_secs(5)), 3);
     let feeds: Vec<Feeder> = servers
         .iter()
         .map(|s| Feeder::start(s.publisher(), addr(s, "laser:0")))
@@ -304,14 +325,17 @@ fn a_restarted_server_gets_its_subscriptions_back() {
     });
     drop(feed);
     drop(s);
-    wait_for("the client to notice", Duration::from_secs(3), || {
-        client.state() != ConnectionState::Connected
-    });
+    wait_for_state(
+        &client,
+        "the client to notice",
+        Duration::from_secs(3),
+        |s| *s != ConnectionState::Connected,
+    );
     let seq_before = client.laser(0).scan().unwrap().1.seq;
 
     let s = server(port, Arc::default());
-    wait_for("reconnection", Duration::from_secs(5), || {
-        client.state() == ConnectionState::Connected
+    wait_for_state(&client, "reconnection", Duration::from_secs(5), |s| {
+        *s == ConnectionState::Connected
     });
     let _feed = Feeder::start(s.publisher(), addr(&s, "laser:0"));
     wait_for(
@@ -344,12 +368,15 @@ fn runtime_data_mode_and_replace_rules_survive_a_server_restart() {
     assert_eq!(client.replace_rules(), vec![rule]);
 
     drop(s);
-    wait_for("the client to notice", Duration::from_secs(3), || {
-        client.state() != ConnectionState::Connected
-    });
+    wait_for_state(
+        &client,
+        "the client to notice",
+        Duration::from_secs(3),
+        |s| *s != ConnectionState::Connected,
+    );
     let s = server(port, Arc::default());
-    wait_for("reconnection", Duration::from_secs(5), || {
-        client.state() == ConnectionState::Connected
+    wait_for_state(&client, "reconnection", Duration::from_secs(5), |s| {
+        *s == ConnectionState::Connected
     });
     for id in 0..20 {
         s.publisher().publish(addr(&s, "laser:0"), 1, scan(id), 0.0);
@@ -375,6 +402,40 @@ fn runtime_data_mode_and_replace_rules_survive_a_server_restart() {
             .scan()
             .is_some_and(|(scan, _)| scan.id == 20)
     });
+}
+
+#[test]
+fn what_is_asked_while_the_server_is_away_holds_once_it_comes() {
+    let port = {
+        let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+        l.local_addr().unwrap().port()
+    };
+    let client = Client::spawn("127.0.0.1", port, quick()).unwrap();
+    assert_eq!(client.replace_rules(), vec![ReplaceRule::newest_data()]);
+    let laser = client.addr(Interface::LASER, 0);
+    assert!(matches!(
+        client.subscribe_async(laser).wait(Duration::from_secs(5)),
+        Err(RequestError::Disconnected(_))
+    ));
+    assert!(matches!(
+        client.set_data_mode(DataMode::Pull),
+        Err(RequestError::Disconnected(_))
+    ));
+    assert_eq!(
+        client.data_mode(),
+        DataMode::Pull,
+        "remembered all the same"
+    );
+
+    let s = server(port, Arc::default());
+    wait_for_state(&client, "the server", Duration::from_secs(5), |s| {
+        *s == ConnectionState::Connected
+    });
+    for id in 0..5 {
+        s.publisher().publish(addr(&s, "laser:0"), 1, scan(id), 0.0);
+    }
+    assert_eq!(client.pull().unwrap(), 1, "PULL, newest only, subscribed");
+    assert_eq!(client.laser(0).scan().unwrap().0.id, 4);
 }
 
 #[test]

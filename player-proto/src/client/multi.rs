@@ -1,11 +1,14 @@
 //! Many robots at once: one client (one thread) per server, none waiting for another.
 
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
 use super::{Client, ClientOptions, ConnectError, ConnectionState};
 
-/// A set of clients, one per (host, port).
+/// A set of clients, one per (host, port), each shareable with whatever uses its devices.
 #[derive(Default)]
 pub struct MultiClient {
-    clients: Vec<Client>,
+    clients: Vec<Arc<Client>>,
 }
 
 impl MultiClient {
@@ -21,28 +24,29 @@ impl MultiClient {
         port: u16,
         options: ClientOptions,
     ) -> Result<usize, ConnectError> {
-        if let Some(i) = self
-            .clients
-            .iter()
-            .position(|c| c.host() == host && c.port() == port)
-        {
+        if let Some(i) = self.position(host, port) {
             return Ok(i);
         }
-        self.clients.push(Client::spawn(host, port, options)?);
+        self.clients
+            .push(Arc::new(Client::spawn(host, port, options)?));
         Ok(self.clients.len() - 1)
     }
 
-    pub fn get(&self, index: usize) -> Option<&Client> {
+    fn position(&self, host: &str, port: u16) -> Option<usize> {
+        self.clients
+            .iter()
+            .position(|c| c.host() == host && c.port() == port)
+    }
+
+    pub fn get(&self, index: usize) -> Option<&Arc<Client>> {
         self.clients.get(index)
     }
 
-    pub fn find(&self, host: &str, port: u16) -> Option<&Client> {
-        self.clients
-            .iter()
-            .find(|c| c.host() == host && c.port() == port)
+    pub fn find(&self, host: &str, port: u16) -> Option<&Arc<Client>> {
+        self.position(host, port).map(|i| &self.clients[i])
     }
 
-    pub fn iter(&self) -> impl Iterator<Item = &Client> {
+    pub fn iter(&self) -> impl Iterator<Item = &Arc<Client>> {
         self.clients.iter()
     }
 
@@ -62,12 +66,13 @@ impl MultiClient {
             .count()
     }
 
-    /// Waits until every client has finished its first handshake or `timeout` passes; returns
-    /// how many are connected.
-    pub fn wait_connected(&self, timeout: std::time::Duration) -> usize {
-        let deadline = std::time::Instant::now() + timeout;
-        while self.connected() < self.clients.len() && std::time::Instant::now() < deadline {
-            std::thread::sleep(std::time::Duration::from_millis(5));
+    /// Waits until every client has finished its first handshake — done, or failed and
+    /// retrying — or `timeout` passes; returns how many are connected.
+    pub fn wait_for_handshakes(&self, timeout: Duration) -> usize {
+        let deadline = Instant::now() + timeout;
+        for client in &self.clients {
+            // One deadline for all: the waits overlap, so the whole takes the slowest's time.
+            client.wait_until(deadline, |s| *s != ConnectionState::Connecting);
         }
         self.connected()
     }

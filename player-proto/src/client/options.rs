@@ -4,16 +4,8 @@ use std::fmt;
 use std::sync::Arc;
 use std::time::Duration;
 
+use crate::delivery::DataMode;
 use crate::wire::DEFAULT_MAX_BODY;
-
-/// PUSH (data as soon as it is published) or PULL (data on request).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum DataMode {
-    /// The server default.
-    #[default]
-    Push,
-    Pull,
-}
 
 /// Retry timing after a server goes away: `initial`, doubling up to `max`.
 #[derive(Debug, Clone, Copy, PartialEq)]

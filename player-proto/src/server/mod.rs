@@ -35,9 +35,10 @@ mod state;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::sync::{Arc, Mutex};
 
+pub use crate::delivery::{DataMode, ReplaceAction, ReplaceRule};
 pub use device::{Device, Reply};
 pub use publisher::Publisher;
-pub use queue::{DataMode, OutQueue, QUEUE_LIMIT, ReplaceRule, RuleAction};
+pub use queue::{OutQueue, QUEUE_LIMIT};
 use state::{DeviceSlot, ServerState};
 
 use crate::wire::{Banner, DEFAULT_MAX_BODY, DevAddr};

@@ -6,6 +6,7 @@
 use std::collections::VecDeque;
 use std::sync::Arc;
 
+use crate::delivery::{DataMode, ReplaceAction, ReplaceRule, ReplaceRules};
 use crate::interfaces::common::U32Value;
 use crate::interfaces::player::{Player, REQ_DATA, SYNCH_OK, SYNCH_OVERFLOW};
 use crate::message::{Body, Message};
@@ -14,53 +15,11 @@ use crate::wire::{DevAddr, Interface, MsgType};
 /// `PLAYER_MSGQUEUE_DEFAULT_MAXLEN`.
 pub const QUEUE_LIMIT: usize = 1024;
 
-/// What a replace rule does with a matching message.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum RuleAction {
-    Accept,
-    /// Keep only the newest message of the same address, type and subtype.
-    Replace,
-    Ignore,
-}
-
-/// `PLAYER_PLAYER_REQ_ADD_REPLACE_RULE`: -1 in a filter matches anything.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ReplaceRule {
-    pub interf: i32,
-    pub index: i32,
-    pub msg_type: i32,
-    pub subtype: i32,
-    pub action: RuleAction,
-}
-
-impl ReplaceRule {
-    fn matches(&self, m: &Message) -> bool {
-        let h = &m.header;
-        let fits = |filter: i32, value: i64| filter == -1 || i64::from(filter) == value;
-        fits(self.interf, i64::from(h.addr.interf.0))
-            && fits(self.index, i64::from(h.addr.index))
-            && fits(self.msg_type, i64::from(h.msg_type.code()))
-            && fits(self.subtype, i64::from(h.subtype))
-    }
-
-    fn same_filters(&self, other: &ReplaceRule) -> bool {
-        (self.interf, self.index, self.msg_type, self.subtype)
-            == (other.interf, other.index, other.msg_type, other.subtype)
-    }
-}
-
-/// PUSH (the server default) or PULL.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DataMode {
-    Push,
-    Pull,
-}
-
 /// The outgoing queue of one connection.
 #[derive(Debug)]
 pub struct OutQueue {
     mode: DataMode,
-    rules: Vec<ReplaceRule>,
+    rules: ReplaceRules,
     queue: VecDeque<Arc<Message>>,
     /// Messages dropped since the last SYNCH.
     dropped: u32,
@@ -73,7 +32,7 @@ impl Default for OutQueue {
     fn default() -> Self {
         OutQueue {
             mode: DataMode::Push,
-            rules: Vec::new(),
+            rules: ReplaceRules::default(),
             queue: VecDeque::new(),
             dropped: 0,
             round_open: false,
@@ -93,10 +52,7 @@ impl OutQueue {
 
     /// Adds a rule; a rule with the same filters as an existing one only changes its action.
     pub fn add_rule(&mut self, rule: ReplaceRule) {
-        match self.rules.iter_mut().find(|r| r.same_filters(&rule)) {
-            Some(existing) => existing.action = rule.action,
-            None => self.rules.push(rule),
-        }
+        self.rules.add(rule);
     }
 
     pub fn len(&self) -> usize {
@@ -114,16 +70,11 @@ impl OutQueue {
     /// Queues a message for the client, applying the replace rules and the length limit.
     pub fn push(&mut self, message: Arc<Message>) {
         let kind = message.header.msg_type;
-        let action = self
-            .rules
-            .iter()
-            .find(|r| r.matches(&message))
-            .map(|r| r.action)
-            .unwrap_or(RuleAction::Accept);
+        let action = self.rules.action_for(&message.header);
         let droppable = matches!(kind, MsgType::Data | MsgType::Cmd);
         match action {
-            RuleAction::Ignore => {}
-            RuleAction::Replace => {
+            ReplaceAction::Ignore => {}
+            ReplaceAction::Replace => {
                 let h = message.header;
                 let same = self.queue.iter().rposition(|q| {
                     q.header.msg_type == h.msg_type
@@ -135,10 +86,10 @@ impl OutQueue {
                     None => self.queue.push_back(message),
                 }
             }
-            RuleAction::Accept if droppable && self.queue.len() >= QUEUE_LIMIT => {
+            ReplaceAction::Accept if droppable && self.queue.len() >= QUEUE_LIMIT => {
                 self.dropped = self.dropped.saturating_add(1);
             }
-            RuleAction::Accept => self.queue.push_back(message),
+            ReplaceAction::Accept => self.queue.push_back(message),
         }
     }
 
@@ -268,35 +219,27 @@ mod tests {
     fn replace_keeps_the_newest_and_ignore_drops() {
         let mut q = OutQueue::default();
         q.set_mode(DataMode::Pull);
-        q.add_rule(ReplaceRule {
-            interf: -1,
-            index: -1,
-            msg_type: 1,
-            subtype: -1,
-            action: RuleAction::Replace,
-        });
+        q.add_rule(ReplaceRule::newest_data());
         for _ in 0..5 {
             q.push(data(0, 1));
         }
         q.push(data(1, 1));
         assert_eq!(q.len(), 2, "one per device and subtype");
-        q.add_rule(ReplaceRule {
-            interf: 6,
-            index: 1,
-            msg_type: 1,
-            subtype: -1,
-            action: RuleAction::Ignore,
-        });
+        q.add_rule(ReplaceRule::device_data(
+            Interface::LASER,
+            1,
+            ReplaceAction::Ignore,
+        ));
         // The first matching rule decides: the wildcard REPLACE still wins for laser:1.
         q.push(data(1, 1));
         assert_eq!(q.len(), 2);
         let mut q = OutQueue::default();
         q.add_rule(ReplaceRule {
-            interf: 6,
-            index: -1,
-            msg_type: -1,
-            subtype: -1,
-            action: RuleAction::Ignore,
+            interf: Some(Interface::LASER),
+            index: None,
+            msg_type: None,
+            subtype: None,
+            action: ReplaceAction::Ignore,
         });
         q.push(data(0, 1));
         assert!(q.is_empty());

@@ -11,11 +11,11 @@ use tokio::net::TcpStream;
 use tokio::net::tcp::OwnedWriteHalf;
 
 use super::device::Reply;
-use super::queue::{DataMode, ReplaceRule, RuleAction, data_request_ack};
+use super::queue::data_request_ack;
 use super::state::{ServerState, SessionState};
+use crate::delivery::{DataMode, ReplaceRule};
 use crate::interfaces::player::{
-    self, CLOSE_MODE, DATAMODE_PULL, DATAMODE_PUSH, DevList, DeviceReq, DriverInfo, ERROR_MODE,
-    OPEN_MODE, Player,
+    self, CLOSE_MODE, DevList, DeviceReq, DriverInfo, ERROR_MODE, OPEN_MODE, Player,
 };
 use crate::message::{Body, Message};
 use crate::transport::{Incoming, MessageReader, write_message};
@@ -186,13 +186,8 @@ impl Handler<'_> {
             }
             (player::REQ_DEV, Body::Player(Player::Device(req))) => self.subscription(message, req),
             (player::REQ_DATAMODE, Body::Player(Player::DataMode(m))) => {
-                let mode = match m.mode {
-                    DATAMODE_PUSH => Some(DataMode::Push),
-                    DATAMODE_PULL => Some(DataMode::Pull),
-                    // Player ignores an unknown mode but still ACKs.
-                    _ => None,
-                };
-                if let Some(mode) = mode {
+                // Player ignores an unknown mode but still ACKs.
+                if let Some(mode) = DataMode::from_request(m) {
                     self.session.queue.lock().expect("queue").set_mode(mode);
                 }
                 self.reply(message, MsgType::Ack, Body::Empty);
@@ -207,19 +202,10 @@ impl Handler<'_> {
                 self.session.wake_writer.notify_one();
             }
             (player::REQ_ADD_REPLACE_RULE, Body::Player(Player::AddReplaceRule(r))) => {
-                let action = match r.replace {
-                    player::REPLACE_RULE_REPLACE => RuleAction::Replace,
-                    player::REPLACE_RULE_IGNORE => RuleAction::Ignore,
-                    _ => RuleAction::Accept,
-                };
-                let rule = ReplaceRule {
-                    interf: r.interf,
-                    index: r.index,
-                    msg_type: r.msg_type,
-                    subtype: r.subtype,
-                    action,
-                };
-                self.session.queue.lock().expect("queue").add_rule(rule);
+                // A rule no message can match changes nothing; Player ACKs it all the same.
+                if let Some(rule) = ReplaceRule::from_request(r) {
+                    self.session.queue.lock().expect("queue").add_rule(rule);
+                }
                 self.reply(message, MsgType::Ack, Body::Empty);
             }
             // A body where none belongs, or a request Player's TCP layer does not implement

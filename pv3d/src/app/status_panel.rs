@@ -66,7 +66,12 @@ impl StatusPanel {
             _ => Color32::from_rgb(230, 190, 80),
         };
         ui.colored_label(color, format!("{host}:{port}"));
-        ui.colored_label(color, state.to_string());
+        // Why it is not connected: a failed state says so itself; a reconnecting one does not.
+        let state_text = match (&state, client.last_disconnect()) {
+            (ConnectionState::Reconnecting { .. }, Some(why)) => format!("{state}: {why}"),
+            _ => state.to_string(),
+        };
+        ui.colored_label(color, state_text);
         let mut cells = Vec::new();
         for (_, _, addr) in used.iter().filter(|(h, p, _)| h == host && *p == port) {
             let count = client.stats(*addr).updates;

@@ -4,11 +4,11 @@
 
 use std::collections::HashMap;
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use framework::config::DeviceRef;
 use framework::device::DeviceAccess;
-use player_proto::client::{Client, ClientOptions, ConnectionState, Notifier};
+use player_proto::client::{Client, ClientOptions, ConnectionState, MultiClient, Notifier};
 
 use super::device_link::ClientDevice;
 use crate::composition::{ClientDecl, FoundDevice};
@@ -17,9 +17,10 @@ use crate::composition::{ClientDecl, FoundDevice};
 /// always answers); no answer, and the connection is dropped and re-established.
 const STALL_TIMEOUT: Duration = Duration::from_secs(3);
 
-/// Every Player server of a composition.
+/// Every Player server of a composition: player-proto's [`MultiClient`] (one client per
+/// server), with the viewer's options and the device links plugins share.
 pub struct RobotManager {
-    clients: Vec<(String, u16, Arc<Client>)>,
+    clients: MultiClient,
     links: std::sync::Mutex<HashMap<(String, u16, player_proto::DevAddr), Arc<ClientDevice>>>,
 }
 
@@ -27,23 +28,16 @@ impl RobotManager {
     /// Starts a client for each server (at once, in their own threads); `notifier` runs when
     /// any of them stored new data.
     pub fn start(servers: &[ClientDecl], notifier: Option<Notifier>) -> RobotManager {
-        let mut clients = Vec::new();
+        let mut clients = MultiClient::new();
         for server in servers {
-            if clients
-                .iter()
-                .any(|(h, p, _)| *h == server.host && *p == server.port)
-            {
-                continue;
-            }
             let options = ClientOptions {
                 notifier: notifier.clone(),
                 // A viewer must show a robot whose server hangs, not its last data forever.
                 stall_timeout: Some(STALL_TIMEOUT),
                 ..ClientOptions::default()
             };
-            match Client::spawn(&server.host, server.port, options) {
-                Ok(c) => clients.push((server.host.clone(), server.port, Arc::new(c))),
-                Err(e) => tracing::error!("{}: {e}", server.pos),
+            if let Err(e) = clients.add(&server.host, server.port, options) {
+                tracing::error!("{}: {e}", server.pos);
             }
         }
         RobotManager {
@@ -54,20 +48,14 @@ impl RobotManager {
 
     /// Waits until every server has answered its handshake or failed, at most `timeout`.
     pub fn wait_for_handshakes(&self, timeout: Duration) {
-        let deadline = Instant::now() + timeout;
-        while Instant::now() < deadline
-            && self
-                .clients
-                .iter()
-                .any(|(_, _, c)| c.state() == ConnectionState::Connecting)
-        {
-            std::thread::sleep(Duration::from_millis(10));
-        }
-        for (host, port, client) in &self.clients {
-            if client.state() != ConnectionState::Connected {
+        self.clients.wait_for_handshakes(timeout);
+        for client in self.clients.iter() {
+            let state = client.state();
+            if state != ConnectionState::Connected {
                 tracing::warn!(
-                    "{host}:{port} is {}; its devices appear when it answers",
-                    client.state()
+                    "{}:{} is {state}; its devices appear when it answers",
+                    client.host(),
+                    client.port()
                 );
             }
         }
@@ -77,10 +65,10 @@ impl RobotManager {
     pub fn devices(&self) -> Vec<FoundDevice> {
         self.clients
             .iter()
-            .flat_map(|(host, port, client)| {
+            .flat_map(|client| {
                 client.devices().into_iter().map(move |d| FoundDevice {
-                    host: host.clone(),
-                    port: *port,
+                    host: client.host().to_string(),
+                    port: client.port(),
                     addr: d.addr,
                     driver: d.driver,
                 })
@@ -90,18 +78,13 @@ impl RobotManager {
 
     /// The shared client of a server.
     pub fn client(&self, host: &str, port: u16) -> Option<&Arc<Client>> {
-        self.clients
-            .iter()
-            .find(|(h, p, _)| h == host && *p == port)
-            .map(|(_, _, c)| c)
+        self.clients.find(host, port)
     }
 
     pub fn clients(&self) -> impl Iterator<Item = (&str, u16, &Arc<Client>)> {
-        self.clients.iter().map(|(h, p, c)| (h.as_str(), *p, c))
+        self.clients.iter().map(|c| (c.host(), c.port(), c))
     }
 
-    /// Access to a plugin's device (subscribing on first use; shared by plugins of the same
-    /// device).
     /// The devices plugins use, by server.
     pub fn used_devices(&self) -> Vec<(String, u16, player_proto::DevAddr)> {
         let mut used: Vec<_> = self.links.lock().expect("links").keys().cloned().collect();
@@ -109,6 +92,8 @@ impl RobotManager {
         used
     }
 
+    /// Access to a plugin's device (subscribing on first use; shared by plugins of the same
+    /// device).
     pub fn device(&self, device: &DeviceRef) -> Option<Arc<dyn DeviceAccess>> {
         let client = self.client(&device.host, device.port)?.clone();
         let key = (device.host.clone(), device.port, device.addr);
