@@ -24,8 +24,10 @@ mod options;
 mod proxies;
 mod replace_rule;
 mod requests;
+mod responder;
 mod robot_thread;
 mod shared;
+mod typed;
 
 use std::sync::Arc;
 use std::sync::mpsc;
@@ -41,6 +43,7 @@ pub use proxies::{
 };
 pub use replace_rule::{ReplaceAction, ReplaceRule};
 pub use requests::RequestError;
+pub use responder::Responder;
 pub use shared::{ConnectionState, DeviceInfo, DeviceStats, Stamped};
 
 use crate::interfaces::player::{self, DataModeReq, DeviceReq, Player};
