@@ -66,7 +66,8 @@ mod tests {
         let geometry = LaserGeometry::default();
         let ack = Message::typed(addr, MsgType::Ack, Laser::Geometry(geometry.clone()));
         assert_eq!(Laser::REQ_GET_GEOM.reply_of(&ack), Ok(geometry));
-        let empty = Message::new(addr, MsgType::Ack, 1, Body::Empty);
+        let geometry = Laser::REQ_GET_GEOM.subtype();
+        let empty = Message::new(addr, MsgType::Ack, geometry, Body::Empty);
         assert!(Laser::REQ_GET_GEOM.reply_of(&empty).is_err());
         assert!(
             Laser::REQ_GET_CONFIG.reply_of(&ack).is_err(),
