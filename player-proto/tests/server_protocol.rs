@@ -388,14 +388,13 @@ fn garbage_closes_that_connection_and_no_other() {
     subscribe(&mut good, "laser:0", player::OPEN_MODE);
     let mut bad = RawClient::connect(f.server.port(0));
     // A header with message type 99.
-    let mut garbage = Message::new(
+    let devlist = Message::new(
         player_addr(),
         MsgType::Req,
         player::REQ_DEVLIST,
         Body::Empty,
-    )
-    .to_bytes()
-    .to_vec();
+    );
+    let mut garbage = devlist.to_bytes().to_vec();
     garbage[19] = 99;
     bad.send_raw(&garbage);
     assert!(
@@ -403,14 +402,7 @@ fn garbage_closes_that_connection_and_no_other() {
         "the server closed the bad connection"
     );
     let mut liar = RawClient::connect(f.server.port(0));
-    let mut lying = Message::new(
-        player_addr(),
-        MsgType::Req,
-        player::REQ_DEVLIST,
-        Body::Empty,
-    )
-    .to_bytes()
-    .to_vec();
+    let mut lying = devlist.to_bytes().to_vec();
     lying[36..40].copy_from_slice(&[0xff; 4]);
     liar.send_raw(&lying);
     assert!(
