@@ -13,7 +13,7 @@ use player_proto::client::{Client, ClientOptions, Notifier};
 use crate::BenchError;
 use crate::clock::{BenchClock, SharedWindow};
 use crate::recorder::Recorder;
-use crate::traffic::{DATA_SUBTYPE, DEVICES};
+use crate::traffic::{DEVICES, PUBLISHED};
 
 /// The first 15 bytes of a robot thread's name ("player 127.0.0.1:PORT"), as /proc shows it.
 pub const THREAD_NAME_PREFIX: &str = "player 127.0.0.";
@@ -130,8 +130,8 @@ fn on_stored(watch: &Watch, clock: BenchClock) {
         return;
     };
     let mut state = watch.state.lock().expect("watch state");
-    for (i, interf) in DEVICES.iter().enumerate() {
-        if let Some(stamped) = client.latest(client.addr(*interf, 0), DATA_SUBTYPE)
+    for (i, kind) in PUBLISHED.iter().enumerate() {
+        if let Some(stamped) = client.latest(client.addr(kind.interf, 0), kind.subtype)
             && stamped.seq != state.last_seq[i]
         {
             state.last_seq[i] = stamped.seq;

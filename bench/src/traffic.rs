@@ -14,6 +14,7 @@ use std::thread::JoinHandle;
 use std::time::Duration;
 
 use player_proto::interfaces::common::Pose2d;
+use player_proto::interfaces::kind::MessageKind;
 use player_proto::interfaces::laser::{Laser, LaserScan};
 use player_proto::interfaces::position2d::{Position2d, Position2dData};
 use player_proto::message::{Body, Message};
@@ -23,11 +24,11 @@ use player_proto::wire::{DevAddr, Interface, Opaque};
 use crate::BenchError;
 use crate::clock::{BenchClock, SharedWindow};
 
-/// Data subtype of a laser scan and of position2d state (both 1 in Player).
-pub const DATA_SUBTYPE: u8 = 1;
+/// What each of a robot's two devices publishes: position2d state and a laser scan.
+pub const PUBLISHED: [MessageKind; 2] = [Position2d::DATA_STATE.kind(), Laser::DATA_SCAN.kind()];
 
 /// The two devices every robot has.
-pub const DEVICES: [Interface; 2] = [Interface::POSITION2D, Interface::LASER];
+pub const DEVICES: [Interface; 2] = [PUBLISHED[0].interf, PUBLISHED[1].interf];
 
 /// What each robot publishes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -113,15 +114,15 @@ impl Traffic {
                             continue;
                         }
                         let port = ports[(event % ports.len() as u64) as usize];
-                        for (interf, body) in DEVICES.iter().zip(&bodies) {
+                        for (kind, body) in PUBLISHED.iter().zip(&bodies) {
                             let addr = DevAddr {
                                 host: 0,
                                 robot: u32::from(port),
-                                interf: *interf,
+                                interf: kind.interf,
                                 index: 0,
                             };
                             let sent = clock.now();
-                            if publisher.publish(addr, DATA_SUBTYPE, body.clone(), sent) > 0
+                            if publisher.publish(addr, kind.subtype, body.clone(), sent) > 0
                                 && window.contains(sent)
                             {
                                 published.fetch_add(1, Ordering::Relaxed);

@@ -24,5 +24,5 @@ pub mod testing;
 
 pub use action::{Action, ObjectRef};
 pub use config::{ConfigValueError, Param, PluginConfig};
-pub use device::{DeviceAccess, LinkState, Sample};
+pub use device::{Awaited, DeviceAccess, LastTaken};
 pub use plugin::{Handled, InputEvent, Plugin, PluginContext, PluginRegistry};

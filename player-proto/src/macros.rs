@@ -58,15 +58,70 @@ macro_rules! xdr_struct {
 ///
 /// ```ignore
 /// interface_messages! {
-///     pub enum Laser {
-///         Data 1 => Scan(LaserScan),
-///         Request 1 => Geometry(LaserGeometry),
+///     pub enum Laser for LASER {
+///         Data 1 as DATA_SCAN => Scan(LaserScan),
+///         Request 1 as REQ_GET_GEOM => Geometry(LaserGeometry),
 ///     }
 /// }
 /// ```
 /// A request's ACK (and a NACK that has a body) is encoded with the request's own structure,
 /// so one `Request` entry covers REQ, ACK and NACK; the header tells them apart.
+///
+/// With `for CODE` each row also names its subtype (`as DATA_SCAN`, Player's name without the
+/// `PLAYER_<INTERFACE>_` prefix): the macro then generates a typed
+/// [`BodyKind`](crate::interfaces::kind::BodyKind) constant per row (`Laser::DATA_SCAN`), the
+/// interface's [`InterfaceMessages`](crate::interfaces::kind::InterfaceMessages) list, and
+/// [`DataBody`](crate::interfaces::kind::DataBody) for every DATA body. The enum's name must
+/// be its [`Body`](crate::message::Body) variant's. Without `for` (the universal requests,
+/// valid on every interface) only the enum and its codec are made.
 macro_rules! interface_messages {
+    (
+        $(#[$meta:meta])*
+        pub enum $name:ident for $code:ident {
+            $( $(#[$variant_meta:meta])* $class:ident $subtype:literal as $konst:ident => $variant:ident($ty:ty), )*
+        }
+    ) => {
+        interface_messages! {
+            $(#[$meta])*
+            pub enum $name {
+                $( $(#[$variant_meta])* $class $subtype => $variant($ty), )*
+            }
+        }
+
+        impl $name {
+            $(
+                #[doc = concat!("`PLAYER_", stringify!($code), "_", stringify!($konst), "`: ", stringify!($class), " subtype ", stringify!($subtype), ", body [`", stringify!($ty), "`].")]
+                pub const $konst: $crate::interfaces::kind::BodyKind<$ty> = {
+                    fn peek(body: &$crate::message::Body) -> Option<&$ty> {
+                        match body {
+                            $crate::message::Body::$name($name::$variant(value)) => Some(value),
+                            _ => None,
+                        }
+                    }
+                    fn wrap(value: $ty) -> $crate::message::Body {
+                        $crate::message::Body::$name($name::$variant(value))
+                    }
+                    $crate::interfaces::kind::BodyKind::new(
+                        $crate::interfaces::kind::MessageKind {
+                            interf: $crate::wire::Interface::$code,
+                            class: $crate::wire::MessageClass::$class,
+                            subtype: $subtype,
+                        },
+                        peek,
+                        wrap,
+                    )
+                };
+            )*
+        }
+
+        impl $crate::interfaces::kind::InterfaceMessages for $name {
+            const INTERFACE: $crate::wire::Interface = $crate::wire::Interface::$code;
+            const KINDS: &'static [$crate::interfaces::kind::MessageKind] =
+                &[ $( $name::$konst.kind(), )* ];
+        }
+
+        $( data_body!($class, $name, $konst, $ty); )*
+    };
     (
         $(#[$meta:meta])*
         pub enum $name:ident {
@@ -114,4 +169,15 @@ macro_rules! interface_messages {
             }
         }
     };
+}
+
+/// `DataBody` for a DATA row of an interface table; nothing for the other classes, whose
+/// structures are shared between rows (a get and a set request).
+macro_rules! data_body {
+    (Data, $name:ident, $konst:ident, $ty:ty) => {
+        impl $crate::interfaces::kind::DataBody for $ty {
+            const KIND: $crate::interfaces::kind::BodyKind<$ty> = $name::$konst;
+        }
+    };
+    ($class:ident, $name:ident, $konst:ident, $ty:ty) => {};
 }

@@ -83,6 +83,20 @@ macro_rules! bodies {
             }
         }
 
+        impl interfaces::kind::MessageKind {
+            /// Every message an interface's table defines, in table order (none for an
+            /// interface this crate does not decode).
+            pub fn all_of(interf: Interface) -> &'static [interfaces::kind::MessageKind] {
+                use interfaces::kind::InterfaceMessages;
+                $(
+                    if interf == Interface::$code {
+                        return <$ty>::KINDS;
+                    }
+                )*
+                &[]
+            }
+        }
+
         $(
             impl From<$ty> for Body {
                 fn from(v: $ty) -> Body {

@@ -223,7 +223,7 @@ fn typed_requests_commands_nacks_and_timeouts() {
     assert!(started.elapsed() < Duration::from_secs(2));
     // Several requests in flight at once, each matched to its reply.
     let pending: Vec<_> = (0..8)
-        .map(|_| client.request_async(client.addr(Interface::LASER, 0), 1, Body::Empty))
+        .map(|_| client.fetch_async(client.addr(Interface::LASER, 0), Laser::REQ_GET_GEOM))
         .collect();
     for p in pending {
         assert!(matches!(

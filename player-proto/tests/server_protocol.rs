@@ -335,7 +335,8 @@ fn commands_and_requests_reach_devices() {
         MsgType::Cmd,
         Position2d::Velocity(vel),
     ));
-    let geom = c.request(DevAddr::local(Interface::LASER, 0), 1, Body::Empty);
+    let geometry = Laser::REQ_GET_GEOM.subtype();
+    let geom = c.request(DevAddr::local(Interface::LASER, 0), geometry, Body::Empty);
     assert_eq!(geom.header.msg_type, MsgType::Ack);
     assert_eq!(
         geom.header.addr.robot,
@@ -345,7 +346,7 @@ fn commands_and_requests_reach_devices() {
     assert!(matches!(geom.body, Body::Laser(Laser::Geometry(_))));
     let nack = c.request(
         DevAddr::local(Interface::LASER, 0),
-        4,
+        Laser::REQ_POWER.subtype(),
         Body::Laser(Laser::Power(player_proto::interfaces::laser::LaserPower {
             state: 1,
         })),
@@ -387,9 +388,13 @@ fn garbage_closes_that_connection_and_no_other() {
     subscribe(&mut good, "laser:0", player::OPEN_MODE);
     let mut bad = RawClient::connect(f.server.port(0));
     // A header with message type 99.
-    let mut garbage = Message::new(player_addr(), MsgType::Req, 1, Body::Empty)
-        .to_bytes()
-        .to_vec();
+    let devlist = Message::new(
+        player_addr(),
+        MsgType::Req,
+        player::REQ_DEVLIST,
+        Body::Empty,
+    );
+    let mut garbage = devlist.to_bytes().to_vec();
     garbage[19] = 99;
     bad.send_raw(&garbage);
     assert!(
@@ -397,9 +402,7 @@ fn garbage_closes_that_connection_and_no_other() {
         "the server closed the bad connection"
     );
     let mut liar = RawClient::connect(f.server.port(0));
-    let mut lying = Message::new(player_addr(), MsgType::Req, 1, Body::Empty)
-        .to_bytes()
-        .to_vec();
+    let mut lying = devlist.to_bytes().to_vec();
     lying[36..40].copy_from_slice(&[0xff; 4]);
     liar.send_raw(&lying);
     assert!(

@@ -8,6 +8,7 @@ use player_proto::interfaces::common::{BBox2d, BBox3d, Pose2d, Pose3d};
 use player_proto::interfaces::fiducial::{
     Fiducial, FiducialData, FiducialFov, FiducialGeometry, FiducialItem,
 };
+use player_proto::interfaces::kind::BodyKind;
 use player_proto::interfaces::laser::{Laser, LaserConfig, LaserGeometry, LaserScan};
 use player_proto::interfaces::position2d::{Position2d, Position2dData, Position2dGeometry};
 use player_proto::interfaces::ranger::{
@@ -43,6 +44,16 @@ fn laser_sensor(ranger: &RangerSpec) -> &SensorSpec {
     &ranger.sensors[0]
 }
 
+/// Whether `request` is a request of `kind` (its interface, class and subtype).
+fn asks<T>(request: &Message, kind: BodyKind<T>) -> bool {
+    kind.kind().matches(&request.header)
+}
+
+/// A data message of `kind`, as [`SimDevice::data`] lists them.
+fn data_of<T>(kind: BodyKind<T>, value: T) -> (u8, Body) {
+    (kind.subtype(), kind.to_body(value))
+}
+
 /// A ranger's configuration, with the beam spacing the readings really have.
 fn ranger_config(ranger: &RangerSpec) -> RangerConfig {
     let s = laser_sensor(ranger);
@@ -61,28 +72,32 @@ fn ranger_config(ranger: &RangerSpec) -> RangerConfig {
 impl SimDevice {
     fn answer(&self, request: &Message) -> Reply {
         let mut sim = self.sim.lock().expect("simulation");
-        let subtype = request.header.subtype;
         match self.served.source {
             Source::Position { robot } => {
                 let spec = &sim.world.robots[robot];
-                match subtype {
-                    1 => Reply::Ack(Body::Position2d(Position2d::Geometry(Position2dGeometry {
+                if asks(request, Position2d::REQ_GET_GEOM) {
+                    Reply::Ack(Body::Position2d(Position2d::Geometry(Position2dGeometry {
                         pose: Pose3d::default(),
                         size: BBox3d {
                             sl: spec.size[0],
                             sw: spec.size[1],
                             sh: spec.size[2],
                         },
-                    }))),
-                    // Motor power, velocity and position modes: accepted, nothing to change.
-                    2..=4 => Reply::Ack(Body::Empty),
-                    _ => Reply::Nack,
+                    })))
+                } else if asks(request, Position2d::REQ_MOTOR_POWER)
+                    || asks(request, Position2d::REQ_VELOCITY_MODE)
+                    || asks(request, Position2d::REQ_POSITION_MODE)
+                {
+                    // Accepted, nothing to change.
+                    Reply::Ack(Body::Empty)
+                } else {
+                    Reply::Nack
                 }
             }
             Source::Ranger { robot, ranger } => {
                 let spec = &sim.world.robots[robot].rangers[ranger];
-                match subtype {
-                    1 => Reply::Ack(Body::Ranger(Ranger::Geometry(RangerGeometry {
+                if asks(request, Ranger::REQ_GET_GEOM) {
+                    Reply::Ack(Body::Ranger(Ranger::Geometry(RangerGeometry {
                         pose: pose3(spec.pose, 0.0),
                         size: BBox3d {
                             sw: 0.15,
@@ -91,24 +106,27 @@ impl SimDevice {
                         },
                         element_poses: spec.sensors.iter().map(|s| pose3(s.pose, 0.0)).collect(),
                         element_sizes: spec.sensors.iter().map(|_| BBox3d::default()).collect(),
-                    }))),
-                    5 => Reply::Ack(Body::Ranger(Ranger::Config(ranger_config(spec)))),
-                    _ => Reply::Nack,
+                    })))
+                } else if asks(request, Ranger::REQ_GET_CONFIG) {
+                    Reply::Ack(Body::Ranger(Ranger::Config(ranger_config(spec))))
+                } else {
+                    Reply::Nack
                 }
             }
             Source::Laser { robot, ranger } => {
                 let spec = &sim.world.robots[robot].rangers[ranger];
                 let c = ranger_config(spec);
-                match subtype {
-                    1 => Reply::Ack(Body::Laser(Laser::Geometry(LaserGeometry {
+                if asks(request, Laser::REQ_GET_GEOM) {
+                    Reply::Ack(Body::Laser(Laser::Geometry(LaserGeometry {
                         pose: pose3(spec.pose, 0.0),
                         size: BBox3d {
                             sw: 0.15,
                             sl: 0.15,
                             sh: 0.1,
                         },
-                    }))),
-                    3 => Reply::Ack(Body::Laser(Laser::Config(LaserConfig {
+                    })))
+                } else if asks(request, Laser::REQ_GET_CONFIG) {
+                    Reply::Ack(Body::Laser(Laser::Config(LaserConfig {
                         min_angle: c.min_angle as f32,
                         max_angle: c.max_angle as f32,
                         resolution: c.angular_res as f32,
@@ -116,29 +134,29 @@ impl SimDevice {
                         range_res: c.range_res as f32,
                         intensity: 0,
                         scanning_frequency: c.frequency as f32,
-                    }))),
-                    _ => Reply::Nack,
+                    })))
+                } else {
+                    Reply::Nack
                 }
             }
             Source::Sonar { robot, ranger } => {
                 let spec = &sim.world.robots[robot].rangers[ranger];
-                match subtype {
-                    1 => {
-                        let on_robot = |s: &SensorSpec| crate::sim::on_robot(spec.pose, s.pose);
-                        let poses = spec
-                            .sensors
-                            .iter()
-                            .map(|s| pose3(on_robot(s), 0.0))
-                            .collect();
-                        Reply::Ack(Body::Sonar(Sonar::Geometry(SonarGeometry { poses })))
-                    }
-                    _ => Reply::Nack,
+                if asks(request, Sonar::REQ_GET_GEOM) {
+                    let on_robot = |s: &SensorSpec| crate::sim::on_robot(spec.pose, s.pose);
+                    let poses = spec
+                        .sensors
+                        .iter()
+                        .map(|s| pose3(on_robot(s), 0.0))
+                        .collect();
+                    Reply::Ack(Body::Sonar(Sonar::Geometry(SonarGeometry { poses })))
+                } else {
+                    Reply::Nack
                 }
             }
             Source::Fiducial { robot, finder } => {
                 let spec = &sim.world.robots[robot].fiducials[finder];
-                match subtype {
-                    1 => Reply::Ack(Body::Fiducial(Fiducial::Geometry(FiducialGeometry {
+                if asks(request, Fiducial::REQ_GET_GEOM) {
+                    Reply::Ack(Body::Fiducial(Fiducial::Geometry(FiducialGeometry {
                         pose: pose3(spec.pose, 0.0),
                         size: BBox3d {
                             sw: 0.05,
@@ -146,25 +164,29 @@ impl SimDevice {
                             sh: 0.05,
                         },
                         fiducial_size: BBox2d { sw: 0.4, sl: 0.4 },
-                    }))),
-                    2 => Reply::Ack(Body::Fiducial(Fiducial::Fov(FiducialFov {
+                    })))
+                } else if asks(request, Fiducial::REQ_GET_FOV) {
+                    Reply::Ack(Body::Fiducial(Fiducial::Fov(FiducialFov {
                         min_range: spec.min_range as f32,
                         max_range: spec.max_range as f32,
                         view_angle: spec.fov as f32,
-                    }))),
-                    _ => Reply::Nack,
+                    })))
+                } else {
+                    Reply::Nack
                 }
             }
             Source::Camera {
                 robot,
                 camera,
                 jpeg_quality,
-            } => match subtype {
-                player_proto::interfaces::camera::REQ_GET_IMAGE => Reply::Ack(Body::Camera(
-                    Camera::Image(camera_data(&sim, robot, camera, jpeg_quality)),
-                )),
-                _ => Reply::Nack,
-            },
+            } => {
+                if asks(request, Camera::REQ_GET_IMAGE) {
+                    let frame = camera_data(&sim, robot, camera, jpeg_quality);
+                    Reply::Ack(Body::Camera(Camera::Image(frame)))
+                } else {
+                    Reply::Nack
+                }
+            }
             Source::Simulation => match &request.body {
                 Body::Simulation(SimMsg::Pose2d(asked)) => {
                     let name = asked.name.as_str();
@@ -217,14 +239,12 @@ impl SimDevice {
             Source::Position { robot } => {
                 let r = &sim.robots[robot];
                 let (vx, vy, va) = r.velocity;
-                (
-                    1,
-                    Body::Position2d(Position2d::State(Position2dData {
-                        pos: Pose2d::new(r.pose.x, r.pose.y, r.pose.a),
-                        vel: Pose2d::new(vx, vy, va),
-                        stall: u8::from(r.stall),
-                    })),
-                )
+                let state = Position2dData {
+                    pos: Pose2d::new(r.pose.x, r.pose.y, r.pose.a),
+                    vel: Pose2d::new(vx, vy, va),
+                    stall: u8::from(r.stall),
+                };
+                data_of(Position2d::DATA_STATE, state)
             }
             Source::Ranger { robot, ranger } => {
                 let spec = &sim.world.robots[robot].rangers[ranger];
@@ -233,11 +253,8 @@ impl SimDevice {
                     intensities,
                 } = ranger_returns(sim, robot, spec);
                 return vec![
-                    (1, Body::Ranger(Ranger::Ranges(RangerRanges { ranges }))),
-                    (
-                        3,
-                        Body::Ranger(Ranger::Intensities(RangerIntensities { intensities })),
-                    ),
+                    data_of(Ranger::DATA_RANGE, RangerRanges { ranges }),
+                    data_of(Ranger::DATA_INTNS, RangerIntensities { intensities }),
                 ];
             }
             Source::Laser { robot, ranger } => {
@@ -251,33 +268,31 @@ impl SimDevice {
                     .iter()
                     .map(|&v| v.clamp(0.0, 255.0) as u8)
                     .collect();
-                (
-                    1,
-                    Body::Laser(Laser::Scan(LaserScan {
-                        min_angle: c.min_angle as f32,
-                        max_angle: c.max_angle as f32,
-                        resolution: c.angular_res as f32,
-                        max_range: c.max_range as f32,
-                        ranges,
-                        intensity: intensity.into(),
-                        id: scan_id,
-                    })),
-                )
+                let scan = LaserScan {
+                    min_angle: c.min_angle as f32,
+                    max_angle: c.max_angle as f32,
+                    resolution: c.angular_res as f32,
+                    max_range: c.max_range as f32,
+                    ranges,
+                    intensity: intensity.into(),
+                    id: scan_id,
+                };
+                data_of(Laser::DATA_SCAN, scan)
             }
             Source::Sonar { robot, ranger } => {
                 let ranges = ranger_scan(sim, robot, &sim.world.robots[robot].rangers[ranger])
                     .into_iter()
                     .map(|r| r as f32)
                     .collect();
-                (1, Body::Sonar(Sonar::Ranges(SonarData { ranges })))
+                data_of(Sonar::DATA_RANGES, SonarData { ranges })
             }
             Source::Camera {
                 robot,
                 camera,
                 jpeg_quality,
-            } => (
-                1,
-                Body::Camera(Camera::State(camera_data(sim, robot, camera, jpeg_quality))),
+            } => data_of(
+                Camera::DATA_STATE,
+                camera_data(sim, robot, camera, jpeg_quality),
             ),
             Source::Fiducial { robot, finder } => {
                 let hits = fiducials(sim, robot, &sim.world.robots[robot].fiducials[finder]);
@@ -294,10 +309,7 @@ impl SimDevice {
                         upose: Pose3d::default(),
                     })
                     .collect();
-                (
-                    1,
-                    Body::Fiducial(Fiducial::Scan(FiducialData { fiducials: items })),
-                )
+                data_of(Fiducial::DATA_SCAN, FiducialData { fiducials: items })
             }
         }]
     }

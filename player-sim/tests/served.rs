@@ -6,7 +6,6 @@ use std::time::{Duration, Instant};
 use player_proto::client::{Client, ClientOptions};
 use player_proto::interfaces::common::Pose2d;
 use player_proto::interfaces::simulation::{Simulation as SimMsg, SimulationPose2d};
-use player_proto::message::Body;
 use player_proto::wire::{Interface, PlayerString};
 use player_sim::serve::{Running, ServeOptions, serve};
 use player_sim::served::from_cfg;
@@ -61,7 +60,8 @@ fn a_commanded_robot_moves_one_metre_in_two_simulated_seconds() {
     });
     base.set_velocity(0.0, 0.0, 0.0);
     let travelled = later.pos.px - moving.pos.px;
-    let elapsed = client.latest(base.addr(), 1).unwrap().server_time - moved_at.server_time;
+    let (_, newest) = base.state().unwrap();
+    let elapsed = newest.server_time - moved_at.server_time;
     assert!(
         (travelled - 0.5 * elapsed).abs() < 0.06,
         "{travelled} m in {elapsed} s"
@@ -84,10 +84,10 @@ fn the_laser_sees_the_wall_and_the_simulation_moves_models() {
         pose: Pose2d::new(2.7, 0.0, 0.0),
     };
     client
-        .request(
+        .request_with(
             client.addr(Interface::SIMULATION, 0),
-            2,
-            Body::Simulation(SimMsg::SetPose2d(set)),
+            SimMsg::REQ_SET_POSE2D,
+            set,
         )
         .unwrap();
     let laser = client.laser(0);
@@ -108,15 +108,13 @@ fn the_laser_sees_the_wall_and_the_simulation_moves_models() {
         pose: Pose2d::default(),
     };
     let reply = client
-        .request(
+        .request_with(
             client.addr(Interface::SIMULATION, 0),
-            1,
-            Body::Simulation(SimMsg::Pose2d(ask)),
+            SimMsg::REQ_GET_POSE2D,
+            ask,
         )
         .unwrap();
-    let Body::Simulation(SimMsg::Pose2d(p)) = reply.body else {
-        panic!()
-    };
+    let p = SimMsg::REQ_GET_POSE2D.reply_of(&reply).unwrap();
     assert!((p.pose.px - 2.7).abs() < 0.2);
     let nobody = SimulationPose2d {
         name: PlayerString::new("nobody"),
@@ -124,10 +122,10 @@ fn the_laser_sees_the_wall_and_the_simulation_moves_models() {
     };
     assert!(
         client
-            .request(
+            .request_with(
                 client.addr(Interface::SIMULATION, 0),
-                1,
-                Body::Simulation(SimMsg::Pose2d(nobody))
+                SimMsg::REQ_GET_POSE2D,
+                nobody,
             )
             .is_err()
     );
@@ -203,10 +201,10 @@ fn a_laser_reads_the_distance_to_a_wall_drawn_with_blocks() {
         pose: Pose2d::new(-2.0, 0.0, std::f64::consts::FRAC_PI_2),
     };
     client
-        .request(
+        .request_with(
             client.addr(Interface::SIMULATION, 0),
-            2,
-            Body::Simulation(SimMsg::SetPose2d(set)),
+            SimMsg::REQ_SET_POSE2D,
+            set,
         )
         .unwrap();
     wait_for("a scan of the partition", Duration::from_secs(3), || {

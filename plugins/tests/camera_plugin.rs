@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 
 use framework::PluginConfig;
 use framework::config::DeviceRef;
-use framework::device::Sample;
+use framework::device::Stamped;
 use player_proto::interfaces::camera::{
     COMPRESS_JPEG, COMPRESS_RAW, Camera, CameraData, FORMAT_MONO8, FORMAT_RGB888,
 };
@@ -34,10 +34,11 @@ fn rgb_frame(width: u32, height: u32, fill: [u8; 3]) -> CameraData {
     }
 }
 
-fn sample(frame: CameraData, seq: u64, received: Instant) -> Sample {
-    Sample {
+fn sample(frame: CameraData, seq: u64, received: Instant) -> Stamped {
+    Stamped {
         message: Arc::new(Message::typed(addr(), MsgType::Data, Camera::State(frame))),
         received,
+        server_time: 0.0,
         seq,
     }
 }

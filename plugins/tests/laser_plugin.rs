@@ -2,8 +2,6 @@
 
 mod support;
 
-use std::sync::Arc;
-
 use framework::PluginConfig;
 use framework::config::{DeviceRef, Param};
 use framework::device::RecordingDevice;
@@ -49,14 +47,14 @@ fn scans_become_points_below_the_robot_at_the_geometry_pose() {
         size: BBox3d::default(),
     };
     let addr: DevAddr = "laser:0".parse().unwrap();
-    device.replies.lock().unwrap().push((
-        1,
-        Ok(Arc::new(Message::typed(
+    device.reply_to(
+        Laser::REQ_GET_GEOM.kind(),
+        Ok(Message::typed(
             addr,
             MsgType::Ack,
             Laser::Geometry(geometry),
-        ))),
-    ));
+        )),
+    );
 
     let mut h = Harness {
         device,

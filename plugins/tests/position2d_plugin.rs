@@ -10,7 +10,7 @@ use framework::PluginConfig;
 use framework::action::ObjectRef;
 use framework::config::DeviceRef;
 use framework::config::Param;
-use framework::device::{LinkState, RecordingDevice};
+use framework::device::{ConnectionState, RecordingDevice};
 use framework::plugin::{AnchorKey, InputEvent, Plugin};
 use framework::scene::Object3D;
 use framework::scene::Scene;
@@ -185,11 +185,11 @@ fn arriving_stops_and_a_lost_connection_sends_nothing() {
         &InputEvent::GroundClicked(Vec3::new(5.0, 0.0, 0.0)),
         &mut w.ctx(),
     );
-    *w.device.state.lock().unwrap() = Some(LinkState::Reconnecting { attempt: 1 });
+    *w.device.state.lock().unwrap() = Some(ConnectionState::Reconnecting { attempt: 1 });
     let before = velocities(&w.device).len();
     w.now += Duration::from_millis(200);
     plugin.update(&mut w.ctx());
-    *w.device.state.lock().unwrap() = Some(LinkState::Connected);
+    *w.device.state.lock().unwrap() = Some(ConnectionState::Connected);
     w.now += Duration::from_millis(200);
     plugin.update(&mut w.ctx());
     assert_eq!(

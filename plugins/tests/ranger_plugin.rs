@@ -3,8 +3,6 @@
 
 mod support;
 
-use std::sync::Arc;
-
 use framework::PluginConfig;
 use framework::config::{DeviceRef, Param};
 use framework::device::RecordingDevice;
@@ -12,6 +10,7 @@ use framework::plugin::Plugin;
 use framework::scene::{NodeId, Scene};
 use glam::Vec3;
 use player_proto::interfaces::common::{BBox3d, Pose3d};
+use player_proto::interfaces::kind::MessageKind;
 use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry, RangerRanges};
 use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
@@ -43,10 +42,9 @@ fn ranger_config(params: Vec<Param>) -> PluginConfig {
 }
 
 fn answer(device: &RecordingDevice, geometry: RangerGeometry, config: RangerConfig) {
-    let ack = |body: Ranger| Ok(Arc::new(Message::typed(addr(), MsgType::Ack, body)));
-    let mut replies = device.replies.lock().unwrap();
-    replies.push((1, ack(Ranger::Geometry(geometry))));
-    replies.push((5, ack(Ranger::Config(config))));
+    let ack = |body: Ranger| Ok(Message::typed(addr(), MsgType::Ack, body));
+    device.reply_to(Ranger::REQ_GET_GEOM.kind(), ack(Ranger::Geometry(geometry)));
+    device.reply_to(Ranger::REQ_GET_CONFIG.kind(), ack(Ranger::Config(config)));
 }
 
 fn push_ranges(device: &RecordingDevice, ranges: Vec<f64>) {
@@ -73,7 +71,7 @@ fn run(
     let mut plugin = h
         .make(ranger_config(params))
         .unwrap_or_else(|e| panic!("{e}"));
-    let asked: Vec<u8> = h
+    let asked: Vec<MessageKind> = h
         .device
         .requests
         .lock()
@@ -81,7 +79,11 @@ fn run(
         .iter()
         .map(|r| r.0)
         .collect();
-    assert_eq!(asked, vec![1, 5], "geometry and config asked for");
+    assert_eq!(
+        asked,
+        [Ranger::REQ_GET_GEOM.kind(), Ranger::REQ_GET_CONFIG.kind()],
+        "geometry and config asked for"
+    );
     feed(&h.device);
     assert!(plugin.update(&mut h.ctx()));
     assert!(!plugin.update(&mut h.ctx()), "nothing new, nothing redrawn");
@@ -207,7 +209,8 @@ fn readings_before_the_config_wait_for_it() {
         ..RangerConfig::default()
     };
     let reply = Message::typed(addr(), MsgType::Ack, Ranger::Config(config));
-    assert_eq!(h.device.answer_later(5, Ok(Arc::new(reply))), 1);
+    let config_kind = Ranger::REQ_GET_CONFIG.kind();
+    assert_eq!(h.device.answer_later(config_kind, Ok(reply)), 1);
     assert!(plugin.update(&mut h.ctx()));
     assert_eq!(h.scene.get(node).unwrap().geometry.points.len(), 181);
 }

@@ -5,7 +5,6 @@
 mod support;
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 
 use framework::PluginConfig;
 use framework::config::{DeviceRef, Param};
@@ -163,14 +162,14 @@ fn a_laser_wears_its_skin_at_the_size_its_geometry_reports() {
         },
     };
     let addr: DevAddr = "laser:0".parse().unwrap();
-    w.device.replies.lock().unwrap().push((
-        1,
-        Ok(Arc::new(Message::typed(
+    w.device.reply_to(
+        Laser::REQ_GET_GEOM.kind(),
+        Ok(Message::typed(
             addr,
             MsgType::Ack,
             Laser::Geometry(geometry),
-        ))),
-    ));
+        )),
+    );
     let mut laser = w
         .make(config("libpv3d_laser", "laser", &dir, "scanner.obj"))
         .unwrap();

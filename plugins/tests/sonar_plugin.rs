@@ -3,16 +3,14 @@
 
 mod support;
 
-use std::sync::Arc;
-
 use framework::PluginConfig;
 use framework::config::{DeviceRef, Param};
-use framework::device::{RecordingDevice, RequestFailure};
+use framework::device::{RecordingDevice, RequestError};
 use framework::plugin::Plugin;
 use glam::Vec3;
 use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::sonar::{Sonar, SonarData, SonarGeometry};
-use player_proto::message::Message;
+use player_proto::message::{Body, Message};
 use player_proto::{DevAddr, MsgType};
 use plugins::sonar::cones::ARC_SEGMENTS;
 use plugins::standard_plugins;
@@ -63,14 +61,14 @@ fn one_cone_per_transducer_at_its_pose_as_long_as_its_reading() {
             ..Pose3d::default()
         },
     ];
-    device.replies.lock().unwrap().push((
-        1,
-        Ok(Arc::new(Message::typed(
+    device.reply_to(
+        Sonar::REQ_GET_GEOM.kind(),
+        Ok(Message::typed(
             addr(),
             MsgType::Ack,
             Sonar::Geometry(SonarGeometry { poses }),
-        ))),
-    ));
+        )),
+    );
     let mut h = Harness {
         device,
         ..harness()
@@ -80,7 +78,7 @@ fn one_cone_per_transducer_at_its_pose_as_long_as_its_reading() {
     let device = &h.device;
     assert_eq!(
         device.requests.lock().unwrap()[0].0,
-        1,
+        Sonar::REQ_GET_GEOM.kind(),
         "geometry asked for"
     );
 
@@ -117,11 +115,12 @@ fn one_cone_per_transducer_at_its_pose_as_long_as_its_reading() {
 #[test]
 fn without_geometry_the_transducers_are_drawn_on_a_ring_and_state_is_saved() {
     let device = RecordingDevice::default();
-    device
-        .replies
-        .lock()
-        .unwrap()
-        .push((1, Err(RequestFailure::Nack)));
+    let geometry = Sonar::REQ_GET_GEOM.subtype();
+    let refused = Message::new(addr(), MsgType::Nack, geometry, Body::Empty);
+    device.reply_to(
+        Sonar::REQ_GET_GEOM.kind(),
+        Err(RequestError::Nack(Box::new(refused))),
+    );
     let mut h = Harness {
         device,
         ..harness()

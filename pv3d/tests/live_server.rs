@@ -20,7 +20,8 @@ impl Device for Geometry {
         self.1
     }
     fn on_request(&mut self, request: &Message) -> Reply {
-        if request.header.subtype == 1 {
+        // Answers the request whose reply this body is (each device's geometry request).
+        if self.0.kind().map(|(_, subtype)| subtype) == Some(request.header.subtype) {
             Reply::Ack(self.0.clone())
         } else {
             Reply::Nack

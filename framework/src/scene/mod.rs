@@ -6,6 +6,7 @@
 
 mod geometry;
 pub mod polygon;
+pub mod pose;
 
 use std::collections::BTreeMap;
 

@@ -29,10 +29,12 @@ mod options;
 mod proxies;
 mod published;
 mod requests;
+mod responder;
 mod robot_thread;
 mod serve;
 mod session_state;
 mod store;
+mod typed;
 
 pub use crate::delivery::{DataMode, ReplaceAction, ReplaceRule};
 pub use handle::Client;
@@ -43,6 +45,7 @@ pub use proxies::{
 };
 pub use published::{ConnectionState, DeviceInfo};
 pub use requests::{PendingReply, RequestError};
+pub use responder::Responder;
 pub use store::{DeviceStats, Stamped};
 
 /// Why a client could not connect.

@@ -3,23 +3,18 @@
 use super::{Client, RequestError, Stamped};
 use crate::interfaces::camera::{Camera, CameraData};
 use crate::interfaces::common::Pose2d;
-use crate::interfaces::fiducial::{self, Fiducial, FiducialData, FiducialGeometry};
-use crate::interfaces::laser::{self, Laser, LaserConfig, LaserGeometry, LaserScan};
+use crate::interfaces::fiducial::{Fiducial, FiducialData, FiducialGeometry};
+use crate::interfaces::kind::{BodyKind, DataBody};
+use crate::interfaces::laser::{Laser, LaserConfig, LaserGeometry, LaserScan};
 use crate::interfaces::position2d::{
-    self, Position2d, Position2dCmdPos, Position2dCmdVel, Position2dData, Position2dGeometry,
+    Position2d, Position2dCmdPos, Position2dCmdVel, Position2dData, Position2dGeometry,
     Position2dPower,
 };
 use crate::interfaces::ranger::{
-    self, Ranger, RangerConfig, RangerGeometry, RangerIntensities, RangerRanges,
+    Ranger, RangerConfig, RangerGeometry, RangerIntensities, RangerRanges,
 };
-use crate::interfaces::sonar::{self, Sonar, SonarData, SonarGeometry};
-use crate::message::{Body, Message};
+use crate::interfaces::sonar::{Sonar, SonarData, SonarGeometry};
 use crate::wire::{DevAddr, Interface};
-
-/// A reply whose body is not the structure the request promises.
-fn unexpected(reply: &Message) -> RequestError {
-    RequestError::Nack(Box::new(reply.clone()))
-}
 
 macro_rules! proxy {
     ($(#[$meta:meta])* $name:ident, $interface:ident, $method:ident) => {
@@ -50,12 +45,12 @@ macro_rules! proxy {
                 self.client.unsubscribe(self.addr)
             }
 
-            fn ask(&self, subtype: u8, body: Body) -> Result<Message, RequestError> {
-                self.client.request(self.addr, subtype, body)
+            fn fetch<T: Clone>(&self, kind: BodyKind<T>) -> Result<T, RequestError> {
+                self.client.fetch(self.addr, kind)
             }
 
-            fn newest(&self, subtype: u8) -> Option<Stamped> {
-                self.client.latest(self.addr, subtype)
+            fn newest<T: DataBody>(&self) -> Option<(T, Stamped)> {
+                self.client.latest_of::<T>(self.addr)
             }
         }
     };
@@ -88,28 +83,16 @@ proxy!(
 
 impl LaserProxy<'_> {
     pub fn geometry(&self) -> Result<LaserGeometry, RequestError> {
-        let reply = self.ask(laser::REQ_GET_GEOM, Body::Empty)?;
-        match reply.body {
-            Body::Laser(Laser::Geometry(g)) => Ok(g),
-            _ => Err(unexpected(&reply)),
-        }
+        self.fetch(Laser::REQ_GET_GEOM)
     }
 
     pub fn config(&self) -> Result<LaserConfig, RequestError> {
-        let reply = self.ask(laser::REQ_GET_CONFIG, Body::Empty)?;
-        match reply.body {
-            Body::Laser(Laser::Config(c)) => Ok(c),
-            _ => Err(unexpected(&reply)),
-        }
+        self.fetch(Laser::REQ_GET_CONFIG)
     }
 
     /// The newest scan and when it arrived.
     pub fn scan(&self) -> Option<(LaserScan, Stamped)> {
-        let s = self.newest(1)?;
-        match &s.message.body {
-            Body::Laser(Laser::Scan(scan)) => Some((scan.clone(), s)),
-            _ => None,
-        }
+        self.newest()
     }
 }
 
@@ -134,118 +117,72 @@ impl Position2dProxy<'_> {
     }
 
     pub fn set_motor_power(&self, on: bool) -> Result<(), RequestError> {
-        let body = Body::Position2d(Position2d::MotorPower(Position2dPower {
+        let power = Position2dPower {
             state: u8::from(on),
-        }));
-        self.ask(2, body).map(|_| ())
+        };
+        self.client
+            .request_with(self.addr, Position2d::REQ_MOTOR_POWER, power)
+            .map(|_| ())
     }
 
     pub fn geometry(&self) -> Result<Position2dGeometry, RequestError> {
-        let reply = self.ask(position2d::REQ_GET_GEOM, Body::Empty)?;
-        match reply.body {
-            Body::Position2d(Position2d::Geometry(g)) => Ok(g),
-            _ => Err(unexpected(&reply)),
-        }
+        self.fetch(Position2d::REQ_GET_GEOM)
     }
 
     /// The newest odometry.
     pub fn state(&self) -> Option<(Position2dData, Stamped)> {
-        let s = self.newest(1)?;
-        match &s.message.body {
-            Body::Position2d(Position2d::State(d)) => Some((*d, s)),
-            _ => None,
-        }
+        self.newest()
     }
 }
 
 impl SonarProxy<'_> {
     pub fn geometry(&self) -> Result<SonarGeometry, RequestError> {
-        let reply = self.ask(sonar::REQ_GET_GEOM, Body::Empty)?;
-        match reply.body {
-            Body::Sonar(Sonar::Geometry(g)) => Ok(g),
-            _ => Err(unexpected(&reply)),
-        }
+        self.fetch(Sonar::REQ_GET_GEOM)
     }
 
     pub fn ranges(&self) -> Option<(SonarData, Stamped)> {
-        let s = self.newest(1)?;
-        match &s.message.body {
-            Body::Sonar(Sonar::Ranges(d)) => Some((d.clone(), s)),
-            _ => None,
-        }
+        self.newest()
     }
 }
 
 impl RangerProxy<'_> {
     pub fn geometry(&self) -> Result<RangerGeometry, RequestError> {
-        let reply = self.ask(ranger::REQ_GET_GEOM, Body::Empty)?;
-        match reply.body {
-            Body::Ranger(Ranger::Geometry(g)) => Ok(g),
-            _ => Err(unexpected(&reply)),
-        }
+        self.fetch(Ranger::REQ_GET_GEOM)
     }
 
     pub fn config(&self) -> Result<RangerConfig, RequestError> {
-        let reply = self.ask(ranger::REQ_GET_CONFIG, Body::Empty)?;
-        match reply.body {
-            Body::Ranger(Ranger::Config(c)) => Ok(c),
-            _ => Err(unexpected(&reply)),
-        }
+        self.fetch(Ranger::REQ_GET_CONFIG)
     }
 
     pub fn ranges(&self) -> Option<(RangerRanges, Stamped)> {
-        let s = self.newest(1)?;
-        match &s.message.body {
-            Body::Ranger(Ranger::Ranges(d)) => Some((d.clone(), s)),
-            _ => None,
-        }
+        self.newest()
     }
 
     /// The newest intensities (`PLAYER_RANGER_DATA_INTNS`), which Stage sends after each
     /// RANGE message.
     pub fn intensities(&self) -> Option<(RangerIntensities, Stamped)> {
-        let s = self.newest(3)?;
-        match &s.message.body {
-            Body::Ranger(Ranger::Intensities(d)) => Some((d.clone(), s)),
-            _ => None,
-        }
+        self.newest()
     }
 }
 
 impl FiducialProxy<'_> {
     pub fn geometry(&self) -> Result<FiducialGeometry, RequestError> {
-        let reply = self.ask(fiducial::REQ_GET_GEOM, Body::Empty)?;
-        match reply.body {
-            Body::Fiducial(Fiducial::Geometry(g)) => Ok(g),
-            _ => Err(unexpected(&reply)),
-        }
+        self.fetch(Fiducial::REQ_GET_GEOM)
     }
 
     pub fn markers(&self) -> Option<(FiducialData, Stamped)> {
-        let s = self.newest(1)?;
-        match &s.message.body {
-            Body::Fiducial(Fiducial::Scan(d)) => Some((d.clone(), s)),
-            _ => None,
-        }
+        self.newest()
     }
 }
 
 impl CameraProxy<'_> {
     /// Asks for one frame (GET_IMAGE), for cameras that do not stream.
     pub fn request_image(&self) -> Result<CameraData, RequestError> {
-        let reply = self.ask(crate::interfaces::camera::REQ_GET_IMAGE, Body::Empty)?;
-        match reply.body {
-            Body::Camera(Camera::Image(d)) => Ok(d),
-            _ => Err(unexpected(&reply)),
-        }
+        self.fetch(Camera::REQ_GET_IMAGE)
     }
 
     /// The newest frame (pixels shared with the receive buffer, not copied).
     pub fn frame(&self) -> Option<(CameraData, Stamped)> {
-        let s = self.newest(1)?;
-        match &s.message.body {
-            Body::Camera(Camera::State(d)) => Some((d.clone(), s)),
-            _ => None,
-        }
+        self.newest()
     }
 }

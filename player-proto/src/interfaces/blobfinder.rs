@@ -56,10 +56,10 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `blobfinder` interface.
-    pub enum Blobfinder {
-        Data 1 => Blobs(BlobfinderData),
-        Request 1 => SetColor(BlobfinderColor),
-        Request 2 => SetImagerParams(BlobfinderImager),
-        Request 3 => Color(BlobfinderColor),
+    pub enum Blobfinder for BLOBFINDER {
+        Data 1 as DATA_BLOBS => Blobs(BlobfinderData),
+        Request 1 as REQ_SET_COLOR => SetColor(BlobfinderColor),
+        Request 2 as REQ_SET_IMAGER_PARAMS => SetImagerParams(BlobfinderImager),
+        Request 3 as REQ_GET_COLOR => Color(BlobfinderColor),
     }
 }

@@ -31,9 +31,9 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `bumper` interface.
-    pub enum Bumper {
-        Data 1 => State(BumperData),
-        Data 2 => GeometryData(BumperGeometry),
-        Request 1 => Geometry(BumperGeometry),
+    pub enum Bumper for BUMPER {
+        Data 1 as DATA_STATE => State(BumperData),
+        Data 2 as DATA_GEOM => GeometryData(BumperGeometry),
+        Request 1 as REQ_GET_GEOM => Geometry(BumperGeometry),
     }
 }

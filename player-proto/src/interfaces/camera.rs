@@ -42,10 +42,10 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `camera` interface.
-    pub enum Camera {
-        Data 1 => State(CameraData),
-        Request 1 => Source(CameraSource),
-        Request 2 => SetSource(CameraSource),
-        Request 3 => Image(CameraData),
+    pub enum Camera for CAMERA {
+        Data 1 as DATA_STATE => State(CameraData),
+        Request 1 as REQ_GET_SOURCE => Source(CameraSource),
+        Request 2 as REQ_SET_SOURCE => SetSource(CameraSource),
+        Request 3 as REQ_GET_IMAGE => Image(CameraData),
     }
 }

@@ -57,13 +57,13 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `fiducial` interface (request subtypes 4–6 are unused by Player).
-    pub enum Fiducial {
-        Data 1 => Scan(FiducialData),
-        Request 1 => Geometry(FiducialGeometry),
-        Request 2 => Fov(FiducialFov),
-        Request 3 => SetFov(FiducialFov),
-        Request 7 => Id(FiducialId),
-        Request 8 => SetId(FiducialId),
+    pub enum Fiducial for FIDUCIAL {
+        Data 1 as DATA_SCAN => Scan(FiducialData),
+        Request 1 as REQ_GET_GEOM => Geometry(FiducialGeometry),
+        Request 2 as REQ_GET_FOV => Fov(FiducialFov),
+        Request 3 as REQ_SET_FOV => SetFov(FiducialFov),
+        Request 7 as REQ_GET_ID => Id(FiducialId),
+        Request 8 as REQ_SET_ID => SetId(FiducialId),
     }
 }
 

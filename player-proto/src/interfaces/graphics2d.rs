@@ -26,10 +26,10 @@ xdr_struct! {
 
 interface_messages! {
     /// Commands of the `graphics2d` interface.
-    pub enum Graphics2d {
-        Command 2 => Points(Graphics2dPoints),
-        Command 3 => Polyline(Graphics2dPoints),
-        Command 4 => Polygon(Graphics2dPolygon),
-        Command 5 => Multiline(Graphics2dPoints),
+    pub enum Graphics2d for GRAPHICS2D {
+        Command 2 as CMD_POINTS => Points(Graphics2dPoints),
+        Command 3 as CMD_POLYLINE => Polyline(Graphics2dPoints),
+        Command 4 as CMD_POLYGON => Polygon(Graphics2dPolygon),
+        Command 5 as CMD_MULTILINE => Multiline(Graphics2dPoints),
     }
 }

@@ -51,9 +51,9 @@ xdr_struct! {
 
 interface_messages! {
     /// Commands of the `graphics3d` interface.
-    pub enum Graphics3d {
-        Command 2 => Draw(Graphics3dDraw),
-        Command 3 => Translate(Graphics3dTranslate),
-        Command 4 => Rotate(Graphics3dRotate),
+    pub enum Graphics3d for GRAPHICS3D {
+        Command 2 as CMD_DRAW => Draw(Graphics3dDraw),
+        Command 3 as CMD_TRANSLATE => Translate(Graphics3dTranslate),
+        Command 4 as CMD_ROTATE => Rotate(Graphics3dRotate),
     }
 }

@@ -41,8 +41,8 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `gripper` interface.
-    pub enum Gripper {
-        Data 1 => State(GripperData),
-        Request 1 => Geometry(GripperGeometry),
+    pub enum Gripper for GRIPPER {
+        Data 1 as DATA_STATE => State(GripperData),
+        Request 1 as REQ_GET_GEOM => Geometry(GripperGeometry),
     }
 }

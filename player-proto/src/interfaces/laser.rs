@@ -106,16 +106,16 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `laser` interface.
-    pub enum Laser {
-        Data 1 => Scan(LaserScan),
-        Data 2 => ScanPose(LaserScanPose),
-        Data 3 => ScanAngle(LaserScanAngle),
-        Request 1 => Geometry(LaserGeometry),
-        Request 2 => SetConfig(LaserConfig),
-        Request 3 => Config(LaserConfig),
-        Request 4 => Power(LaserPower),
-        Request 5 => Id(LaserId),
-        Request 6 => SetFilter(LaserFilter),
+    pub enum Laser for LASER {
+        Data 1 as DATA_SCAN => Scan(LaserScan),
+        Data 2 as DATA_SCANPOSE => ScanPose(LaserScanPose),
+        Data 3 as DATA_SCANANGLE => ScanAngle(LaserScanAngle),
+        Request 1 as REQ_GET_GEOM => Geometry(LaserGeometry),
+        Request 2 as REQ_SET_CONFIG => SetConfig(LaserConfig),
+        Request 3 as REQ_GET_CONFIG => Config(LaserConfig),
+        Request 4 as REQ_POWER => Power(LaserPower),
+        Request 5 as REQ_GET_ID => Id(LaserId),
+        Request 6 as REQ_SET_FILTER => SetFilter(LaserFilter),
     }
 }
 

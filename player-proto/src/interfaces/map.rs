@@ -173,11 +173,11 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `map` interface.
-    pub enum Map {
-        Data 1 => InfoData(MapInfo),
-        Request 1 => Info(MapInfo),
-        Request 2 => Tile(MapData),
-        Request 3 => Vector(MapVector),
+    pub enum Map for MAP {
+        Data 1 as DATA_INFO => InfoData(MapInfo),
+        Request 1 as REQ_GET_INFO => Info(MapInfo),
+        Request 2 as REQ_GET_DATA => Tile(MapData),
+        Request 3 as REQ_GET_VECTOR => Vector(MapVector),
     }
 }
 

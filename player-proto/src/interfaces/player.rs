@@ -106,14 +106,14 @@ xdr_struct! {
 interface_messages! {
     /// Messages of the `player` interface. The data request (subtype 4) and SYNCH/OK have no
     /// body and so no variant: they travel as `Body::Empty`.
-    pub enum Player {
-        Request 1 => DevList(DevList),
-        Request 2 => DriverInfo(DriverInfo),
-        Request 3 => Device(DeviceReq),
-        Request 5 => DataMode(DataModeReq),
-        Request 7 => Auth(AuthReq),
-        Request 8 => NameService(NameServiceReq),
-        Request 10 => AddReplaceRule(AddReplaceRuleReq),
-        Synch 2 => SynchOverflow(U32Value),
+    pub enum Player for PLAYER {
+        Request 1 as REQ_DEVLIST => DevList(DevList),
+        Request 2 as REQ_DRIVERINFO => DriverInfo(DriverInfo),
+        Request 3 as REQ_DEV => Device(DeviceReq),
+        Request 5 as REQ_DATAMODE => DataMode(DataModeReq),
+        Request 7 as REQ_AUTH => Auth(AuthReq),
+        Request 8 as REQ_NAMESERVICE => NameService(NameServiceReq),
+        Request 10 as REQ_ADD_REPLACE_RULE => AddReplaceRule(AddReplaceRuleReq),
+        Synch 2 as SYNCH_OVERFLOW => SynchOverflow(U32Value),
     }
 }

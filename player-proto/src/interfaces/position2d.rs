@@ -121,20 +121,20 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `position2d` interface. RESET_ODOM (request 6) has no body.
-    pub enum Position2d {
-        Data 1 => State(Position2dData),
-        Data 2 => GeometryData(Position2dGeometry),
-        Command 1 => Velocity(Position2dCmdVel),
-        Command 2 => Position(Position2dCmdPos),
-        Command 3 => Car(Position2dCmdCar),
-        Command 4 => VelocityHeading(Position2dCmdVelHead),
-        Request 1 => Geometry(Position2dGeometry),
-        Request 2 => MotorPower(Position2dPower),
-        Request 3 => VelocityMode(Position2dVelocityMode),
-        Request 4 => PositionMode(Position2dPositionMode),
-        Request 5 => SetOdometry(Position2dSetOdom),
-        Request 7 => SpeedPid(Position2dPid),
-        Request 8 => PositionPid(Position2dPid),
-        Request 9 => SpeedProfile(Position2dSpeedProfile),
+    pub enum Position2d for POSITION2D {
+        Data 1 as DATA_STATE => State(Position2dData),
+        Data 2 as DATA_GEOM => GeometryData(Position2dGeometry),
+        Command 1 as CMD_VEL => Velocity(Position2dCmdVel),
+        Command 2 as CMD_POS => Position(Position2dCmdPos),
+        Command 3 as CMD_CAR => Car(Position2dCmdCar),
+        Command 4 as CMD_VEL_HEAD => VelocityHeading(Position2dCmdVelHead),
+        Request 1 as REQ_GET_GEOM => Geometry(Position2dGeometry),
+        Request 2 as REQ_MOTOR_POWER => MotorPower(Position2dPower),
+        Request 3 as REQ_VELOCITY_MODE => VelocityMode(Position2dVelocityMode),
+        Request 4 as REQ_POSITION_MODE => PositionMode(Position2dPositionMode),
+        Request 5 as REQ_SET_ODOM => SetOdometry(Position2dSetOdom),
+        Request 7 as REQ_SPEED_PID => SpeedPid(Position2dPid),
+        Request 8 as REQ_POSITION_PID => PositionPid(Position2dPid),
+        Request 9 as REQ_SPEED_PROF => SpeedProfile(Position2dSpeedProfile),
     }
 }

@@ -32,8 +32,8 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `power` interface.
-    pub enum Power {
-        Data 1 => State(PowerData),
-        Request 1 => SetChargingPolicy(PowerChargePolicy),
+    pub enum Power for POWER {
+        Data 1 as DATA_STATE => State(PowerData),
+        Request 1 as REQ_SET_CHARGING_POLICY => SetChargingPolicy(PowerChargePolicy),
     }
 }

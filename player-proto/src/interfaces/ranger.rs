@@ -82,17 +82,17 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `ranger` interface.
-    pub enum Ranger {
-        Data 1 => Ranges(RangerRanges),
-        Data 2 => RangesStamped(RangerRangesStamped),
-        Data 3 => Intensities(RangerIntensities),
-        Data 4 => IntensitiesStamped(RangerIntensitiesStamped),
-        Data 5 => GeometryData(RangerGeometry),
-        Request 1 => Geometry(RangerGeometry),
-        Request 2 => Power(RangerSwitch),
-        Request 3 => IntensityMode(RangerSwitch),
-        Request 4 => SetConfig(RangerConfig),
-        Request 5 => Config(RangerConfig),
+    pub enum Ranger for RANGER {
+        Data 1 as DATA_RANGE => Ranges(RangerRanges),
+        Data 2 as DATA_RANGESTAMPED => RangesStamped(RangerRangesStamped),
+        Data 3 as DATA_INTNS => Intensities(RangerIntensities),
+        Data 4 as DATA_INTNSSTAMPED => IntensitiesStamped(RangerIntensitiesStamped),
+        Data 5 as DATA_GEOM => GeometryData(RangerGeometry),
+        Request 1 as REQ_GET_GEOM => Geometry(RangerGeometry),
+        Request 2 as REQ_POWER => Power(RangerSwitch),
+        Request 3 as REQ_INTNS => IntensityMode(RangerSwitch),
+        Request 4 as REQ_SET_CONFIG => SetConfig(RangerConfig),
+        Request 5 as REQ_GET_CONFIG => Config(RangerConfig),
     }
 }
 

@@ -40,12 +40,12 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `simulation` interface.
-    pub enum Simulation {
-        Request 1 => Pose2d(SimulationPose2d),
-        Request 2 => SetPose2d(SimulationPose2d),
-        Request 3 => Pose3d(SimulationPose3d),
-        Request 4 => SetPose3d(SimulationPose3d),
-        Request 5 => Property(SimulationProperty),
-        Request 6 => SetProperty(SimulationProperty),
+    pub enum Simulation for SIMULATION {
+        Request 1 as REQ_GET_POSE2D => Pose2d(SimulationPose2d),
+        Request 2 as REQ_SET_POSE2D => SetPose2d(SimulationPose2d),
+        Request 3 as REQ_GET_POSE3D => Pose3d(SimulationPose3d),
+        Request 4 as REQ_SET_POSE3D => SetPose3d(SimulationPose3d),
+        Request 5 as REQ_GET_PROPERTY => Property(SimulationProperty),
+        Request 6 as REQ_SET_PROPERTY => SetProperty(SimulationProperty),
     }
 }

@@ -29,10 +29,10 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `sonar` interface.
-    pub enum Sonar {
-        Data 1 => Ranges(SonarData),
-        Data 2 => GeometryData(SonarGeometry),
-        Request 1 => Geometry(SonarGeometry),
-        Request 2 => Power(SonarPower),
+    pub enum Sonar for SONAR {
+        Data 1 as DATA_RANGES => Ranges(SonarData),
+        Data 2 as DATA_GEOM => GeometryData(SonarGeometry),
+        Request 1 as REQ_GET_GEOM => Geometry(SonarGeometry),
+        Request 2 as REQ_POWER => Power(SonarPower),
     }
 }

@@ -11,7 +11,7 @@ xdr_struct! {
 
 interface_messages! {
     /// Messages of the `speech` interface.
-    pub enum Speech {
-        Command 1 => Say(SpeechCmd),
+    pub enum Speech for SPEECH {
+        Command 1 as CMD_SAY => Say(SpeechCmd),
     }
 }

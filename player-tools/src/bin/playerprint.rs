@@ -11,8 +11,9 @@ use std::time::{Duration, Instant};
 use anyhow::{Context, Result, bail};
 use clap::Parser;
 use player_proto::client::{Client, ClientOptions, DataMode};
+use player_proto::interfaces::kind::MessageKind;
 use player_proto::summary::summarize;
-use player_proto::wire::DevAddr;
+use player_proto::wire::{DevAddr, Interface};
 
 /// Print the data of Player devices as it arrives.
 #[derive(Parser, Debug)]
@@ -114,7 +115,7 @@ fn run(cli: Cli) -> Result<()> {
             }
         }
         for &addr in &devices {
-            for subtype in 1..=8u8 {
+            for subtype in data_subtypes(addr.interf) {
                 let Some(stamped) = client.latest(addr, subtype) else {
                     continue;
                 };
@@ -142,4 +143,15 @@ fn run(cli: Cli) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The DATA subtypes to look for on a device: its interface table's, or every subtype for an
+/// interface this crate has no table for (its bodies are printed undecoded).
+fn data_subtypes(interf: Interface) -> Vec<u8> {
+    let known: Vec<u8> = MessageKind::data_of(interf).map(|k| k.subtype).collect();
+    if known.is_empty() && MessageKind::all_of(interf).is_empty() {
+        (0..=u8::MAX).collect()
+    } else {
+        known
+    }
 }

@@ -12,7 +12,7 @@ use image::RgbaImage;
 use player_proto::interfaces::camera::Camera;
 use player_proto::message::{Body, Message};
 
-use framework::device::{LastTaken, Sample};
+use framework::device::{LastTaken, Stamped};
 
 /// The frame rate is measured over this many most recent arrivals.
 const RATE_WINDOW: usize = 30;
@@ -51,8 +51,8 @@ pub struct CameraFrames {
 }
 
 impl CameraFrames {
-    /// Takes a sample of the camera's data (subtype 1).
-    pub fn offer(&mut self, sample: &Sample) -> Offered {
+    /// Takes a sample of the camera's data (`PLAYER_CAMERA_DATA_STATE`).
+    pub fn offer(&mut self, sample: &Stamped) -> Offered {
         if !self.taken.is_new(sample) {
             return Offered::Seen;
         }

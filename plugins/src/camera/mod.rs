@@ -13,10 +13,8 @@ use frames::{CameraFrames, Offered};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::plugin::{Anchors, Plugin, PluginContext};
 use framework::scene::Scene;
+use player_proto::interfaces::camera::Camera;
 use window::CameraWindow;
-
-/// Subtype of `PLAYER_CAMERA_DATA_STATE`.
-const DATA_STATE: u8 = 1;
 
 pub struct CameraPlugin {
     config: PluginConfig,
@@ -58,7 +56,7 @@ impl Plugin for CameraPlugin {
 
     /// Takes the newest frame. The scene does not change: the image lives in its window.
     fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        if let Some(sample) = ctx.device.and_then(|d| d.latest(DATA_STATE))
+        if let Some(sample) = ctx.device.and_then(|d| d.latest(Camera::DATA_STATE.kind()))
             && let Offered::Failed(reason) = self.frames.offer(&sample)
         {
             tracing::debug!(plugin = %self.config.id, "camera frame not shown: {reason}");

@@ -7,17 +7,17 @@
 
 use std::collections::HashMap;
 
-use glam::{Affine3A, Quat, Vec3};
-use player_proto::interfaces::fiducial::{self, Fiducial};
-use player_proto::message::Body;
+use glam::Vec3;
+use player_proto::interfaces::common::Pose3d;
+use player_proto::interfaces::fiducial::{Fiducial, FiducialData, FiducialGeometry};
 
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::device::{LastTaken, ReplyTicket};
+use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
 use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::pose::transform_of;
 use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 
-const DATA_SCAN: u8 = 1;
 /// Drawn size of a marker, m.
 const MARKER: f32 = 0.3;
 
@@ -28,7 +28,7 @@ pub struct FiducialPlugin {
     node: NodeId,
     markers: Vec<NodeId>,
     parent: ParentLink,
-    geometry_reply: Option<ReplyTicket>,
+    geometry_reply: Awaited<FiducialGeometry>,
     tags: HashMap<i32, Vec<String>>,
     scan_taken: LastTaken,
     seen: Vec<(i32, f32)>,
@@ -54,9 +54,7 @@ impl FiducialPlugin {
         let node = ctx
             .scene
             .add(Object3D::new(format!("fiducial finder {}", config.id)));
-        let geometry_reply = ctx
-            .device
-            .map(|d| d.request(fiducial::REQ_GET_GEOM, Body::Empty));
+        let geometry_reply = Awaited::fetch(ctx.device, Fiducial::REQ_GET_GEOM);
         Ok(Box::new(FiducialPlugin {
             config,
             color,
@@ -72,18 +70,11 @@ impl FiducialPlugin {
 
     fn place(&mut self, ctx: &mut PluginContext<'_>) -> bool {
         let mut changed = self.parent.attach(self.node, ctx);
-        if let Some(outcome) = self.geometry_reply.as_ref().and_then(ReplyTicket::try_take) {
-            self.geometry_reply = None;
-            if let Ok(m) = outcome
-                && let Body::Fiducial(Fiducial::Geometry(g)) = &m.body
-                && let Some(n) = ctx.scene.get_mut(self.node)
-            {
-                n.transform = Affine3A::from_rotation_translation(
-                    Quat::from_rotation_z(g.pose.pyaw as f32),
-                    Vec3::new(g.pose.px as f32, g.pose.py as f32, g.pose.pz as f32),
-                );
-                changed = true;
-            }
+        if let Some(Ok(g)) = self.geometry_reply.take()
+            && let Some(n) = ctx.scene.get_mut(self.node)
+        {
+            n.transform = transform_of(&g.pose);
+            changed = true;
         }
         changed
     }
@@ -100,10 +91,7 @@ impl Plugin for FiducialPlugin {
 
     fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
         let changed = self.place(ctx);
-        let Some(sample) = self.scan_taken.newest(ctx.device, DATA_SCAN) else {
-            return changed;
-        };
-        let Body::Fiducial(Fiducial::Scan(data)) = &sample.message.body else {
+        let Some((data, _)) = self.scan_taken.newest_of::<FiducialData>(ctx.device) else {
             return changed;
         };
         for marker in self.markers.drain(..) {
@@ -113,10 +101,12 @@ impl Plugin for FiducialPlugin {
         for item in &data.fiducials {
             let mut object = Object3D::new(format!("marker {}", item.id));
             object.parent = Some(self.node);
-            object.transform = Affine3A::from_rotation_translation(
-                Quat::from_rotation_z(item.pose.pyaw as f32),
-                Vec3::new(item.pose.px as f32, item.pose.py as f32, 0.0),
-            );
+            // Markers stand at a fixed height in the finder's plane (the cuboid below), so
+            // the height the finder reports is not used.
+            object.transform = transform_of(&Pose3d {
+                pz: 0.0,
+                ..item.pose
+            });
             let size = Vec3::new(MARKER, MARKER, 0.05);
             object
                 .geometry

@@ -14,34 +14,35 @@ mod scan_geometry;
 
 use std::time::Instant;
 
-use glam::{Affine3A, Quat, Vec3};
-use player_proto::interfaces::laser::{self, Laser};
+use glam::{Affine3A, Vec3};
+use player_proto::interfaces::kind::MessageKind;
+use player_proto::interfaces::laser::{Laser, LaserGeometry};
 use player_proto::message::Body;
+use player_proto::wire::Interface;
 
 pub use readings::{Bearings, Readings};
 pub use scan_geometry::{ScanStyle, endpoints, scan_geometry};
 
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::device::{LastTaken, ReplyTicket, Sample};
+use framework::device::{Awaited, LastTaken, Stamped};
 use framework::parent_link::ParentLink;
 use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::pose::transform_of;
 use framework::scene::{NodeId, Object3D, Rgba, Scene};
 use framework::skin::{Skin, fit_into};
 
 /// The scanner's size until its geometry says otherwise (a SICK LMS200's), m.
 const DEFAULT_SIZE: Vec3 = Vec3::new(0.156, 0.155, 0.19);
 
-/// Subtypes of `PLAYER_LASER_DATA_SCAN`, `_SCANPOSE` and `_SCANANGLE`.
-const DATA_SUBTYPES: [u8; 3] = [1, 2, 3];
-
 pub struct LaserPlugin {
     config: PluginConfig,
     style: ScanStyle,
     node: NodeId,
     parent: ParentLink,
-    geometry_reply: Option<ReplyTicket>,
-    /// The scan drawn last, per data subtype.
-    drawn: [LastTaken; DATA_SUBTYPES.len()],
+    geometry: Awaited<LaserGeometry>,
+    /// The scan forms the laser interface defines (plain, with pose, with angles), each with
+    /// the sample of it drawn last.
+    drawn: Vec<(MessageKind, LastTaken)>,
     /// Readings in the newest scan, and the nearest return.
     summary: Option<(usize, Option<f32>, Instant)>,
     skin: Skin,
@@ -66,16 +67,16 @@ impl LaserPlugin {
             body.parent = Some(node);
             ctx.scene.add(body)
         });
-        let geometry_reply = ctx
-            .device
-            .map(|d| d.request(laser::REQ_GET_GEOM, Body::Empty));
+        let geometry = Awaited::fetch(ctx.device, Laser::REQ_GET_GEOM);
         let plugin = Box::new(LaserPlugin {
             config,
             style,
             node,
             parent,
-            geometry_reply,
-            drawn: [LastTaken::default(); DATA_SUBTYPES.len()],
+            geometry,
+            drawn: MessageKind::data_of(Interface::LASER)
+                .map(|kind| (kind, LastTaken::default()))
+                .collect(),
             summary: None,
             skin,
             skin_node,
@@ -97,30 +98,19 @@ impl LaserPlugin {
     }
 
     fn place_from_geometry(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let Some(ticket) = &self.geometry_reply else {
+        let Some(outcome) = self.geometry.take() else {
             return false;
         };
-        let Some(outcome) = ticket.try_take() else {
-            return false;
-        };
-        self.geometry_reply = None;
-        match outcome.map(|m| m.body.clone()) {
-            Ok(Body::Laser(Laser::Geometry(g))) => {
+        match outcome {
+            Ok(g) => {
                 if let Some(node) = ctx.scene.get_mut(self.node) {
-                    node.transform = Affine3A::from_rotation_translation(
-                        Quat::from_rotation_z(g.pose.pyaw as f32),
-                        Vec3::new(g.pose.px as f32, g.pose.py as f32, g.pose.pz as f32),
-                    );
+                    node.transform = transform_of(&g.pose);
                 }
                 let size = Vec3::new(g.size.sl as f32, g.size.sw as f32, g.size.sh as f32);
                 if size.min_element() > 0.0 && size.is_finite() {
                     self.draw_skin(ctx, size);
                 }
                 true
-            }
-            Ok(other) => {
-                tracing::warn!(plugin = %self.config.id, "laser geometry reply has an unexpected body: {other:?}");
-                false
             }
             Err(e) => {
                 tracing::info!(plugin = %self.config.id, "no laser geometry ({e}); drawing at the robot's origin");
@@ -129,7 +119,7 @@ impl LaserPlugin {
         }
     }
 
-    fn redraw(&mut self, sample: &Sample, ctx: &mut PluginContext<'_>) -> bool {
+    fn redraw(&mut self, sample: &Stamped, ctx: &mut PluginContext<'_>) -> bool {
         let scan = match &sample.message.body {
             Body::Laser(Laser::Scan(scan)) => Readings::from_scan(scan),
             Body::Laser(Laser::ScanPose(with_pose)) => Readings::from_scan(&with_pose.scan),
@@ -165,12 +155,12 @@ impl Plugin for LaserPlugin {
         let mut changed = self.place_from_geometry(ctx);
         changed |= self.parent.attach(self.node, ctx);
         let newest = ctx.device.and_then(|d| {
-            (0..DATA_SUBTYPES.len())
-                .filter_map(|i| Some((i, d.latest(DATA_SUBTYPES[i])?)))
+            (0..self.drawn.len())
+                .filter_map(|i| Some((i, d.latest(self.drawn[i].0)?)))
                 .max_by_key(|(_, sample)| sample.received)
         });
         if let Some((i, sample)) = newest
-            && self.drawn[i].is_new(&sample)
+            && self.drawn[i].1.is_new(&sample)
         {
             changed |= self.redraw(&sample, ctx);
         }
@@ -193,7 +183,7 @@ impl Plugin for LaserPlugin {
         self.skin.ui(ui);
         if self.style.ui(ui) {
             // Redraw the newest scan in the new style.
-            self.drawn.iter_mut().for_each(LastTaken::forget);
+            self.drawn.iter_mut().for_each(|(_, taken)| taken.forget());
         }
     }
 

@@ -85,7 +85,7 @@ impl Position2dPlugin {
 
     /// One step of tele-operation; returns whether the scene changed.
     pub(super) fn teleoperate(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let connected = ctx.device.is_some_and(|d| d.link_state().is_connected());
+        let connected = ctx.device.is_some_and(|d| d.is_connected());
         if !connected {
             // The connection dropped: forget what we were doing, so nothing resumes by itself.
             let changed = self.goal.is_some() || self.joystick.is_some();

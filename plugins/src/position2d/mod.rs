@@ -20,9 +20,8 @@ mod widgets;
 
 use std::time::Instant;
 
-use glam::{Affine3A, Quat, Vec2, Vec3};
-use player_proto::interfaces::position2d::{self, Position2d};
-use player_proto::message::Body;
+use glam::{Vec2, Vec3};
+use player_proto::interfaces::position2d::{Position2d, Position2dData, Position2dGeometry};
 
 pub use body::body_geometry;
 pub use goal::{DriveMode, Goal, stand_off};
@@ -31,13 +30,13 @@ pub use widgets::joystick_id;
 
 use framework::action::{Action, ObjectRef};
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::device::{LastTaken, ReplyTicket};
+use framework::device::{Awaited, ConnectionState, LastTaken};
 use framework::plugin::{AnchorKey, Anchors, Handled, InputEvent, Plugin, PluginContext, Service};
+use framework::scene::pose::transform_of_2d;
 use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 use framework::skin::Skin;
 use trail::Trail;
 
-const DATA_STATE: u8 = 1;
 const GO_TO_POINT: &str = "Go to point…";
 
 pub struct Position2dPlugin {
@@ -46,7 +45,7 @@ pub struct Position2dPlugin {
     node: NodeId,
     trail_node: NodeId,
     anchor: Option<AnchorKey>,
-    geometry_reply: Option<ReplyTicket>,
+    geometry_reply: Awaited<Position2dGeometry>,
     size: Vec3,
     state_taken: LastTaken,
     pose: (f32, f32, f32),
@@ -122,9 +121,7 @@ impl Position2dPlugin {
         if let Some(key) = &anchor {
             ctx.anchors.publish(key.clone(), node);
         }
-        let geometry_reply = ctx
-            .device
-            .map(|d| d.request(position2d::REQ_GET_GEOM, Body::Empty));
+        let geometry_reply = Awaited::fetch(ctx.device, Position2d::REQ_GET_GEOM);
         Ok(Box::new(Position2dPlugin {
             config,
             color,
@@ -148,7 +145,7 @@ impl Position2dPlugin {
             moving: false,
             last_command: None,
             sent_waypoint: None,
-            link_up: ctx.device.is_some_and(|d| d.link_state().is_connected()),
+            link_up: ctx.device.is_some_and(|d| d.is_connected()),
             typed_point: Vec2::ZERO,
             skin,
         }))
@@ -181,12 +178,10 @@ impl Position2dPlugin {
     }
 
     fn take_geometry(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let Some(outcome) = self.geometry_reply.as_ref().and_then(ReplyTicket::try_take) else {
+        let Some(outcome) = self.geometry_reply.take() else {
             return false;
         };
-        self.geometry_reply = None;
-        if let Ok(message) = outcome
-            && let Body::Position2d(Position2d::Geometry(g)) = &message.body
+        if let Ok(g) = outcome
             && g.size.sl > 0.0
             && g.size.sw > 0.0
         {
@@ -199,10 +194,7 @@ impl Position2dPlugin {
     }
 
     fn take_state(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let Some(sample) = self.state_taken.newest(ctx.device, DATA_STATE) else {
-            return false;
-        };
-        let Body::Position2d(Position2d::State(state)) = &sample.message.body else {
+        let Some((state, _)) = self.state_taken.newest_of::<Position2dData>(ctx.device) else {
             return false;
         };
         self.pose = (
@@ -213,10 +205,7 @@ impl Position2dPlugin {
         self.velocity = (state.vel.px as f32, state.vel.pa as f32);
         self.stalled = state.stall != 0;
         if let Some(node) = ctx.scene.get_mut(self.node) {
-            node.transform = Affine3A::from_rotation_translation(
-                Quat::from_rotation_z(self.pose.2),
-                Vec3::new(self.pose.0, self.pose.1, 0.0),
-            );
+            node.transform = transform_of_2d(&state.pos);
         }
         self.trail.record(Vec2::new(self.pose.0, self.pose.1));
         self.redraw_trail(ctx.scene);
@@ -262,7 +251,7 @@ impl Plugin for Position2dPlugin {
         }
         if let Some(device) = ctx.device {
             let state = device.link_state();
-            if !state.is_connected() {
+            if state != ConnectionState::Connected {
                 ui.colored_label(egui::Color32::from_rgb(230, 190, 80), format!("{state:?}"));
             }
         }

@@ -13,10 +13,10 @@ mod shape;
 
 use std::time::Instant;
 
-use glam::{Affine3A, Quat, Vec3};
-use player_proto::interfaces::common::Pose3d;
-use player_proto::interfaces::ranger::{self, Ranger, RangerConfig, RangerGeometry};
+use player_proto::interfaces::kind::MessageKind;
+use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry};
 use player_proto::message::Body;
+use player_proto::wire::Interface;
 
 pub use shape::{RangerData, RangerShape, ranger_geometry};
 
@@ -24,14 +24,11 @@ use crate::laser::ScanStyle;
 use crate::sonar::cone_params::{cone_style_from_config, cone_style_ui, write_cone_style};
 use crate::sonar::cones::{ConeStyle, Transducer};
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::device::{DeviceAccess, LastTaken, ReplyOutcome, ReplyTicket, Sample};
+use framework::device::{Awaited, DeviceAccess, LastTaken, RequestError, Stamped};
 use framework::parent_link::ParentLink;
 use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::scene::pose::transform_of;
 use framework::scene::{NodeId, Object3D, Scene};
-
-/// Data subtypes: `PLAYER_RANGER_DATA_RANGE`, `_RANGESTAMPED`, `_INTNS`, `_INTNSSTAMPED`,
-/// `_GEOM`.
-const DATA_SUBTYPES: [u8; 5] = [1, 2, 3, 4, 5];
 
 pub struct RangerPlugin {
     config: PluginConfig,
@@ -40,8 +37,8 @@ pub struct RangerPlugin {
     visible: bool,
     node: NodeId,
     parent: ParentLink,
-    geometry_reply: Option<ReplyTicket>,
-    config_reply: Option<ReplyTicket>,
+    geometry_reply: Awaited<RangerGeometry>,
+    config_reply: Awaited<RangerConfig>,
     /// Element poses in the node's frame (empty for a single-element device: its pose is part
     /// of the node's transform).
     elements: Vec<Transducer>,
@@ -49,8 +46,9 @@ pub struct RangerPlugin {
     ranges: Vec<f64>,
     intensities: Vec<f64>,
     shape: RangerShape,
-    /// The last message taken, per data subtype.
-    taken: [LastTaken; DATA_SUBTYPES.len()],
+    /// Every data message the ranger interface defines (ranges, intensities, either
+    /// stamped, geometry), each with the sample of it taken last.
+    taken: Vec<(MessageKind, LastTaken)>,
     received: Option<Instant>,
     redraw_needed: bool,
 }
@@ -69,13 +67,8 @@ impl RangerPlugin {
         object.tags.push("ranger".into());
         object.visible = visible;
         let node = ctx.scene.add(object);
-        let (geometry_reply, config_reply) = match ctx.device {
-            Some(d) => (
-                Some(d.request(ranger::REQ_GET_GEOM, Body::Empty)),
-                Some(d.request(ranger::REQ_GET_CONFIG, Body::Empty)),
-            ),
-            None => (None, None),
-        };
+        let geometry_reply = Awaited::fetch(ctx.device, Ranger::REQ_GET_GEOM);
+        let config_reply = Awaited::fetch(ctx.device, Ranger::REQ_GET_CONFIG);
         Ok(Box::new(RangerPlugin {
             config,
             scan_style,
@@ -90,47 +83,42 @@ impl RangerPlugin {
             ranges: Vec::new(),
             intensities: Vec::new(),
             shape: RangerShape::Empty,
-            taken: [LastTaken::default(); DATA_SUBTYPES.len()],
+            taken: MessageKind::data_of(Interface::RANGER)
+                .map(|kind| (kind, LastTaken::default()))
+                .collect(),
             received: None,
             redraw_needed: false,
         }))
     }
 
     fn take_replies(&mut self, scene: &mut Scene) {
-        if let Some(outcome) = take(&mut self.geometry_reply) {
-            match body_of(outcome) {
-                Ok(Body::Ranger(Ranger::Geometry(g))) => self.adopt_geometry(&g, scene),
-                other => self.note_failure("geometry", other),
-            }
+        match self.geometry_reply.take() {
+            Some(Ok(g)) => self.adopt_geometry(&g, scene),
+            Some(Err(e)) => self.note_failure("geometry", &e),
+            None => {}
         }
-        if let Some(outcome) = take(&mut self.config_reply) {
-            match body_of(outcome) {
-                Ok(Body::Ranger(Ranger::Config(c))) => {
-                    self.device_config = Some(c);
-                    self.redraw_needed = true;
-                }
-                other => self.note_failure("config", other),
+        match self.config_reply.take() {
+            Some(Ok(c)) => {
+                self.device_config = Some(c);
+                self.redraw_needed = true;
             }
+            Some(Err(e)) => self.note_failure("config", &e),
+            None => {}
         }
     }
 
-    fn note_failure(&self, what: &str, outcome: Result<Body, String>) {
-        match outcome {
-            Ok(body) => {
-                tracing::warn!(plugin = %self.config.id, "ranger {what} reply has an unexpected body: {body:?}");
-            }
-            Err(e) => tracing::info!(plugin = %self.config.id, "no ranger {what} ({e})"),
-        }
+    fn note_failure(&self, what: &str, e: &RequestError) {
+        tracing::info!(plugin = %self.config.id, "no ranger {what} ({e})");
     }
 
     /// Places the node at the device's pose (and a single element's pose), and keeps several
     /// elements' poses for their cones.
     fn adopt_geometry(&mut self, geometry: &RangerGeometry, scene: &mut Scene) {
-        let mut transform = pose_transform(&geometry.pose);
+        let mut transform = transform_of(&geometry.pose);
         self.elements.clear();
         match geometry.element_poses.as_slice() {
             [] => {}
-            [single] => transform *= pose_transform(single),
+            [single] => transform *= transform_of(single),
             several => self.elements.extend(several.iter().map(Transducer::from)),
         }
         if let Some(object) = scene.get_mut(self.node) {
@@ -141,9 +129,9 @@ impl RangerPlugin {
 
     /// Takes the data messages that came since the last update, oldest first.
     fn take_data(&mut self, device: &dyn DeviceAccess, scene: &mut Scene) {
-        let mut new: Vec<Sample> = Vec::new();
-        for (taken, subtype) in self.taken.iter_mut().zip(DATA_SUBTYPES) {
-            new.extend(taken.newest(Some(device), subtype));
+        let mut new: Vec<Stamped> = Vec::new();
+        for (kind, taken) in &mut self.taken {
+            new.extend(taken.newest(Some(device), *kind));
         }
         new.sort_by_key(|s| s.received);
         for sample in new {
@@ -151,7 +139,7 @@ impl RangerPlugin {
         }
     }
 
-    fn take(&mut self, sample: &Sample, scene: &mut Scene) {
+    fn take(&mut self, sample: &Stamped, scene: &mut Scene) {
         let Body::Ranger(message) = &sample.message.body else {
             return;
         };
@@ -201,29 +189,6 @@ impl RangerPlugin {
         object.visible = self.visible;
         true
     }
-}
-
-fn take(ticket: &mut Option<ReplyTicket>) -> Option<ReplyOutcome> {
-    let outcome = ticket.as_ref()?.try_take()?;
-    *ticket = None;
-    Some(outcome)
-}
-
-fn body_of(outcome: ReplyOutcome) -> Result<Body, String> {
-    outcome.map(|m| m.body.clone()).map_err(|e| e.to_string())
-}
-
-/// A Player pose as a transform (roll, pitch and yaw applied in that order).
-fn pose_transform(pose: &Pose3d) -> Affine3A {
-    Affine3A::from_rotation_translation(
-        Quat::from_euler(
-            glam::EulerRot::ZYX,
-            pose.pyaw as f32,
-            pose.ppitch as f32,
-            pose.proll as f32,
-        ),
-        Vec3::new(pose.px as f32, pose.py as f32, pose.pz as f32),
-    )
 }
 
 impl Plugin for RangerPlugin {

@@ -11,21 +11,17 @@ pub mod cones;
 
 use std::time::Instant;
 
-use player_proto::interfaces::sonar::{self, Sonar};
-use player_proto::message::Body;
+use player_proto::interfaces::common::Pose3d;
+use player_proto::interfaces::sonar::{Sonar, SonarData, SonarGeometry};
 
 use cone_params::{cone_style_from_config, cone_style_ui, write_cone_style};
 use cones::{ConeStyle, Transducer, cone_geometry, evenly_spaced};
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::device::{LastTaken, ReplyTicket, Sample};
+use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
 use framework::plugin::{Anchors, Plugin, PluginContext};
 use framework::scene::{NodeId, Object3D, Scene};
 
-/// Subtype of `PLAYER_SONAR_DATA_RANGES`.
-const DATA_RANGES: u8 = 1;
-/// Subtype of `PLAYER_SONAR_DATA_GEOM` (geometry pushed as data by some drivers).
-const DATA_GEOM: u8 = 2;
 /// Radius of the ring transducers are assumed on while their poses are unknown, m.
 const ASSUMED_RING_RADIUS: f32 = 0.2;
 /// Readings kept from one message: Player's own limit on sonar transducers.
@@ -44,12 +40,13 @@ pub struct SonarPlugin {
     visible: bool,
     node: NodeId,
     parent: ParentLink,
-    geometry_reply: Option<ReplyTicket>,
+    geometry_reply: Awaited<SonarGeometry>,
     transducers: Vec<Transducer>,
     pose_source: PoseSource,
     ranges: Vec<f32>,
     ranges_taken: LastTaken,
-    last_geom_seq: Option<u64>,
+    /// Geometry some drivers push as data.
+    geometry_taken: LastTaken,
     received: Option<Instant>,
     redraw_needed: bool,
 }
@@ -67,9 +64,7 @@ impl SonarPlugin {
         object.tags.push("sonar".into());
         object.visible = visible;
         let node = ctx.scene.add(object);
-        let geometry_reply = ctx
-            .device
-            .map(|d| d.request(sonar::REQ_GET_GEOM, Body::Empty));
+        let geometry_reply = Awaited::fetch(ctx.device, Sonar::REQ_GET_GEOM);
         Ok(Box::new(SonarPlugin {
             config,
             style,
@@ -81,7 +76,7 @@ impl SonarPlugin {
             pose_source: PoseSource::Assumed,
             ranges: Vec::new(),
             ranges_taken: LastTaken::default(),
-            last_geom_seq: None,
+            geometry_taken: LastTaken::default(),
             received: None,
             redraw_needed: false,
         }))
@@ -89,33 +84,18 @@ impl SonarPlugin {
 
     /// Takes the transducer poses from the geometry reply, once it has come.
     fn take_geometry_reply(&mut self) {
-        let Some(outcome) = self.geometry_reply.as_ref().and_then(|t| t.try_take()) else {
+        let Some(outcome) = self.geometry_reply.take() else {
             return;
         };
-        self.geometry_reply = None;
-        match outcome.map(|m| m.body.clone()) {
-            Ok(Body::Sonar(Sonar::Geometry(g))) => self.adopt_poses(&g.poses),
-            Ok(other) => {
-                tracing::warn!(plugin = %self.config.id, "sonar geometry reply has an unexpected body: {other:?}");
-            }
+        match outcome {
+            Ok(g) => self.adopt_poses(&g.poses),
             Err(e) => {
                 tracing::info!(plugin = %self.config.id, "no sonar geometry ({e}); transducers assumed evenly spaced");
             }
         }
     }
 
-    fn take_geometry_data(&mut self, sample: Option<Sample>) {
-        let Some(sample) = sample else { return };
-        if self.last_geom_seq == Some(sample.seq) {
-            return;
-        }
-        self.last_geom_seq = Some(sample.seq);
-        if let Body::Sonar(Sonar::GeometryData(g)) = &sample.message.body {
-            self.adopt_poses(&g.poses);
-        }
-    }
-
-    fn adopt_poses(&mut self, poses: &[player_proto::interfaces::common::Pose3d]) {
+    fn adopt_poses(&mut self, poses: &[Pose3d]) {
         self.transducers = poses
             .iter()
             .take(MAX_TRANSDUCERS)
@@ -125,14 +105,12 @@ impl SonarPlugin {
         self.redraw_needed = true;
     }
 
-    fn take_ranges(&mut self, sample: &Sample) {
-        if let Body::Sonar(Sonar::Ranges(data)) = &sample.message.body {
-            self.ranges.clear();
-            self.ranges
-                .extend(data.ranges.iter().take(MAX_TRANSDUCERS).copied());
-            self.received = Some(sample.received);
-            self.redraw_needed = true;
-        }
+    fn take_ranges(&mut self, data: &SonarData, received: Instant) {
+        self.ranges.clear();
+        self.ranges
+            .extend(data.ranges.iter().take(MAX_TRANSDUCERS).copied());
+        self.received = Some(received);
+        self.redraw_needed = true;
     }
 
     fn redraw(&mut self, scene: &mut Scene) -> bool {
@@ -168,11 +146,11 @@ impl Plugin for SonarPlugin {
     fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
         let mut changed = self.parent.attach(self.node, ctx);
         self.take_geometry_reply();
-        if let Some(device) = ctx.device {
-            self.take_geometry_data(device.latest(DATA_GEOM));
-            if let Some(sample) = self.ranges_taken.newest(Some(device), DATA_RANGES) {
-                self.take_ranges(&sample);
-            }
+        if let Some((g, _)) = self.geometry_taken.newest_of::<SonarGeometry>(ctx.device) {
+            self.adopt_poses(&g.poses);
+        }
+        if let Some((data, sample)) = self.ranges_taken.newest_of::<SonarData>(ctx.device) {
+            self.take_ranges(&data, sample.received);
         }
         if self.redraw_needed {
             self.redraw_needed = false;

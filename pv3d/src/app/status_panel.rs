@@ -6,6 +6,7 @@ use std::time::{Duration, Instant};
 
 use eframe::egui::{self, Color32, Ui};
 use player_proto::client::{Client, ConnectionState};
+use player_proto::interfaces::kind::MessageKind;
 use player_proto::wire::DevAddr;
 
 use crate::robots::RobotManager;
@@ -84,8 +85,8 @@ impl StatusPanel {
                 entry.2 = (count - entry.0) as f64 / elapsed.as_secs_f64();
                 *entry = (count, now, entry.2);
             }
-            let age = (1..=5u8)
-                .filter_map(|s| client.latest(*addr, s))
+            let age = MessageKind::data_of(addr.interf)
+                .filter_map(|kind| client.latest(*addr, kind.subtype))
                 .map(|s| now.saturating_duration_since(s.received))
                 .min();
             let age = age.map_or("no data".to_string(), |a| {

@@ -2,12 +2,14 @@
 
 use std::sync::{Arc, Mutex};
 
-use framework::device::{DeviceAccess, LinkState, ReplyTicket, RequestFailure, Sample};
-use player_proto::client::{Client, ConnectionState, PendingReply, RequestError};
+use framework::device::DeviceAccess;
+use player_proto::client::{Client, ConnectionState, PendingReply, Stamped};
+use player_proto::interfaces::kind::MessageKind;
 use player_proto::message::Body;
 use player_proto::wire::DevAddr;
 
-/// One device on a shared client. Subscribes on creation, without waiting.
+/// One device on a shared client. Subscribes on creation, without waiting. A kind is read
+/// and requested by its subtype on this device's own address.
 pub struct ClientDevice {
     client: Arc<Client>,
     addr: DevAddr,
@@ -36,41 +38,21 @@ impl ClientDevice {
     }
 }
 
-fn failure(e: RequestError) -> RequestFailure {
-    match e {
-        RequestError::Timeout(_) => RequestFailure::Timeout,
-        RequestError::Disconnected(why) => RequestFailure::Disconnected(why),
-        RequestError::Nack(_) | RequestError::AccessDenied(_) | RequestError::TooManyPending(_) => {
-            RequestFailure::Nack
-        }
-    }
-}
-
 impl DeviceAccess for ClientDevice {
-    fn latest(&self, subtype: u8) -> Option<Sample> {
+    fn latest(&self, kind: MessageKind) -> Option<Stamped> {
         self.check_subscription();
-        self.client.latest(self.addr, subtype).map(|s| Sample {
-            message: s.message,
-            received: s.received,
-            seq: s.seq,
-        })
+        self.client.latest(self.addr, kind.subtype)
     }
 
     fn command(&self, body: Body) {
         self.client.command(self.addr, body);
     }
 
-    fn request(&self, subtype: u8, body: Body) -> ReplyTicket {
-        let pending = self.client.request_async(self.addr, subtype, body);
-        ReplyTicket::polled(move || pending.try_get().map(|o| o.map(Arc::new).map_err(failure)))
+    fn request(&self, kind: MessageKind, body: Body) -> PendingReply {
+        self.client.request_async(self.addr, kind.subtype, body)
     }
 
-    fn link_state(&self) -> LinkState {
-        match self.client.state() {
-            ConnectionState::Connecting => LinkState::Connecting,
-            ConnectionState::Connected => LinkState::Connected,
-            ConnectionState::Reconnecting { attempt } => LinkState::Reconnecting { attempt },
-            ConnectionState::Failed(why) => LinkState::Failed(why),
-        }
+    fn link_state(&self) -> ConnectionState {
+        self.client.state()
     }
 }
