@@ -136,9 +136,9 @@ fn a_server_answering_after_the_window_opened_gets_its_plugins_without_input() {
     };
     pv3d.wait_for("first frame", Duration::from_secs(60));
     // The window's start-up frames are over once the client has been refused a few more
-    // times (its retries back off: 0.2, 0.4, 0.8 s); its next try comes 1.6 s later, with
-    // the window idle. Nobody touches the window from here on.
-    for _ in 0..3 {
+    // times (its retries back off, doubling: 0.1, 0.2, 0.4, 0.8, 1.6 s…); its next try comes
+    // a second or more later, with the window idle. Nobody touches the window from here on.
+    for _ in 0..4 {
         pv3d.wait_for("connection lost", Duration::from_secs(30));
     }
     let _server = serve_simple_world_on(port);
