@@ -104,10 +104,6 @@ impl ViewerParts {
         &self.builder.composition
     }
 
-    pub fn robots(&self) -> &Arc<RobotManager> {
-        &self.robots
-    }
-
     /// Makes the plugins, from the standard ones. A composition with no servers gets no
     /// server status panel and nothing that waits for servers.
     pub fn into_viewer(self) -> Viewer {

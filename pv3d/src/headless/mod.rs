@@ -9,5 +9,5 @@ mod screenshot;
 mod ui;
 
 pub use gl::{HeadlessError, HeadlessGl};
-pub use screenshot::{ScreenshotError, ScreenshotRun, render_after, write_screenshot};
+pub use screenshot::{ScreenshotError, ScreenshotRun, write_screenshot};
 pub use ui::HeadlessUi;

@@ -35,7 +35,7 @@ pub enum ScreenshotError {
 }
 
 /// Runs the viewer offscreen as `run` says and returns the last frame.
-pub fn render_after(viewer: &mut Viewer, run: &ScreenshotRun) -> Result<RgbaImage, HeadlessError> {
+fn render_after(viewer: &mut Viewer, run: &ScreenshotRun) -> Result<RgbaImage, HeadlessError> {
     let mut ui = HeadlessUi::new(run.size.0, run.size.1)?;
     let started = Instant::now();
     loop {
