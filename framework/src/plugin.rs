@@ -48,6 +48,25 @@ pub struct PluginContext<'a> {
     pub now: Instant,
 }
 
+impl<'a> PluginContext<'a> {
+    /// A context with no device of its own; a plugin made for a device gets it through
+    /// [`PluginContext::with_device`]. The one way a context is made, so that a field added
+    /// later is filled in one place.
+    pub fn new(scene: &'a mut Scene, anchors: &'a mut Anchors, now: Instant) -> Self {
+        PluginContext {
+            scene,
+            device: None,
+            anchors,
+            now,
+        }
+    }
+
+    /// The same context for a plugin with this device (or none).
+    pub fn with_device(self, device: Option<&'a dyn DeviceAccess>) -> Self {
+        PluginContext { device, ..self }
+    }
+}
+
 /// Input that reached a plugin through the event chain.
 #[derive(Debug, Clone, PartialEq)]
 pub enum InputEvent {

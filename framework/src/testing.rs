@@ -70,20 +70,13 @@ impl Harness {
 
     /// The context a plugin is made and updated in, with the hand-fed device.
     pub fn ctx(&mut self) -> PluginContext<'_> {
-        PluginContext {
-            scene: &mut self.scene,
-            device: Some(&self.device),
-            anchors: &mut self.anchors,
-            now: self.now,
-        }
+        PluginContext::new(&mut self.scene, &mut self.anchors, self.now)
+            .with_device(Some(&self.device))
     }
 
     /// The same context for a plugin that has no device (ground, lights).
     pub fn ctx_without_device(&mut self) -> PluginContext<'_> {
-        PluginContext {
-            device: None,
-            ..self.ctx()
-        }
+        PluginContext::new(&mut self.scene, &mut self.anchors, self.now)
     }
 
     /// Makes the plugin `config.library` names, with the hand-fed device.

@@ -43,12 +43,7 @@ fn robots_entering_and_leaving_a_zone_are_noticed() {
     let r1 = robot(&mut scene, "robot1", 0.5, 0.5);
     robot(&mut scene, "robot2", 5.0, 5.0);
     let create = standard_plugins().constructor("libpv3d_zones").unwrap();
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: None,
-        anchors: &mut anchors,
-        now: Instant::now(),
-    };
+    let mut ctx = PluginContext::new(&mut scene, &mut anchors, Instant::now());
     let mut plugin = create(config(vec![zone("dock", L_DOCK)]), &mut ctx).unwrap();
     let drawn = ctx
         .scene
@@ -94,12 +89,7 @@ fn robots_entering_and_leaving_a_zone_are_noticed() {
 fn a_bad_zone_says_where_and_why() {
     let mut scene = Scene::new();
     let mut anchors = Anchors::default();
-    let mut ctx = PluginContext {
-        scene: &mut scene,
-        device: None,
-        anchors: &mut anchors,
-        now: Instant::now(),
-    };
+    let mut ctx = PluginContext::new(&mut scene, &mut anchors, Instant::now());
     let cases = [
         (zone("dock", "0 0 1 1"), "three corners or more"),
         (zone("dock", "0 0 1 x 2 2"), "must be numbers"),

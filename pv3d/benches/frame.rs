@@ -24,11 +24,10 @@ use player_proto::interfaces::laser::{Laser, LaserScan};
 use player_proto::interfaces::position2d::{Position2d, Position2dData};
 use player_proto::message::Message;
 use player_proto::{DevAddr, Interface, MsgType};
-use pv3d::app::{HeadlessUi, Viewer};
+use pv3d::app::Viewer;
 use pv3d::composition::{Composition, FoundDevice, ParserRegistry, instantiate, parse_str};
-use pv3d::render::{
-    HeadlessGl, OrbitCamera, POINT_SIZE_PX, SceneBatch, SceneRenderer, ScreenDetail,
-};
+use pv3d::headless::{HeadlessGl, HeadlessUi};
+use pv3d::render::{OrbitCamera, POINT_SIZE_PX, SceneBatch, SceneRenderer, ScreenDetail};
 
 const ROBOTS: u16 = 256;
 const BEAMS: usize = 361;

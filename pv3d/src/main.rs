@@ -1,20 +1,18 @@
 //! `pv3d a.xml b.xml …` — compose Player devices into a 3D viewer.
 
 use std::path::PathBuf;
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
 use clap::Parser;
 use player_sim::serve::ServeOptions;
 use pv3d::app::{
-    RedrawPolicy, ScreenshotRequest, UiWaker, Viewer, WindowOptions, headless_screenshot,
-    run_window,
+    RedrawPolicy, ScreenshotRequest, UiWaker, ViewerBuilder, WindowOptions, run_window,
 };
-use pv3d::composition::{Composer, Composition, ParserRegistry, emit_document};
+use pv3d::composition::{Composition, ParserRegistry, emit_document};
 use pv3d::embedded_world::serve_world;
+use pv3d::headless::{ScreenshotRun, write_screenshot};
 use pv3d::render::Projection;
-use pv3d::robots::RobotManager;
 
 /// Player Viewer 3D: compose Player devices into a 3D viewer and tele-operation tool.
 #[derive(Parser, Debug)]
@@ -163,53 +161,38 @@ fn main() -> Result<()> {
         None => None,
     };
     let waker = UiWaker::default();
-    let wake = waker.clone();
-    let robots = Arc::new(RobotManager::start(
-        &composition.clients,
-        Some(Arc::new(move || wake.wake())),
-    ));
-    robots.wait_for_handshakes(Duration::from_secs_f64(cli.connect_timeout));
-    let mut composer = Composer::new(composition.clone());
-    let instances = composer.initial(&robots);
+    let mut builder = ViewerBuilder::new(composition)
+        .wake_with(waker.notifier())
+        .connect_timeout(Duration::from_secs_f64(cli.connect_timeout))
+        .start_view(match cli.view {
+            StartView::Top => Projection::Top,
+            StartView::Perspective => Projection::Perspective,
+        });
+    if let Some(path) = &cli.save_to {
+        builder = builder.save_to(path.clone());
+    }
+    let parts = builder.connect();
 
     if let Some(out) = &cli.emit_config {
-        let mut written = instances.clone();
-        written.extend(composer.waiting().iter().cloned());
-        std::fs::write(out, emit_document(&composition, &written, out))
+        let written = parts.written_instances();
+        std::fs::write(out, emit_document(parts.composition(), &written, out))
             .with_context(|| format!("writing {}", out.display()))?;
         eprintln!("wrote {} ({} plugins)", out.display(), written.len());
         return Ok(());
     }
 
-    let registry = plugins::standard_plugins();
-    let lookup = robots.clone();
-    let mut viewer = Viewer::new(instances, registry, &|device| lookup.device(device));
-    viewer.view.camera.projection = match cli.view {
-        StartView::Top => Projection::Top,
-        StartView::Perspective => Projection::Perspective,
-    };
-    if !composition.clients.is_empty() {
-        viewer.robots = Some(robots);
-        viewer.composer = Some(composer);
-    }
-    if let Some(path) = &cli.save_to {
-        viewer.save_target = Some(pv3d::app::viewer::SaveTarget {
-            path: path.clone(),
-            composition: composition.clone(),
-        });
-    }
+    let mut viewer = parts.into_viewer();
     let interval = Duration::from_secs_f64(cli.redraw_interval);
     let after = Duration::from_secs_f64(cli.after);
-
     match &cli.screenshot {
         Some(path) if cli.headless || no_display => {
-            let mut viewer = viewer;
             let started = Instant::now();
-            let image = headless_screenshot(&mut viewer, cli.size, after, interval, |_| {})
-                .map_err(anyhow::Error::msg)?;
-            image
-                .save(path)
-                .with_context(|| format!("writing {}", path.display()))?;
+            let run = ScreenshotRun {
+                size: cli.size,
+                after,
+                interval,
+            };
+            write_screenshot(&mut viewer, &run, path)?;
             eprintln!(
                 "wrote {} after {:.1} s",
                 path.display(),
@@ -233,7 +216,7 @@ fn main() -> Result<()> {
                 quit_after: cli.quit_after.map(Duration::from_secs_f64),
                 frame_stats: cli.frame_stats,
             };
-            run_window(viewer, options, waker, Box::new(|_| {})).map_err(anyhow::Error::msg)
+            run_window(viewer, options, waker).map_err(anyhow::Error::msg)
         }
     }
 }

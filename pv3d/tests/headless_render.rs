@@ -4,7 +4,8 @@ mod support;
 
 use framework::scene::{Object3D, Rgba, Scene};
 use glam::{Affine3A, Vec2, Vec3};
-use pv3d::render::{HeadlessGl, OrbitCamera, SceneBatch};
+use pv3d::headless::HeadlessGl;
+use pv3d::render::{OrbitCamera, SceneBatch};
 use support::draw_batch;
 
 fn render(scene: &Scene, camera: &OrbitCamera, size: (u32, u32)) -> image::RgbaImage {
@@ -62,7 +63,8 @@ fn a_point_and_a_box_land_where_the_camera_projects_them() {
 
 #[test]
 fn the_ui_and_the_3d_view_paint_together_offscreen() {
-    use pv3d::app::{HeadlessUi, View3d};
+    use pv3d::app::View3d;
+    use pv3d::headless::HeadlessUi;
 
     let mut scene = Scene::new();
     let mut grid = Object3D::new("grid");
@@ -113,7 +115,8 @@ fn the_ui_and_the_3d_view_paint_together_offscreen() {
 
 #[test]
 fn labels_that_would_overlap_are_left_out() {
-    use pv3d::app::{HeadlessUi, View3d};
+    use pv3d::app::View3d;
+    use pv3d::headless::HeadlessUi;
 
     let mut scene = Scene::new();
     let mut robots = Object3D::new("robots");

@@ -9,7 +9,8 @@ use glam::{Affine3A, Quat, Vec2, Vec3};
 use image::RgbaImage;
 use player_proto::interfaces::laser::LaserScan;
 use plugins::laser::{Readings, ScanStyle, scan_geometry};
-use pv3d::render::{HeadlessGl, OrbitCamera, POINT_SIZE_PX, SceneBatch, ScreenDetail};
+use pv3d::headless::HeadlessGl;
+use pv3d::render::{OrbitCamera, POINT_SIZE_PX, SceneBatch, ScreenDetail};
 use support::draw_batch;
 
 const SIZE: (u32, u32) = (640, 480);

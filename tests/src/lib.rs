@@ -1,16 +1,14 @@
 //! Shared helpers for the workspace integration tests (see `tests/tests/`): a Stage world
 //! served by player-sim over real TCP, and a pv3d viewer built from a composition against it,
-//! exactly as `pv3d` builds one (robot manager, composer, standard plugins) but without a
-//! window, so a test can click and step it.
+//! by the builder `pv3d` uses ([`ViewerBuilder`]) but without a window, so a test can click and
+//! step it.
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use player_sim::serve::{Running, ServeOptions};
-use pv3d::app::Viewer;
-use pv3d::composition::{Composer, Composition, ParserRegistry};
-use pv3d::robots::RobotManager;
+use pv3d::app::{Viewer, ViewerBuilder};
+use pv3d::composition::{Composition, ParserRegistry};
 
 /// The checkout's top folder.
 pub fn repo_root() -> PathBuf {
@@ -27,19 +25,11 @@ pub fn load(files: &[&str]) -> Composition {
         .unwrap_or_else(|e| panic!("{files:?} should load: {e}"))
 }
 
-/// A viewer with its robots, as `pv3d` makes it.
+/// A viewer with its robots, as `pv3d` makes it (with no window to wake).
 pub fn viewer_for(composition: &Composition) -> Viewer {
-    let robots = Arc::new(RobotManager::start(&composition.clients, None));
-    robots.wait_for_handshakes(Duration::from_secs(5));
-    let mut composer = Composer::new(composition.clone());
-    let instances = composer.initial(&robots);
-    let lookup = robots.clone();
-    let mut viewer = Viewer::new(instances, plugins::standard_plugins(), &|device| {
-        lookup.device(device)
-    });
-    viewer.robots = Some(robots);
-    viewer.composer = Some(composer);
-    viewer
+    ViewerBuilder::new(composition.clone())
+        .connect_timeout(Duration::from_secs(5))
+        .build()
 }
 
 /// Serves `world` (relative to the checkout) on free ports for `composition`.

@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 
 use framework::scene::NodeId;
 use glam::Vec3;
-use pv3d::app::HeadlessUi;
+use pv3d::headless::HeadlessUi;
 use tests::{load, run_for, serve, sim_pose, viewer_for};
 
 fn robot_near(viewer: &pv3d::app::Viewer, x: f64, y: f64) -> NodeId {

@@ -1,15 +1,14 @@
-//! The application: the world window's contents, the 3D view widget, and running the UI in a
-//! window or offscreen.
+//! The application: building the viewer from a composition, the world window's contents, the
+//! 3D view widget, and running the UI in a window. (Offscreen: [`crate::headless`].)
 
-pub mod headless_ui;
+mod arrival_watch;
+pub mod builder;
 pub mod status_panel;
 pub mod view3d;
 pub mod viewer;
 pub mod window;
 
-pub use headless_ui::HeadlessUi;
+pub use builder::{ViewerBuilder, ViewerParts};
 pub use view3d::{View3d, ViewInput};
 pub use viewer::Viewer;
-pub use window::{
-    RedrawPolicy, ScreenshotRequest, UiWaker, WindowOptions, headless_screenshot, run_window,
-};
+pub use window::{RedrawPolicy, ScreenshotRequest, UiWaker, WindowOptions, run_window};

@@ -43,15 +43,16 @@ pub struct Viewer {
     active: Option<usize>,
     /// Plugins that could not be made, with why.
     pub errors: Vec<String>,
-    /// Whether the last update or input changed anything that needs a redraw.
-    pub dirty: bool,
+    /// Wakes the window when one of `robots` answers. Declared before `robots` so that it
+    /// stops before they are dropped.
+    pub(crate) arrival_watch: Option<super::arrival_watch::ArrivalWatch>,
     /// The Player servers, for the status panel.
     pub robots: Option<Arc<crate::robots::RobotManager>>,
     /// Turns the handlers into plugins for servers that answer late (needs `robots`).
-    pub composer: Option<Composer>,
+    pub(crate) composer: Option<Composer>,
     status: super::status_panel::StatusPanel,
     /// Where "Save" writes the composition with the plugins' current state.
-    pub save_target: Option<SaveTarget>,
+    pub(crate) save_target: Option<SaveTarget>,
     save_message: Option<String>,
     /// The popup open over the view (actions on an object, a service's popup).
     popup: Option<popups::Popup>,
@@ -81,7 +82,7 @@ impl Viewer {
             view: View3d::default(),
             active: None,
             errors: Vec::new(),
-            dirty: true,
+            arrival_watch: None,
             robots: None,
             composer: None,
             status: Default::default(),
@@ -111,12 +112,8 @@ impl Viewer {
                 continue;
             };
             let device = config.device.as_ref().and_then(devices);
-            let mut ctx = PluginContext {
-                scene: &mut self.scene,
-                device: device.as_deref(),
-                anchors: &mut self.anchors,
-                now: Instant::now(),
-            };
+            let mut ctx = PluginContext::new(&mut self.scene, &mut self.anchors, Instant::now())
+                .with_device(device.as_deref());
             match create(config, &mut ctx) {
                 Ok(plugin) => self.slots.push(Slot {
                     plugin,
@@ -129,7 +126,19 @@ impl Viewer {
         for e in &self.errors[first_error..] {
             tracing::error!("{e}");
         }
-        self.dirty = true;
+    }
+
+    /// Plugin `index` and the context it is called in: its own device, the shared scene and
+    /// anchors. Every call into a plugin after it was made goes through here.
+    fn plugin_in_context(
+        &mut self,
+        index: usize,
+        now: Instant,
+    ) -> (&mut dyn Plugin, PluginContext<'_>) {
+        let slot = &mut self.slots[index];
+        let ctx = PluginContext::new(&mut self.scene, &mut self.anchors, now)
+            .with_device(slot.device.as_deref());
+        (slot.plugin.as_mut(), ctx)
     }
 
     fn make_id_unique(&self, instance: &mut PluginInstance) {
@@ -169,16 +178,10 @@ impl Viewer {
     pub fn update(&mut self, now: Instant) -> bool {
         self.compose_arrivals();
         let mut changed = false;
-        for slot in &mut self.slots {
-            let mut ctx = PluginContext {
-                scene: &mut self.scene,
-                device: slot.device.as_deref(),
-                anchors: &mut self.anchors,
-                now,
-            };
-            changed |= slot.plugin.update(&mut ctx);
+        for i in 0..self.slots.len() {
+            let (plugin, mut ctx) = self.plugin_in_context(i, now);
+            changed |= plugin.update(&mut ctx);
         }
-        self.dirty |= changed;
         changed
     }
 
@@ -208,9 +211,6 @@ impl Viewer {
                     .map(|_| &starts as super::view3d::StartsTargetDrag<'_>);
                 let input = view.show_with_targets(ui, &self.scene, drag_rule);
                 self.view = view;
-                if input.camera_moved {
-                    self.dirty = true;
-                }
                 if let Some(pointer) = ui.input(|i| i.pointer.interact_pos())
                     && (input.clicked.is_some() || input.secondary_clicked.is_some())
                 {
@@ -235,14 +235,9 @@ impl Viewer {
         self.show_popup(ui.ctx(), at);
         // Plugins' own windows (a camera's image), through egui.
         let (egui_ctx, now) = (ui.ctx().clone(), Instant::now());
-        for slot in &mut self.slots {
-            let mut ctx = PluginContext {
-                scene: &mut self.scene,
-                device: slot.device.as_deref(),
-                anchors: &mut self.anchors,
-                now,
-            };
-            slot.plugin.windows(&egui_ctx, &mut ctx);
+        for i in 0..self.slots.len() {
+            let (plugin, mut ctx) = self.plugin_in_context(i, now);
+            plugin.windows(&egui_ctx, &mut ctx);
         }
     }
 
@@ -268,7 +263,6 @@ impl Viewer {
         }
         if t && !typing {
             self.view.camera.toggle_projection();
-            self.dirty = true;
         }
     }
 
@@ -280,23 +274,18 @@ impl Viewer {
         let now = Instant::now();
         let mut activate = None;
         let mut used = None;
-        for (i, slot) in self.slots.iter_mut().enumerate() {
+        for i in 0..self.slots.len() {
             let active = self.active == Some(i);
-            let mut title = slot.plugin.title();
+            let (plugin, mut ctx) = self.plugin_in_context(i, now);
+            let mut title = plugin.title();
             if active {
                 title.push_str("  (active)");
             }
             egui::CollapsingHeader::new(title)
                 .id_salt(("plugin", i))
                 .show(ui, |ui| {
-                    let mut ctx = PluginContext {
-                        scene: &mut self.scene,
-                        device: slot.device.as_deref(),
-                        anchors: &mut self.anchors,
-                        now,
-                    };
-                    slot.plugin.ui(ui, &mut ctx);
-                    for service in slot.plugin.services() {
+                    plugin.ui(ui, &mut ctx);
+                    for service in plugin.services() {
                         if ui
                             .button(service.name)
                             .on_hover_text(service.description)
@@ -305,7 +294,7 @@ impl Viewer {
                             used = Some((i, service.name));
                         }
                     }
-                    if slot.plugin.can_be_active() && !active && ui.button("Select").clicked() {
+                    if plugin.can_be_active() && !active && ui.button("Select").clicked() {
                         activate = Some(i);
                     }
                 });
@@ -348,18 +337,12 @@ impl Viewer {
     /// The active handler's controls (a robot's joystick), over the view's bottom right.
     fn active_controls(&mut self, egui_ctx: &egui::Context, view_rect: egui::Rect) {
         let Some(active) = self.active else { return };
-        let slot = &mut self.slots[active];
-        let mut ctx = PluginContext {
-            scene: &mut self.scene,
-            device: slot.device.as_deref(),
-            anchors: &mut self.anchors,
-            now: Instant::now(),
-        };
+        let (plugin, mut ctx) = self.plugin_in_context(active, Instant::now());
         egui::Area::new(egui::Id::unique("pv3d-active-controls"))
             .pivot(egui::Align2::RIGHT_BOTTOM)
             .fixed_pos(view_rect.right_bottom() - egui::vec2(10.0, 10.0))
             .show(egui_ctx, |ui| {
-                egui::Frame::popup(ui.style()).show(ui, |ui| slot.plugin.active_ui(ui, &mut ctx));
+                egui::Frame::popup(ui.style()).show(ui, |ui| plugin.active_ui(ui, &mut ctx));
             });
     }
 

@@ -1,9 +1,10 @@
-//! The viewer in a real window (eframe + glow), and the same viewer offscreen for
-//! `--screenshot` with no X server.
+//! The viewer in a real window (eframe + glow), and the window's own screenshot. (With no X
+//! server, `--screenshot` draws offscreen instead: [`crate::headless`].)
 //!
-//! Redraw policy: the robot threads call a waker when data arrives; the waker asks egui for a
-//! repaint *within* the redraw interval, so however many messages arrive the UI runs at most
-//! once per interval, and not at all while nothing changes. Input repaints at once.
+//! Redraw policy: the robot threads call a waker when data arrives or a server answers; the
+//! waker asks egui for a repaint *within* the redraw interval, so however many messages arrive
+//! the UI runs at most once per interval, and not at all while nothing changes. Input repaints
+//! at once.
 
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
@@ -12,7 +13,6 @@ use std::time::{Duration, Instant};
 use eframe::egui;
 use image::RgbaImage;
 
-use super::headless_ui::HeadlessUi;
 use super::viewer::Viewer;
 
 /// When the window redraws.
@@ -38,7 +38,7 @@ struct Wake {
 }
 
 impl UiWaker {
-    /// New data arrived: schedule a repaint one interval after the last frame started — not
+    /// New data arrived, or a server answered: schedule a repaint one interval after the last frame started — not
     /// one interval from now, which would add the frame's own time to every period (a frame
     /// of 90 ms made a 0.10 s interval into 0.19 s).
     pub fn wake(&self) {
@@ -46,6 +46,12 @@ impl UiWaker {
             let due = wake.interval.saturating_sub(wake.last_frame.elapsed());
             wake.ctx.request_repaint_after(due);
         }
+    }
+
+    /// The wake-up to give the servers ([`super::ViewerBuilder::wake_with`]).
+    pub fn notifier(&self) -> player_proto::client::Notifier {
+        let waker = self.clone();
+        Arc::new(move || waker.wake())
     }
 
     /// A frame is starting.
@@ -83,17 +89,17 @@ struct WindowApp {
     started: Instant,
     shot_requested: bool,
     shot_done: Arc<Mutex<Option<Result<(), String>>>>,
-    on_frame: Box<dyn FnMut(&mut Viewer)>,
 }
 
 impl eframe::App for WindowApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.waker.frame_started();
         self.frames += 1;
-        (self.on_frame)(&mut self.viewer);
+        if self.frames == 1 {
+            tracing::debug!("the window drew its first frame");
+        }
         self.viewer.update(Instant::now());
         self.viewer.ui(ui);
-        self.viewer.dirty = false;
         if self.policy == RedrawPolicy::WhenIdle {
             ui.ctx().request_repaint();
         }
@@ -171,14 +177,9 @@ pub struct WindowOptions {
     pub frame_stats: bool,
 }
 
-/// Runs the viewer in a window until it is closed. `on_frame` runs before every UI pass
-/// (e.g. to step an embedded simulation's bookkeeping).
-pub fn run_window(
-    viewer: Viewer,
-    options: WindowOptions,
-    waker: UiWaker,
-    on_frame: Box<dyn FnMut(&mut Viewer)>,
-) -> Result<(), String> {
+/// Runs the viewer in a window until it is closed; `waker` is the one its servers were given
+/// (see [`super::ViewerBuilder::wake_with`]).
+pub fn run_window(viewer: Viewer, options: WindowOptions, waker: UiWaker) -> Result<(), String> {
     let interval = match options.policy {
         RedrawPolicy::OnChange { interval } => interval,
         RedrawPolicy::WhenIdle => Duration::ZERO,
@@ -201,7 +202,6 @@ pub fn run_window(
         started: Instant::now(),
         shot_requested: false,
         shot_done: Arc::default(),
-        on_frame,
     };
     eframe::run_native(
         &options.title,
@@ -212,29 +212,4 @@ pub fn run_window(
         }),
     )
     .map_err(|e| e.to_string())
-}
-
-/// Runs the viewer offscreen for `after`, redrawing at `interval`, and returns the last frame.
-pub fn headless_screenshot(
-    viewer: &mut Viewer,
-    size: (u32, u32),
-    after: Duration,
-    interval: Duration,
-    mut on_frame: impl FnMut(&mut Viewer),
-) -> Result<RgbaImage, String> {
-    let mut ui = HeadlessUi::new(size.0, size.1).map_err(|e| e.to_string())?;
-    let started = Instant::now();
-    loop {
-        on_frame(viewer);
-        viewer.update(Instant::now());
-        ui.run(|ui| viewer.ui(ui));
-        if started.elapsed() >= after {
-            break;
-        }
-        std::thread::sleep(interval.min(after.saturating_sub(started.elapsed())));
-    }
-    // Two more passes so that layouts settle with the final data.
-    ui.run(|ui| viewer.ui(ui));
-    ui.run(|ui| viewer.ui(ui));
-    Ok(ui.read_pixels())
 }

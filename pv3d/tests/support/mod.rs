@@ -3,11 +3,14 @@
 
 #![allow(dead_code)] // each test file uses its own part
 
+pub mod xvfb;
+
 use std::path::Path;
 use std::process::{Command, Output};
 
 use image::{Rgba, RgbaImage};
-use pv3d::render::{HeadlessGl, OrbitCamera, SceneBatch, SceneRenderer};
+use pv3d::headless::HeadlessGl;
+use pv3d::render::{OrbitCamera, SceneBatch, SceneRenderer};
 
 /// The pv3d binary, run from the checkout's top folder (so `stage-worlds/…` and `configs/…`
 /// paths work as in the README).

@@ -3,7 +3,7 @@
 
 use std::time::Instant;
 
-use framework::plugin::{Handled, InputEvent, PluginContext};
+use framework::plugin::{Handled, InputEvent};
 use framework::scene::NodeId;
 
 use super::{Viewer, popups};
@@ -11,14 +11,8 @@ use super::{Viewer, popups};
 impl Viewer {
     /// Sends an event to one plugin.
     pub(super) fn send(&mut self, index: usize, event: &InputEvent) -> Handled {
-        let slot = &mut self.slots[index];
-        let mut ctx = PluginContext {
-            scene: &mut self.scene,
-            device: slot.device.as_deref(),
-            anchors: &mut self.anchors,
-            now: Instant::now(),
-        };
-        slot.plugin.on_event(event, &mut ctx)
+        let (plugin, mut ctx) = self.plugin_in_context(index, Instant::now());
+        plugin.on_event(event, &mut ctx)
     }
 
     /// Tells every plugin to stop (space key, focus lost, quitting).
@@ -44,7 +38,6 @@ impl Viewer {
         if let Some(new) = index {
             self.send(new, &InputEvent::Activated(true));
         }
-        self.dirty = true;
     }
 
     /// The plugin owning a scene node (the node itself or one of its ancestors).
@@ -64,7 +57,6 @@ impl Viewer {
         // A click elsewhere in the view closes the popup, and only that: a robot is not sent
         // off by the click that dismissed its menu (clicks on the popup never reach the view).
         if self.popup.take().is_some() {
-            self.dirty = true;
             return;
         }
         let owner = picked.and_then(|n| self.owner_of(n));
@@ -90,13 +82,11 @@ impl Viewer {
         if let Some(active) = self.active
             && self.send(active, &event) == Handled::Yes
         {
-            self.dirty = true;
             return;
         }
         if let Some(o) = owner
             && self.send(o, &event) == Handled::Yes
         {
-            self.dirty = true;
             return;
         }
         // The world: a click on empty ground deselects.
@@ -118,7 +108,6 @@ impl Viewer {
     pub fn drag_target(&mut self, point: glam::Vec3) {
         if let Some(active) = self.active {
             self.send(active, &InputEvent::TargetDragged(point));
-            self.dirty = true;
         }
     }
 
@@ -130,7 +119,6 @@ impl Viewer {
             Some(p) => self.send(active, &InputEvent::GroundClicked(p)),
             None => self.send(active, &InputEvent::TargetDragCancelled),
         };
-        self.dirty = true;
     }
 
     /// Whether a drag pressed on this ray starts a target drag: it starts on the active robot.

@@ -8,7 +8,6 @@ use std::time::Instant;
 
 use eframe::egui;
 use framework::action::{Action, ObjectRef};
-use framework::plugin::PluginContext;
 use framework::scene::NodeId;
 
 use super::Viewer;
@@ -47,7 +46,6 @@ impl Viewer {
             target,
             actions,
         });
-        self.dirty = true;
         true
     }
 
@@ -92,15 +90,8 @@ impl Viewer {
             });
             return false;
         }
-        let slot = &mut self.slots[plugin];
-        let mut ctx = PluginContext {
-            scene: &mut self.scene,
-            device: slot.device.as_deref(),
-            anchors: &mut self.anchors,
-            now: Instant::now(),
-        };
-        slot.plugin.run_action(name, &target, &mut ctx);
-        self.dirty = true;
+        let (plugin, mut ctx) = self.plugin_in_context(plugin, Instant::now());
+        plugin.run_action(name, &target, &mut ctx);
         true
     }
 
@@ -111,7 +102,7 @@ impl Viewer {
     /// Clicking service `name` of plugin `index` in the item tree: runs it, or opens its
     /// popup. Returns whether the plugin offers that service.
     pub fn use_service(&mut self, index: usize, name: &str) -> bool {
-        let Some(slot) = self.slots.get_mut(index) else {
+        let Some(slot) = self.slots.get(index) else {
             return false;
         };
         let Some(service) = slot.plugin.services().into_iter().find(|s| s.name == name) else {
@@ -123,15 +114,9 @@ impl Viewer {
                 name: service.name,
             });
         } else {
-            let mut ctx = PluginContext {
-                scene: &mut self.scene,
-                device: slot.device.as_deref(),
-                anchors: &mut self.anchors,
-                now: Instant::now(),
-            };
-            slot.plugin.run_service(service.name, &mut ctx);
+            let (plugin, mut ctx) = self.plugin_in_context(index, Instant::now());
+            plugin.run_service(service.name, &mut ctx);
         }
-        self.dirty = true;
         true
     }
 
@@ -151,18 +136,12 @@ impl Viewer {
             Popup::Actions { actions, .. } => actions.clone(),
             Popup::Service { .. } => Vec::new(),
         };
-        let slot = &mut self.slots[plugin];
-        let mut ctx = PluginContext {
-            scene: &mut self.scene,
-            device: slot.device.as_deref(),
-            anchors: &mut self.anchors,
-            now: Instant::now(),
-        };
         // The window's title names what the popup is about; the full line goes inside.
         let short = match popup {
             Popup::Actions { target, .. } => target.name.clone(),
             Popup::Service { name, .. } => name.to_string(),
         };
+        let (plugin, mut ctx) = self.plugin_in_context(plugin, Instant::now());
         egui::Window::new(short)
             .id(egui::Id::unique("pv3d-popup"))
             .default_pos(at)
@@ -171,7 +150,7 @@ impl Viewer {
             .show(egui_ctx, |ui| {
                 ui.small(&title);
                 if let Some(name) = service {
-                    keep = slot.plugin.service_popup(name, ui, &mut ctx);
+                    keep = plugin.service_popup(name, ui, &mut ctx);
                     return;
                 }
                 for action in &actions {
@@ -191,7 +170,6 @@ impl Viewer {
             self.choose_action(name);
         } else if !keep {
             self.popup = None;
-            self.dirty = true;
         }
     }
 }

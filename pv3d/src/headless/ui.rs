@@ -5,7 +5,7 @@ use eframe::egui;
 use eframe::egui_glow;
 use image::RgbaImage;
 
-use crate::render::{HeadlessError, HeadlessGl};
+use super::gl::{HeadlessError, HeadlessGl};
 
 /// An offscreen egui screen of a fixed size.
 pub struct HeadlessUi {
