@@ -61,6 +61,9 @@ pub struct ClientOptions {
     /// enough, because a Player server legitimately sends nothing while no device has data.
     /// Choose it longer than the biggest message takes to arrive.
     pub stall_timeout: Option<Duration>,
+    /// Runs on the robot thread whenever there is something new to read: a data message was
+    /// stored, or a handshake completed (a server that answered late or came back, with its
+    /// device list). A viewer wakes its window with it.
     pub notifier: Option<Notifier>,
 }
 

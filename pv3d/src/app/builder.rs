@@ -9,7 +9,6 @@ use std::time::Duration;
 
 use player_proto::client::Notifier;
 
-use super::arrival_watch::ArrivalWatch;
 use super::viewer::{SaveTarget, Viewer};
 use crate::composition::Composer;
 use crate::composition::{Composition, PluginInstance};
@@ -127,9 +126,6 @@ impl ViewerParts {
         });
         viewer.view.camera.projection = builder.projection;
         if !builder.composition.clients.is_empty() {
-            viewer.arrival_watch = builder
-                .wake
-                .map(|wake| ArrivalWatch::start(robots.clone(), wake));
             viewer.robots = Some(robots);
             viewer.composer = Some(composer);
         }

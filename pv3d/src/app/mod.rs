@@ -1,7 +1,6 @@
 //! The application: building the viewer from a composition, the world window's contents, the
 //! 3D view widget, and running the UI in a window. (Offscreen: [`crate::headless`].)
 
-mod arrival_watch;
 pub mod builder;
 pub mod status_panel;
 pub mod view3d;

@@ -43,9 +43,6 @@ pub struct Viewer {
     active: Option<usize>,
     /// Plugins that could not be made, with why.
     pub errors: Vec<String>,
-    /// Wakes the window when one of `robots` answers. Declared before `robots` so that it
-    /// stops before they are dropped.
-    pub(crate) arrival_watch: Option<super::arrival_watch::ArrivalWatch>,
     /// The Player servers, for the status panel.
     pub robots: Option<Arc<crate::robots::RobotManager>>,
     /// Turns the handlers into plugins for servers that answer late (needs `robots`).
@@ -82,7 +79,6 @@ impl Viewer {
             view: View3d::default(),
             active: None,
             errors: Vec::new(),
-            arrival_watch: None,
             robots: None,
             composer: None,
             status: Default::default(),
