@@ -48,6 +48,10 @@ pub struct ClientOptions {
     /// Ask the server to keep only the newest DATA message per device and subtype in its queue
     /// (a slow reader then gets fresh data, never a backlog).
     pub replace_old_data: bool,
+    /// An observer: commands and configuration requests are refused in the client, before
+    /// they reach the socket (see [`super::RequestError::ReadOnly`]); Player 3 itself has no
+    /// read-only access to ask the server for.
+    pub read_only: bool,
     pub backoff: Backoff,
     /// Largest message body accepted; bigger ones end the connection before any allocation.
     pub max_body: usize,
@@ -71,6 +75,7 @@ impl Default for ClientOptions {
             request_timeout: Duration::from_secs(5),
             data_mode: DataMode::Push,
             replace_old_data: true,
+            read_only: false,
             backoff: Backoff::default(),
             max_body: DEFAULT_MAX_BODY,
             max_pending_requests: 256,
@@ -87,6 +92,7 @@ impl fmt::Debug for ClientOptions {
             .field("request_timeout", &self.request_timeout)
             .field("data_mode", &self.data_mode)
             .field("replace_old_data", &self.replace_old_data)
+            .field("read_only", &self.read_only)
             .field("backoff", &self.backoff)
             .field("max_body", &self.max_body)
             .field("max_pending_requests", &self.max_pending_requests)

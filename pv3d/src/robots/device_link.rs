@@ -40,9 +40,11 @@ fn failure(e: RequestError) -> RequestFailure {
     match e {
         RequestError::Timeout(_) => RequestFailure::Timeout,
         RequestError::Disconnected(why) => RequestFailure::Disconnected(why),
-        RequestError::Nack(_) | RequestError::AccessDenied(_) | RequestError::TooManyPending(_) => {
-            RequestFailure::Nack
-        }
+        RequestError::Nack(_)
+        | RequestError::AccessDenied(_)
+        | RequestError::TooManyPending(_)
+        | RequestError::ReadOnly(_)
+        | RequestError::Untyped(_) => RequestFailure::Nack,
     }
 }
 
