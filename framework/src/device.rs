@@ -120,6 +120,11 @@ pub trait DeviceAccess: Send + Sync {
     /// Sends a request; the ticket receives the ACK (or the failure).
     fn request(&self, subtype: u8, body: Body) -> ReplyTicket;
     fn link_state(&self) -> LinkState;
+    /// Whether this device is only observed (commands and configuration requests are refused
+    /// before they are sent): a plugin then offers no tele-operation.
+    fn read_only(&self) -> bool {
+        false
+    }
 }
 
 /// An in-memory device for tests and demos: data is pushed in, commands and requests are

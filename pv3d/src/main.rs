@@ -14,7 +14,7 @@ use pv3d::app::{
 use pv3d::composition::{Composer, Composition, ParserRegistry, emit_document};
 use pv3d::embedded_world::serve_world;
 use pv3d::render::Projection;
-use pv3d::robots::RobotManager;
+use pv3d::robots::{RobotManager, RobotOptions};
 
 /// Player Viewer 3D: compose Player devices into a 3D viewer and tele-operation tool.
 #[derive(Parser, Debug)]
@@ -81,6 +81,11 @@ struct Cli {
     /// Seconds to wait for the Player servers' device lists before building the scene.
     #[arg(long, default_value_t = 3.0, value_name = "SECONDS")]
     connect_timeout: f64,
+
+    /// Watch only: the clients are read-only (no command or configuration request is ever
+    /// sent) and the viewer offers no tele-operation, targets or click-to-go.
+    #[arg(long)]
+    observe: bool,
 
     /// The view to start in: the map-like top view or the perspective one (T switches).
     #[arg(long, value_enum, default_value_t = StartView::Top)]
@@ -164,9 +169,12 @@ fn main() -> Result<()> {
     };
     let waker = UiWaker::default();
     let wake = waker.clone();
-    let robots = Arc::new(RobotManager::start(
+    let robots = Arc::new(RobotManager::start_with(
         &composition.clients,
         Some(Arc::new(move || wake.wake())),
+        RobotOptions {
+            observe: cli.observe,
+        },
     ));
     robots.wait_for_handshakes(Duration::from_secs_f64(cli.connect_timeout));
     let mut composer = Composer::new(composition.clone());

@@ -278,6 +278,10 @@ impl Viewer {
             ui.colored_label(egui::Color32::from_rgb(230, 90, 80), error);
         }
         let now = Instant::now();
+        let observing = self.observing();
+        if observing {
+            ui.strong("Observing: read-only, no tele-operation");
+        }
         let mut activate = None;
         let mut used = None;
         for (i, slot) in self.slots.iter_mut().enumerate() {
@@ -296,7 +300,13 @@ impl Viewer {
                         now,
                     };
                     slot.plugin.ui(ui, &mut ctx);
-                    for service in slot.plugin.services() {
+                    // An observer's services would command the robot: none are offered.
+                    let services = if observing {
+                        Vec::new()
+                    } else {
+                        slot.plugin.services()
+                    };
+                    for service in services {
                         if ui
                             .button(service.name)
                             .on_hover_text(service.description)
@@ -305,7 +315,8 @@ impl Viewer {
                             used = Some((i, service.name));
                         }
                     }
-                    if slot.plugin.can_be_active() && !active && ui.button("Select").clicked() {
+                    let selectable = slot.plugin.can_be_active() && !observing;
+                    if selectable && !active && ui.button("Select").clicked() {
                         activate = Some(i);
                     }
                 });

@@ -75,4 +75,8 @@ impl DeviceAccess for ClientDevice {
             ConnectionState::Failed(why) => LinkState::Failed(why),
         }
     }
+
+    fn read_only(&self) -> bool {
+        self.client.is_read_only()
+    }
 }

@@ -30,7 +30,8 @@ impl Viewer {
 
     /// Makes plugin `index` the active event handler (or none).
     pub fn set_active(&mut self, index: Option<usize>) {
-        if self.active == index {
+        // An observer drives nothing: no robot becomes the handler of clicks and targets.
+        if self.active == index || (index.is_some() && self.observing()) {
             return;
         }
         if let Some(old) = self.active {
@@ -45,6 +46,11 @@ impl Viewer {
             self.send(new, &InputEvent::Activated(true));
         }
         self.dirty = true;
+    }
+
+    /// Whether the viewer only observes (`pv3d --observe`).
+    pub fn observing(&self) -> bool {
+        self.robots.as_ref().is_some_and(|r| r.observing())
     }
 
     /// The plugin owning a scene node (the node itself or one of its ancestors).
