@@ -34,8 +34,8 @@ impl Backoff {
     }
 }
 
-/// Called from the robot thread whenever new data was stored. Keep it cheap: wake a UI, bump a
-/// counter.
+/// Called from the robot thread whenever new data was stored or the connection state changed.
+/// Keep it cheap: wake a UI, bump a counter.
 pub type Notifier = Arc<dyn Fn() + Send + Sync>;
 
 /// Client settings; the defaults suit a viewer.
