@@ -101,6 +101,12 @@ impl Observers {
         Ok(observers)
     }
 
+    /// Every observer goes at once, mid-stream, without unsubscribing: their sockets close
+    /// with data unread, as when a viewer's process dies.
+    pub fn vanish(self) {
+        self.runtime.shutdown_background();
+    }
+
     /// Stops every observer and gathers what they saw.
     pub fn finish(self) -> CrowdReport {
         let _ = self.stop.send(true);

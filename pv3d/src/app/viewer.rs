@@ -350,10 +350,12 @@ impl Viewer {
             }
         }
         ui.separator();
-        ui.small(
+        ui.small(if self.observing() {
+            "drag: pan/orbit · wheel: zoom · T: top/perspective"
+        } else {
             "drag: pan/orbit · wheel: zoom · T: top/perspective · Tab: next robot · Space: stop all \
-             · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions",
-        );
+             · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions"
+        });
     }
 
     /// The active handler's controls (a robot's joystick), over the view's bottom right.

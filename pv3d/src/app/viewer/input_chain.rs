@@ -23,6 +23,10 @@ impl Viewer {
 
     /// Tells every plugin to stop (space key, focus lost, quitting).
     pub fn stop_all(&mut self) {
+        // An observer has nothing moving to stop, and could not send the stop.
+        if self.observing() {
+            return;
+        }
         for i in 0..self.slots.len() {
             self.send(i, &InputEvent::StopAll);
         }

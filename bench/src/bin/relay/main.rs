@@ -12,25 +12,22 @@
 //! decodes it. The children stop when this process closes their standard input, whatever
 //! ends it. Loopback only.
 
-use std::io::{BufRead, BufReader, Write};
-use std::process::{Child, ChildStdout, Command, Stdio};
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+mod faults;
+mod roles;
+
 use std::time::Duration;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
 use bench::clock::{SharedWindow, unix_seconds};
 use bench::observers::Observers;
 use bench::process_stats::ProcessSample;
 use bench::recorder::LatencySummary;
-use bench::traffic::{DATA_SUBTYPE, DEVICES, bodies};
+use bench::traffic::DEVICES;
 use clap::{Parser, ValueEnum};
-use player_proto::server::{Server, ServerConfig};
-use player_proto::wire::DevAddr;
-use player_relay::{Relay, RelayConfig, Route};
+use roles::RoleProcess;
 
 /// How long observers and relay may take to come up before the run is called off.
-const SETUP_TIMEOUT: Duration = Duration::from_secs(60);
+pub(crate) const SETUP_TIMEOUT: Duration = Duration::from_secs(60);
 /// Time after the window closes for messages sent inside it to arrive.
 const DRAIN: Duration = Duration::from_millis(500);
 
@@ -43,28 +40,34 @@ enum Role {
 
 #[derive(Parser, Debug)]
 #[command(about = "1 000 observers of 8 robots: straight to the servers vs through player-relay")]
-struct Args {
+pub(crate) struct Args {
     #[arg(long, value_enum, default_value_t = Role::Orchestrator, hide = true)]
-    role: Role,
+    pub(crate) role: Role,
     /// Upstream ports, for the relay role.
     #[arg(long, value_delimiter = ',', hide = true)]
-    upstream: Vec<u16>,
+    pub(crate) upstream: Vec<u16>,
+    /// Listening ports, for the relay role (default: any free ones).
+    #[arg(long, value_delimiter = ',', hide = true)]
+    pub(crate) listen: Vec<u16>,
+    /// Instead of the load phases: kill the relay mid-stream and let observers vanish.
+    #[arg(long)]
+    pub(crate) faults: bool,
     #[arg(long, default_value_t = 8)]
-    robots: usize,
+    pub(crate) robots: usize,
     #[arg(long, default_value_t = 1000)]
-    observers: usize,
+    pub(crate) observers: usize,
     /// Laser beams per scan.
     #[arg(long, default_value_t = 361)]
-    beams: usize,
+    pub(crate) beams: usize,
     /// Messages per second per device.
     #[arg(long, default_value_t = 10.0)]
-    rate_hz: f64,
+    pub(crate) rate_hz: f64,
     /// Receiving before the window opens, seconds.
     #[arg(long, default_value_t = 3.0)]
-    warmup: f64,
+    pub(crate) warmup: f64,
     /// Measurement window per phase, seconds.
     #[arg(long, default_value_t = 10.0)]
-    seconds: f64,
+    pub(crate) seconds: f64,
 }
 
 fn main() -> Result<()> {
@@ -80,155 +83,10 @@ fn main() -> Result<()> {
         bail!("--rate-hz must be 0.1..1000, --warmup 0..600 and --seconds 0.1..600");
     }
     match args.role {
-        Role::Robots => serve_robots(&args),
-        Role::Relay => serve_relay(&args),
+        Role::Robots => roles::serve_robots(&args),
+        Role::Relay => roles::serve_relay(&args),
+        Role::Orchestrator if args.faults => faults::run(&args),
         Role::Orchestrator => orchestrate(&args),
-    }
-}
-
-/// Prints the ports on a line of their own for the orchestrator.
-fn announce(ports: &[u16]) -> Result<()> {
-    let list: Vec<String> = ports.iter().map(u16::to_string).collect();
-    let mut out = std::io::stdout().lock();
-    writeln!(out, "PORTS {}", list.join(","))?;
-    out.flush()?;
-    Ok(())
-}
-
-/// Blocks until the orchestrator closes our standard input (or goes away).
-fn until_stdin_closes() {
-    let mut sink = String::new();
-    while std::io::stdin().read_line(&mut sink).is_ok_and(|n| n > 0) {
-        sink.clear();
-    }
-}
-
-fn serve_robots(args: &Args) -> Result<()> {
-    let mut config = ServerConfig::default();
-    config.thread_name = "bench-robots".into();
-    for _ in 0..args.robots {
-        let robot = config.robot(0);
-        for interf in DEVICES {
-            config.device(robot, DevAddr::local(interf, 0), Publishing);
-        }
-    }
-    let server = Server::start(config)?;
-    let ports = server.ports().to_vec();
-    let stop = Arc::new(AtomicBool::new(false));
-    let generator = {
-        let (publisher, stop, ports) = (server.publisher(), stop.clone(), ports.clone());
-        let (bodies, rate) = (bodies(args.beams), args.rate_hz);
-        std::thread::Builder::new()
-            .name("bench-traffic".into())
-            .spawn(move || {
-                // Robots staggered evenly over the period, as independent robots are.
-                let slot = 1.0 / rate / ports.len() as f64;
-                let start = unix_seconds();
-                let mut event = 0u64;
-                while !stop.load(Ordering::Relaxed) {
-                    let due = start + event as f64 * slot;
-                    let now = unix_seconds();
-                    if due > now {
-                        std::thread::sleep(Duration::from_secs_f64(due - now));
-                        continue;
-                    }
-                    let port = ports[(event % ports.len() as u64) as usize];
-                    for (interf, body) in DEVICES.iter().zip(&bodies) {
-                        let mut addr = DevAddr::local(*interf, 0);
-                        addr.robot = u32::from(port);
-                        publisher.publish(addr, DATA_SUBTYPE, body.clone(), unix_seconds());
-                    }
-                    event += 1;
-                }
-            })?
-    };
-    announce(&ports)?;
-    until_stdin_closes();
-    stop.store(true, Ordering::Relaxed);
-    let _ = generator.join();
-    Ok(())
-}
-
-/// A device that only publishes.
-struct Publishing;
-
-impl player_proto::server::Device for Publishing {
-    fn driver_name(&self) -> &str {
-        "bench"
-    }
-}
-
-fn serve_relay(args: &Args) -> Result<()> {
-    let routes = args
-        .upstream
-        .iter()
-        .map(|&port| Route {
-            host: "127.0.0.1".into(),
-            port,
-            listen_port: 0,
-        })
-        .collect();
-    let relay = Relay::start(RelayConfig {
-        routes,
-        ..RelayConfig::default()
-    })?;
-    let serving = relay.wait_serving(SETUP_TIMEOUT);
-    if serving != args.upstream.len() {
-        bail!(
-            "the relay serves {serving} of {} robots",
-            args.upstream.len()
-        );
-    }
-    let ports: Vec<u16> = relay
-        .robots()
-        .iter()
-        .filter_map(|r| r.listen_port())
-        .collect();
-    announce(&ports)?;
-    until_stdin_closes();
-    Ok(())
-}
-
-/// A child process of this binary in another role.
-struct RoleProcess {
-    child: Child,
-    ports: Vec<u16>,
-}
-
-impl RoleProcess {
-    fn spawn(args: &Args, role: &str, extra: &[String]) -> Result<RoleProcess> {
-        let mut child = Command::new(std::env::current_exe()?)
-            .args(["--role", role])
-            .args(["--robots", &args.robots.to_string()])
-            .args(["--beams", &args.beams.to_string()])
-            .args(["--rate-hz", &args.rate_hz.to_string()])
-            .args(extra)
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .spawn()
-            .with_context(|| format!("starting the {role} process"))?;
-        let stdout: ChildStdout = child.stdout.take().context("child stdout")?;
-        let mut line = String::new();
-        BufReader::new(stdout).read_line(&mut line)?;
-        let ports = line
-            .trim()
-            .strip_prefix("PORTS ")
-            .with_context(|| format!("the {role} process said {line:?}"))?
-            .split(',')
-            .map(str::parse)
-            .collect::<Result<Vec<u16>, _>>()?;
-        Ok(RoleProcess { child, ports })
-    }
-
-    fn sample(&self) -> Result<ProcessSample> {
-        Ok(ProcessSample::take(self.child.id())?)
-    }
-}
-
-impl Drop for RoleProcess {
-    fn drop(&mut self) {
-        drop(self.child.stdin.take());
-        let _ = self.child.wait();
     }
 }
 
