@@ -33,6 +33,15 @@ impl BenchClock {
     }
 }
 
+/// Seconds since the Unix epoch: the clock processes on one machine share, for a benchmark
+/// whose sender and receivers are different processes (f64 keeps it to about half a
+/// microsecond).
+pub fn unix_seconds() -> f64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0.0, |d| d.as_secs_f64())
+}
+
 /// The measurement window `[start, end)` in clock seconds, shared by the traffic generator
 /// (which counts what it publishes inside it) and the receivers (which count what they store
 /// of it). Empty until set, so warm-up and drain traffic is never counted.

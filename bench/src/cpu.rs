@@ -103,7 +103,7 @@ fn parse_switches(status: &str) -> u64 {
 
 /// utime + stime from a `stat` line; the command name may hold spaces and parentheses, so
 /// fields are counted from the last ')'.
-fn parse_stat_ticks(stat: &str) -> Option<u64> {
+pub(crate) fn parse_stat_ticks(stat: &str) -> Option<u64> {
     let rest = &stat[stat.rfind(')')? + 1..];
     let fields: Vec<&str> = rest.split_whitespace().collect();
     // After the name: state is field 3, utime field 14, stime field 15 (1-based, man proc).

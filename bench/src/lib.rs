@@ -24,8 +24,10 @@
 
 pub mod clock;
 pub mod cpu;
+pub mod observers;
 pub mod plot;
 pub mod polling;
+pub mod process_stats;
 pub mod recorder;
 pub mod report;
 pub mod run;

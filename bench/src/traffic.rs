@@ -163,7 +163,7 @@ impl Drop for Traffic {
 }
 
 /// Position2d state and a laser scan of `beams` readings over 270°, in [`DEVICES`] order.
-fn bodies(beams: usize) -> [Body; 2] {
+pub fn bodies(beams: usize) -> [Body; 2] {
     let fov = 270f32.to_radians();
     let scan = LaserScan {
         min_angle: -fov / 2.0,

@@ -5,6 +5,8 @@
 //! * [`interfaces`] — one module per Player interface with its typed messages.
 //! * [`message`] — a header and a typed body; decoding dispatches on interface code.
 //! * [`delivery`] — data modes and replace rules, shared by [`client`] and [`server`].
+//! * [`access`] — what an observer may send, for read-only clients and for servers that
+//!   let only one client command.
 //!
 //! Decoding never panics and never allocates more than the bytes received justify; encoding
 //! writes into any [`bytes::BufMut`].
@@ -12,6 +14,7 @@
 #[macro_use]
 mod macros;
 
+pub mod access;
 pub mod capture;
 pub mod client;
 pub mod delivery;

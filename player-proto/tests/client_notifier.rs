@@ -1,5 +1,5 @@
 //! The client's notifier runs whenever there is something new to read — data, and also a
-//! handshake completed with no data at all, so that a viewer learns of a server that answered
+//! change of connection state such as a handshake completed with no data at all, so that a viewer learns of a server that answered
 //! late before any of its devices is subscribed.
 
 use std::sync::Arc;

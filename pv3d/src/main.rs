@@ -80,6 +80,11 @@ struct Cli {
     #[arg(long, default_value_t = 3.0, value_name = "SECONDS")]
     connect_timeout: f64,
 
+    /// Watch only: the clients are read-only (no command or configuration request is ever
+    /// sent) and the viewer offers no tele-operation, targets or click-to-go.
+    #[arg(long)]
+    observe: bool,
+
     /// The view to start in: the map-like top view or the perspective one (T switches).
     #[arg(long, value_enum, default_value_t = StartView::Top)]
     view: StartView,
@@ -164,6 +169,7 @@ fn main() -> Result<()> {
     let mut builder = ViewerBuilder::new(composition)
         .wake_with(waker.notifier())
         .connect_timeout(Duration::from_secs_f64(cli.connect_timeout))
+        .observe(cli.observe)
         .start_view(match cli.view {
             StartView::Top => Projection::Top,
             StartView::Perspective => Projection::Perspective,

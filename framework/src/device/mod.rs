@@ -66,6 +66,11 @@ pub trait DeviceAccess: Send + Sync {
     /// Sends a request of `kind`; the reply arrives later.
     fn request(&self, kind: MessageKind, body: Body) -> PendingReply;
     fn link_state(&self) -> ConnectionState;
+    /// Whether this device is only observed (commands and configuration requests are refused
+    /// before they are sent): a plugin then offers no tele-operation.
+    fn read_only(&self) -> bool {
+        false
+    }
 }
 
 impl dyn DeviceAccess + '_ {

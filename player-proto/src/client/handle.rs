@@ -154,6 +154,12 @@ impl Client {
         self.store.latest(addr.interf, addr.index, subtype)
     }
 
+    /// The newest DATA message of every subscribed device and subtype, for whoever passes all
+    /// of it on (a relay) without knowing which subtypes a device sends.
+    pub fn newest_data(&self) -> Vec<Stamped> {
+        self.store.all_latest()
+    }
+
     /// Messages and bytes received from a device so far.
     pub fn stats(&self, addr: DevAddr) -> DeviceStats {
         self.store.stats(addr.interf, addr.index)

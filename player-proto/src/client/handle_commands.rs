@@ -9,6 +9,7 @@ use super::commands::Command;
 use super::handle::Client;
 use super::requests::{PendingReply, ReplySender, RequestError, thread_ended};
 use super::{DataMode, ReplaceRule};
+use crate::access::observer_may_send;
 use crate::interfaces::player::{self, Player};
 use crate::message::{Body, Message};
 use crate::wire::{DevAddr, MsgType};
@@ -31,7 +32,16 @@ impl Client {
         pending.wait(self.options.request_timeout + STUCK_THREAD_MARGIN)
     }
 
-    /// Sends a request; the reply arrives later.
+    /// Refuses what a read-only client must not send.
+    fn check_read_only(&self, message: &Message) -> Result<(), RequestError> {
+        if self.options.read_only && !observer_may_send(message) {
+            return Err(RequestError::ReadOnly(message.header.to_string()));
+        }
+        Ok(())
+    }
+
+    /// Sends a request; the reply arrives later. A read-only client's configuration request
+    /// fails at once with [`RequestError::ReadOnly`].
     pub fn request_async(&self, addr: DevAddr, subtype: u8, body: Body) -> PendingReply {
         let message = Message::new(
             self.addr(addr.interf, addr.index),
@@ -39,6 +49,11 @@ impl Client {
             subtype,
             body,
         );
+        if let Err(refused) = self.check_read_only(&message) {
+            let (reply, receiver) = mpsc::channel();
+            let _ = reply.send(Err(refused));
+            return PendingReply(receiver);
+        }
         self.ask(|reply| Command::Request { message, reply })
     }
 
@@ -47,12 +62,20 @@ impl Client {
         self.wait(self.request_async(addr, subtype, body))
     }
 
-    /// Sends a command (fire and forget). The subtype follows from the typed body.
+    /// Sends a command (fire and forget). The subtype follows from the typed body. A
+    /// read-only client sends nothing and logs why; [`Client::try_command`] returns it.
     pub fn command(&self, addr: DevAddr, body: impl Into<Body>) {
+        if let Err(e) = self.try_command(addr, body) {
+            tracing::warn!(port = self.port, "command dropped: {e}");
+        }
+    }
+
+    /// Sends a command, saying whether it went to the robot thread: a read-only client
+    /// refuses it with [`RequestError::ReadOnly`].
+    pub fn try_command(&self, addr: DevAddr, body: impl Into<Body>) -> Result<(), RequestError> {
         let body = body.into();
         let Some((_, subtype)) = body.kind() else {
-            tracing::warn!("a command needs a typed body");
-            return;
+            return Err(RequestError::Untyped(format!("{addr}")));
         };
         let message = Message::new(
             self.addr(addr.interf, addr.index),
@@ -60,7 +83,15 @@ impl Client {
             subtype,
             body,
         );
-        let _ = self.commands.send(Command::Send(message));
+        self.check_read_only(&message)?;
+        self.commands
+            .send(Command::Send(message))
+            .map_err(|_| thread_ended())
+    }
+
+    /// Whether this client refuses commands and configuration requests.
+    pub fn is_read_only(&self) -> bool {
+        self.options.read_only
     }
 
     /// Subscribes to a device; returns its driver name. An ACK that carries an error access is

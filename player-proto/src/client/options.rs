@@ -34,8 +34,8 @@ impl Backoff {
     }
 }
 
-/// Called from the robot thread whenever new data was stored. Keep it cheap: wake a UI, bump a
-/// counter.
+/// Called from the robot thread whenever new data was stored or the connection state changed.
+/// Keep it cheap: wake a UI, bump a counter.
 pub type Notifier = Arc<dyn Fn() + Send + Sync>;
 
 /// Client settings; the defaults suit a viewer.
@@ -48,6 +48,10 @@ pub struct ClientOptions {
     /// Ask the server to keep only the newest DATA message per device and subtype in its queue
     /// (a slow reader then gets fresh data, never a backlog).
     pub replace_old_data: bool,
+    /// An observer: commands and configuration requests are refused in the client, before
+    /// they reach the socket (see [`super::RequestError::ReadOnly`]); Player 3 itself has no
+    /// read-only access to ask the server for.
+    pub read_only: bool,
     pub backoff: Backoff,
     /// Largest message body accepted; bigger ones end the connection before any allocation.
     pub max_body: usize,
@@ -62,8 +66,8 @@ pub struct ClientOptions {
     /// Choose it longer than the biggest message takes to arrive.
     pub stall_timeout: Option<Duration>,
     /// Runs on the robot thread whenever there is something new to read: a data message was
-    /// stored, or a handshake completed (a server that answered late or came back, with its
-    /// device list). A viewer wakes its window with it.
+    /// stored, or the connection state changed (a server that answered late or came back,
+    /// with its device list, or one that went away). A viewer wakes its window with it.
     pub notifier: Option<Notifier>,
 }
 
@@ -74,6 +78,7 @@ impl Default for ClientOptions {
             request_timeout: Duration::from_secs(5),
             data_mode: DataMode::Push,
             replace_old_data: true,
+            read_only: false,
             backoff: Backoff::default(),
             max_body: DEFAULT_MAX_BODY,
             max_pending_requests: 256,
@@ -90,6 +95,7 @@ impl fmt::Debug for ClientOptions {
             .field("request_timeout", &self.request_timeout)
             .field("data_mode", &self.data_mode)
             .field("replace_old_data", &self.replace_old_data)
+            .field("read_only", &self.read_only)
             .field("backoff", &self.backoff)
             .field("max_body", &self.max_body)
             .field("max_pending_requests", &self.max_pending_requests)

@@ -26,6 +26,12 @@ pub enum RequestError {
     TooManyPending(usize),
     #[error("the subscription was refused (access {0})")]
     AccessDenied(u8),
+    /// A read-only client was asked to command or configure a device; nothing was sent.
+    #[error("read-only client: {0} was not sent")]
+    ReadOnly(String),
+    /// A command's body has no structure, so its subtype is unknown; nothing was sent.
+    #[error("a command to {0} needs a typed body")]
+    Untyped(String),
 }
 
 /// Where a reply goes. A std channel, so the user-facing side can wait on it from any thread,

@@ -119,8 +119,13 @@ impl Robot {
         }
     }
 
+    /// Publishes the connection state and tells the notifier, so that whoever redraws or
+    /// relays on new data also learns that the server went or came back.
     pub fn set_state(&self, state: ConnectionState) {
         self.board.publish(|s| s.state = state);
+        if let Some(notify) = &self.options.notifier {
+            notify();
+        }
     }
 
     /// Counts and logs a message from the server that could not be used.

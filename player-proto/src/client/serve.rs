@@ -43,9 +43,6 @@ impl Robot {
             tracing::info!(host = %self.host, port = self.port, "reconnected");
         }
         self.set_state(ConnectionState::Connected);
-        if let Some(notify) = &self.options.notifier {
-            notify();
-        }
         let mut serving = Serving {
             pending: PendingRequests::default(),
             pulls: Vec::new(),

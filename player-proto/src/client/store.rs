@@ -87,6 +87,11 @@ impl DataStore {
         lock(&self.latest).get(&(interf, index, subtype)).cloned()
     }
 
+    /// The newest message of every subscribed device and subtype.
+    pub fn all_latest(&self) -> Vec<Stamped> {
+        lock(&self.latest).values().cloned().collect()
+    }
+
     pub fn stats(&self, interf: Interface, index: u16) -> DeviceStats {
         lock(&self.stats)
             .get(&(interf, index))

@@ -26,6 +26,7 @@
 //! server.publisher().publish(addr, 1, Body::Laser(Laser::Scan(scan)), 0.0);
 //! ```
 
+mod control;
 mod device;
 mod publisher;
 mod queue;
@@ -33,9 +34,13 @@ mod session;
 mod state;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
-use std::sync::{Arc, Mutex};
+use std::sync::atomic::AtomicU64;
+use std::sync::{Arc, Condvar, Mutex};
+use std::time::{Duration, Instant};
 
 pub use crate::delivery::{DataMode, ReplaceAction, ReplaceRule};
+use control::CommandGate;
+pub use control::{Commanders, Peer};
 pub use device::{Device, Reply};
 pub use publisher::Publisher;
 pub use queue::{OutQueue, QUEUE_LIMIT};
@@ -51,6 +56,18 @@ pub struct ServerConfig {
     pub version: String,
     /// Largest message body accepted from a client.
     pub max_body: usize,
+    /// Who may command devices; everyone, as in Player, by default.
+    pub commanders: Commanders,
+    /// Replace rules every connection's queue starts with (a client adds its own after
+    /// them). `ReplaceRule::newest_data()` here gives a slow client fresh data rather than a
+    /// backlog without its asking.
+    pub queue_rules: Vec<ReplaceRule>,
+    /// The kernel send buffer of each connection, bytes (`None`: the system's, which on
+    /// loopback grows to megabytes). Small, it bounds how much stale data a slow client can
+    /// have waiting in the kernel while newer data replaces the older in its queue.
+    pub send_buffer: Option<usize>,
+    /// Name of the server's threads, to tell its CPU time from others' in one process.
+    pub thread_name: String,
     ports: Vec<u16>,
     devices: Vec<(usize, DevAddr, Box<dyn Device>)>,
 }
@@ -61,6 +78,10 @@ impl Default for ServerConfig {
             bind: IpAddr::V4(Ipv4Addr::LOCALHOST),
             version: "3.1.1-dev".into(),
             max_body: DEFAULT_MAX_BODY,
+            commanders: Commanders::Everyone,
+            queue_rules: Vec::new(),
+            send_buffer: None,
+            thread_name: "player-server".into(),
             ports: Vec::new(),
             devices: Vec::new(),
         }
@@ -101,7 +122,7 @@ pub enum ServerError {
 }
 
 /// How long dropping a [`Server`] waits for its sessions and listeners to close.
-const SHUTDOWN_WAIT: std::time::Duration = std::time::Duration::from_secs(2);
+const SHUTDOWN_WAIT: Duration = Duration::from_secs(2);
 
 /// A running server; stops when dropped.
 pub struct Server {
@@ -156,10 +177,15 @@ impl Server {
             host,
             devices,
             sessions: Mutex::default(),
+            gate: CommandGate::new(config.commanders),
+            queue_rules: config.queue_rules,
+            next_peer: AtomicU64::new(0),
+            open: Mutex::new(0),
+            open_changed: Condvar::new(),
         });
         let runtime = tokio::runtime::Builder::new_multi_thread()
             .worker_threads(2)
-            .thread_name("player-server")
+            .thread_name(config.thread_name)
             .enable_all()
             .build()
             .map_err(ServerError::Runtime)?;
@@ -167,6 +193,7 @@ impl Server {
             let state = state.clone();
             let banner = banner.clone();
             let max_body = config.max_body;
+            let send_buffer = config.send_buffer;
             runtime.spawn(async move {
                 let listener = match tokio::net::TcpListener::from_std(listener) {
                     Ok(l) => l,
@@ -178,6 +205,12 @@ impl Server {
                 loop {
                     match listener.accept().await {
                         Ok((stream, _)) => {
+                            if let Some(bytes) = send_buffer
+                                && let Err(e) =
+                                    socket2::SockRef::from(&stream).set_send_buffer_size(bytes)
+                            {
+                                tracing::warn!(port, "cannot size the send buffer: {e}");
+                            }
                             tokio::spawn(session::serve(
                                 stream,
                                 port,
@@ -188,7 +221,7 @@ impl Server {
                         }
                         Err(e) => {
                             tracing::warn!(port, "accept failed: {e}");
-                            tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+                            tokio::time::sleep(Duration::from_millis(50)).await;
                         }
                     }
                 }
@@ -215,6 +248,21 @@ impl Server {
         Publisher {
             state: self.state.clone(),
         }
+    }
+
+    /// Client connections being served now.
+    pub fn connections(&self) -> usize {
+        self.state.open_connections()
+    }
+
+    /// Waits until the number of connections satisfies `done`, at most `timeout`; returns it
+    /// if it did. Woken by every connection that opens or closes, never polling.
+    pub fn wait_for_connections(
+        &self,
+        timeout: Duration,
+        done: impl Fn(usize) -> bool,
+    ) -> Option<usize> {
+        self.state.wait_for_open(Instant::now() + timeout, done)
     }
 
     /// Stops accepting and drops every connection.

@@ -2,7 +2,9 @@
 //! Player 3 server does (§4 and §8.4 of the protocol notes), while a writer task drains the
 //! connection's outgoing queue.
 
+use std::net::{IpAddr, Ipv4Addr};
 use std::sync::Arc;
+use std::sync::atomic::Ordering;
 use std::time::{SystemTime, UNIX_EPOCH};
 
 use bytes::BytesMut;
@@ -10,9 +12,10 @@ use tokio::io::AsyncWriteExt;
 use tokio::net::TcpStream;
 use tokio::net::tcp::OwnedWriteHalf;
 
+use super::control::Peer;
 use super::device::Reply;
 use super::queue::data_request_ack;
-use super::state::{ServerState, SessionState};
+use super::state::{OpenConnection, ServerState, SessionState};
 use crate::delivery::{DataMode, ReplaceRule};
 use crate::interfaces::player::{
     self, CLOSE_MODE, DevList, DeviceReq, DriverInfo, ERROR_MODE, OPEN_MODE, Player,
@@ -36,16 +39,20 @@ pub(crate) async fn serve(
     banner: Banner,
     max_body: usize,
 ) {
-    let peer = stream
-        .peer_addr()
-        .map_or_else(|_| "?".to_string(), |a| a.to_string());
+    let peer_addr = stream.peer_addr().ok();
+    let peer = peer_addr.map_or_else(|| "?".to_string(), |a| a.to_string());
     let _ = stream.set_nodelay(true);
     let (read_half, mut write_half) = stream.into_split();
     if let Err(e) = write_half.write_all(&banner.to_bytes()).await {
         tracing::debug!(%peer, "client left before the banner: {e}");
         return;
     }
-    let session = Arc::new(SessionState::new(port));
+    let client = Peer {
+        id: state.next_peer.fetch_add(1, Ordering::Relaxed),
+        ip: peer_addr.map_or(IpAddr::V4(Ipv4Addr::UNSPECIFIED), |a| a.ip()),
+    };
+    let _open = OpenConnection::new(&state);
+    let session = Arc::new(SessionState::new(port, client, &state.queue_rules));
     state.register(&session);
     let writer = tokio::spawn(write_loop(write_half, session.clone()));
 
@@ -71,6 +78,7 @@ pub(crate) async fn serve(
         }
     }
     handler.unsubscribe_all();
+    state.gate.left(client);
     session.close();
     let _ = writer.await;
 }
@@ -134,6 +142,17 @@ impl Handler<'_> {
         };
         if matches!(message.body, Body::Unknown(_)) {
             tracing::debug!("dropped {}: no structure for that subtype", message.header);
+            return;
+        }
+        if !self.state.gate.admits(self.session.peer, &message) {
+            tracing::debug!(
+                port = self.port,
+                "refused {} from an observer",
+                message.header
+            );
+            if message.header.msg_type == MsgType::Req {
+                self.reply(&message, MsgType::Nack, Body::Empty);
+            }
             return;
         }
         let mut message = message;

@@ -1,13 +1,16 @@
 //! What a running server shares between its sessions and its publisher.
 
 use std::collections::{HashMap, HashSet};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Arc, Mutex, Weak};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::{Arc, Condvar, Mutex, MutexGuard, Weak};
+use std::time::Instant;
 
 use tokio::sync::Notify;
 
+use super::control::{CommandGate, Peer};
 use super::device::Device;
 use super::queue::OutQueue;
+use crate::delivery::ReplaceRule;
 use crate::message::Message;
 use crate::wire::{DevAddr, Interface};
 
@@ -20,6 +23,7 @@ pub(crate) struct DeviceSlot {
 /// One client connection, as the publisher sees it.
 pub(crate) struct SessionState {
     pub port: u16,
+    pub peer: Peer,
     pub subscriptions: Mutex<HashSet<(Interface, u16)>>,
     pub queue: Mutex<OutQueue>,
     pub wake_writer: Notify,
@@ -27,11 +31,17 @@ pub(crate) struct SessionState {
 }
 
 impl SessionState {
-    pub fn new(port: u16) -> SessionState {
+    /// A session whose queue starts with `rules`.
+    pub fn new(port: u16, peer: Peer, rules: &[ReplaceRule]) -> SessionState {
+        let mut queue = OutQueue::default();
+        for rule in rules {
+            queue.add_rule(*rule);
+        }
         SessionState {
             port,
+            peer,
             subscriptions: Mutex::default(),
-            queue: Mutex::default(),
+            queue: Mutex::new(queue),
             wake_writer: Notify::new(),
             closed: AtomicBool::new(false),
         }
@@ -61,9 +71,56 @@ pub(crate) struct ServerState {
     /// Live connections by port: a robot's data goes to that robot's port only, so publishing
     /// looks at its own port's connections, not at every connection of every robot.
     pub sessions: Mutex<HashMap<u16, Vec<Weak<SessionState>>>>,
+    /// Who may command devices.
+    pub gate: CommandGate,
+    /// The replace rules every connection's queue starts with.
+    pub queue_rules: Vec<ReplaceRule>,
+    /// For [`Peer::id`].
+    pub next_peer: AtomicU64,
+    /// Connections being served, with a signal on every change.
+    pub open: Mutex<usize>,
+    pub open_changed: Condvar,
+}
+
+/// Counts a connection as open while it lives.
+pub(crate) struct OpenConnection<'a>(&'a ServerState);
+
+impl<'a> OpenConnection<'a> {
+    pub fn new(state: &'a ServerState) -> OpenConnection<'a> {
+        *state.lock_open() += 1;
+        state.open_changed.notify_all();
+        OpenConnection(state)
+    }
+}
+
+impl Drop for OpenConnection<'_> {
+    fn drop(&mut self) {
+        *self.0.lock_open() -= 1;
+        self.0.open_changed.notify_all();
+    }
 }
 
 impl ServerState {
+    fn lock_open(&self) -> MutexGuard<'_, usize> {
+        // A plain counter cannot be left half-written.
+        self.open.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    pub fn open_connections(&self) -> usize {
+        *self.lock_open()
+    }
+
+    /// Blocks until the number of open connections satisfies `done` or `deadline` passes;
+    /// returns the number if it did.
+    pub fn wait_for_open(&self, deadline: Instant, done: impl Fn(usize) -> bool) -> Option<usize> {
+        let timeout = deadline.saturating_duration_since(Instant::now());
+        let (open, _) = self
+            .open_changed
+            .wait_timeout_while(self.lock_open(), timeout, |n| !done(*n))
+            .unwrap_or_else(|e| e.into_inner());
+        done(*open).then_some(*open)
+    }
+
     pub fn device(&self, port: u16, interf: Interface, index: u16) -> Option<&DeviceSlot> {
         self.devices.iter().find(|d| {
             d.addr.robot == u32::from(port) && d.addr.interf == interf && d.addr.index == index

@@ -85,6 +85,10 @@ impl Position2dPlugin {
 
     /// One step of tele-operation; returns whether the scene changed.
     pub(super) fn teleoperate(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+        if ctx.device.is_some_and(|d| d.read_only()) {
+            // Observed only: nothing to drive, and nothing would be sent.
+            return false;
+        }
         let connected = ctx.device.is_some_and(|d| d.is_connected());
         if !connected {
             // The connection dropped: forget what we were doing, so nothing resumes by itself.

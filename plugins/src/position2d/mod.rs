@@ -255,6 +255,10 @@ impl Plugin for Position2dPlugin {
                 ui.colored_label(egui::Color32::from_rgb(230, 190, 80), format!("{state:?}"));
             }
         }
+        if ctx.device.is_some_and(|d| d.read_only()) {
+            ui.small("observing: no tele-operation");
+            return;
+        }
         ui.add(egui::Slider::new(&mut self.limits.max_speed, 0.0..=2.0).text("max m/s"));
         ui.add(egui::Slider::new(&mut self.limits.max_turn, 0.0..=3.0).text("max rad/s"));
         ui.add(egui::Slider::new(&mut self.follow_distance, 0.0..=3.0).text("follow m"));

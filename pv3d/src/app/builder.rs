@@ -13,7 +13,7 @@ use super::viewer::{SaveTarget, Viewer};
 use crate::composition::Composer;
 use crate::composition::{Composition, PluginInstance};
 use crate::render::Projection;
-use crate::robots::RobotManager;
+use crate::robots::{RobotManager, RobotOptions};
 
 /// What the viewer is built from, and how.
 pub struct ViewerBuilder {
@@ -22,6 +22,7 @@ pub struct ViewerBuilder {
     connect_timeout: Duration,
     projection: Projection,
     save_to: Option<PathBuf>,
+    robot_options: RobotOptions,
 }
 
 impl ViewerBuilder {
@@ -34,7 +35,14 @@ impl ViewerBuilder {
             connect_timeout: Duration::from_secs(3),
             projection: Projection::Top,
             save_to: None,
+            robot_options: RobotOptions::default(),
         }
+    }
+
+    /// Watch only (`--observe`): read-only clients, no tele-operation.
+    pub fn observe(mut self, observe: bool) -> ViewerBuilder {
+        self.robot_options.observe = observe;
+        self
     }
 
     /// Called from the servers' threads whenever there is something new to draw: data, or a
@@ -66,9 +74,10 @@ impl ViewerBuilder {
     /// Starts a client for every server and waits, at most the connect timeout, for their
     /// handshakes; the plugin instances are made for the devices of the servers that answered.
     pub fn connect(self) -> ViewerParts {
-        let robots = Arc::new(RobotManager::start(
+        let robots = Arc::new(RobotManager::start_with(
             &self.composition.clients,
             self.wake.clone(),
+            self.robot_options,
         ));
         robots.wait_for_handshakes(self.connect_timeout);
         let mut composer = Composer::new(self.composition.clone());

@@ -268,6 +268,10 @@ impl Viewer {
             ui.colored_label(egui::Color32::from_rgb(230, 90, 80), error);
         }
         let now = Instant::now();
+        let observing = self.observing();
+        if observing {
+            ui.strong("Observing: read-only, no tele-operation");
+        }
         let mut activate = None;
         let mut used = None;
         for i in 0..self.slots.len() {
@@ -281,7 +285,13 @@ impl Viewer {
                 .id_salt(("plugin", i))
                 .show(ui, |ui| {
                     plugin.ui(ui, &mut ctx);
-                    for service in plugin.services() {
+                    // An observer's services would command the robot: none are offered.
+                    let services = if observing {
+                        Vec::new()
+                    } else {
+                        plugin.services()
+                    };
+                    for service in services {
                         if ui
                             .button(service.name)
                             .on_hover_text(service.description)
@@ -290,7 +300,8 @@ impl Viewer {
                             used = Some((i, service.name));
                         }
                     }
-                    if plugin.can_be_active() && !active && ui.button("Select").clicked() {
+                    let selectable = plugin.can_be_active() && !observing;
+                    if selectable && !active && ui.button("Select").clicked() {
                         activate = Some(i);
                     }
                 });
@@ -324,10 +335,12 @@ impl Viewer {
             }
         }
         ui.separator();
-        ui.small(
+        ui.small(if self.observing() {
+            "drag: pan/orbit · wheel: zoom · T: top/perspective"
+        } else {
             "drag: pan/orbit · wheel: zoom · T: top/perspective · Tab: next robot · Space: stop all \
-             · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions",
-        );
+             · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions"
+        });
     }
 
     /// The active handler's controls (a robot's joystick), over the view's bottom right.

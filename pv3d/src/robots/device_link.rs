@@ -55,4 +55,8 @@ impl DeviceAccess for ClientDevice {
     fn link_state(&self) -> ConnectionState {
         self.client.state()
     }
+
+    fn read_only(&self) -> bool {
+        self.client.is_read_only()
+    }
 }

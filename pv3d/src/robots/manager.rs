@@ -17,10 +17,19 @@ use crate::composition::{ClientDecl, FoundDevice};
 /// always answers); no answer, and the connection is dropped and re-established.
 const STALL_TIMEOUT: Duration = Duration::from_secs(3);
 
+/// How the viewer uses the robots.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct RobotOptions {
+    /// Read-only clients: the viewer watches, never commands or configures a robot.
+    pub observe: bool,
+}
+
 /// Every Player server of a composition: player-proto's [`MultiClient`] (one client per
 /// server), with the viewer's options and the device links plugins share.
 pub struct RobotManager {
     clients: MultiClient,
+    /// Every client is read-only (`pv3d --observe`).
+    observing: bool,
     links: std::sync::Mutex<HashMap<(String, u16, player_proto::DevAddr), Arc<ClientDevice>>>,
 }
 
@@ -28,10 +37,20 @@ impl RobotManager {
     /// Starts a client for each server (at once, in their own threads); `notifier` runs when
     /// any of them stored new data.
     pub fn start(servers: &[ClientDecl], notifier: Option<Notifier>) -> RobotManager {
+        RobotManager::start_with(servers, notifier, RobotOptions::default())
+    }
+
+    /// [`RobotManager::start`] with the viewer's choices.
+    pub fn start_with(
+        servers: &[ClientDecl],
+        notifier: Option<Notifier>,
+        robot_options: RobotOptions,
+    ) -> RobotManager {
         let mut clients = MultiClient::new();
         for server in servers {
             let options = ClientOptions {
                 notifier: notifier.clone(),
+                read_only: robot_options.observe,
                 // A viewer must show a robot whose server hangs, not its last data forever.
                 stall_timeout: Some(STALL_TIMEOUT),
                 ..ClientOptions::default()
@@ -42,8 +61,14 @@ impl RobotManager {
         }
         RobotManager {
             clients,
+            observing: robot_options.observe,
             links: Default::default(),
         }
+    }
+
+    /// Whether the viewer only observes: no command or configuration request leaves it.
+    pub fn observing(&self) -> bool {
+        self.observing
     }
 
     /// Waits until every server has answered its handshake or failed, at most `timeout`.

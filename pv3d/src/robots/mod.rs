@@ -4,4 +4,4 @@ mod device_link;
 mod manager;
 
 pub use device_link::ClientDevice;
-pub use manager::RobotManager;
+pub use manager::{RobotManager, RobotOptions};

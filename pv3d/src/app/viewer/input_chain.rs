@@ -17,6 +17,10 @@ impl Viewer {
 
     /// Tells every plugin to stop (space key, focus lost, quitting).
     pub fn stop_all(&mut self) {
+        // An observer has nothing moving to stop, and could not send the stop.
+        if self.observing() {
+            return;
+        }
         for i in 0..self.slots.len() {
             self.send(i, &InputEvent::StopAll);
         }
@@ -24,7 +28,8 @@ impl Viewer {
 
     /// Makes plugin `index` the active event handler (or none).
     pub fn set_active(&mut self, index: Option<usize>) {
-        if self.active == index {
+        // An observer drives nothing: no robot becomes the handler of clicks and targets.
+        if self.active == index || (index.is_some() && self.observing()) {
             return;
         }
         if let Some(old) = self.active {
@@ -38,6 +43,11 @@ impl Viewer {
         if let Some(new) = index {
             self.send(new, &InputEvent::Activated(true));
         }
+    }
+
+    /// Whether the viewer only observes (`pv3d --observe`).
+    pub fn observing(&self) -> bool {
+        self.robots.as_ref().is_some_and(|r| r.observing())
     }
 
     /// The plugin owning a scene node (the node itself or one of its ancestors).

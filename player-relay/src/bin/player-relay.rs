@@ -1,0 +1,127 @@
+//! `player-relay ROBOT…` — serve Player robots to many observers over one connection per
+//! robot. Each ROBOT is `HOST:PORT` (observers connect to PORT + `--port-offset` on the relay)
+//! or `HOST:PORT=LISTEN`.
+
+use std::net::IpAddr;
+use std::process::ExitCode;
+use std::time::Duration;
+
+use anyhow::{Result, bail};
+use clap::Parser;
+use player_proto::server::Commanders;
+use player_relay::{DEFAULT_SEND_BUFFER, Relay, RelayConfig, Route};
+
+/// Where observers of a robot on port P connect by default, when the relay shares the robots'
+/// machine: P + 1000 (6665 → 7665).
+const DEFAULT_PORT_OFFSET: u16 = 1000;
+
+/// Serve Player robots to many read-only observers, with one connection per robot.
+#[derive(Parser, Debug)]
+#[command(version, about)]
+struct Cli {
+    /// Robot servers, `HOST:PORT` or `HOST:PORT=LISTEN`.
+    #[arg(required = true, value_parser = parse_robot)]
+    robots: Vec<(String, u16, Option<u16>)>,
+
+    /// Address observers connect to (0.0.0.0 for every interface).
+    #[arg(long, default_value = "127.0.0.1")]
+    bind: IpAddr,
+
+    /// Listen on PORT + this for a robot given as `HOST:PORT` (0 when the relay runs on a
+    /// machine of its own).
+    #[arg(long, default_value_t = DEFAULT_PORT_OFFSET)]
+    port_offset: u16,
+
+    /// Clients from this address may command the robots; everyone else only observes.
+    #[arg(long, value_name = "IP", conflicts_with = "first_to_command")]
+    controller: Option<IpAddr>,
+
+    /// The first client to command a robot's devices controls it until it disconnects.
+    #[arg(long)]
+    first_to_command: bool,
+
+    /// Kernel send buffer per observer, bytes: what a slow observer may have waiting.
+    #[arg(long, default_value_t = DEFAULT_SEND_BUFFER)]
+    send_buffer: usize,
+
+    /// Stop after this many seconds (default: run until killed).
+    #[arg(long, value_name = "SECONDS")]
+    seconds: Option<f64>,
+}
+
+fn parse_robot(text: &str) -> Result<(String, u16, Option<u16>), String> {
+    let (server, listen) = match text.split_once('=') {
+        Some((server, listen)) => {
+            let listen = listen
+                .parse::<u16>()
+                .map_err(|_| format!("bad listen port {listen:?} in {text:?}"))?;
+            (server, Some(listen))
+        }
+        None => (text, None),
+    };
+    let (host, port) = server
+        .rsplit_once(':')
+        .ok_or_else(|| format!("expected HOST:PORT[=LISTEN], got {text:?}"))?;
+    let port = port
+        .parse::<u16>()
+        .map_err(|_| format!("bad port {port:?} in {text:?}"))?;
+    if host.is_empty() {
+        return Err(format!("no host in {text:?}"));
+    }
+    Ok((host.to_string(), port, listen))
+}
+
+fn main() -> ExitCode {
+    player_tools::logging::init("info");
+    player_tools::exit::exit_code("player-relay", run(Cli::parse()))
+}
+
+fn run(cli: Cli) -> Result<()> {
+    if cli.seconds.is_some_and(|s| !(0.0..=1e9).contains(&s)) {
+        bail!("--seconds must be from 0 to 1e9");
+    }
+    let mut routes = Vec::new();
+    for (host, port, listen) in cli.robots {
+        let listen_port = match listen {
+            Some(listen) => listen,
+            None => port.checked_add(cli.port_offset).ok_or_else(|| {
+                anyhow::anyhow!(
+                    "{host}:{port} + --port-offset {} is past the last port",
+                    cli.port_offset
+                )
+            })?,
+        };
+        routes.push(Route {
+            host,
+            port,
+            listen_port,
+        });
+    }
+    let commanders = match (cli.controller, cli.first_to_command) {
+        (Some(ip), _) => Commanders::Address(ip),
+        (None, true) => Commanders::FirstToAsk,
+        (None, false) => Commanders::Nobody,
+    };
+    for route in &routes {
+        eprintln!(
+            "{}:{} → {}:{}",
+            route.host, route.port, cli.bind, route.listen_port
+        );
+    }
+    let relay = Relay::start(RelayConfig {
+        routes,
+        bind: cli.bind,
+        commanders,
+        send_buffer: cli.send_buffer,
+        ..RelayConfig::default()
+    })?;
+    match cli.seconds {
+        Some(seconds) => std::thread::sleep(Duration::from_secs_f64(seconds)),
+        // Serves until killed; the relay's own threads do the work.
+        None => loop {
+            std::thread::park();
+        },
+    }
+    drop(relay);
+    Ok(())
+}

@@ -1,0 +1,143 @@
+//! # player-relay: many observers, one connection per robot
+//!
+//! A classroom or a demo wants hundreds of viewers on a handful of robots; a Player server
+//! serves every client itself, so each viewer costs the robot's own machine a connection,
+//! a queue and the encoding of every message. The relay takes that load off the robots:
+//!
+//! * **upstream** — one `player_proto::client::Client` per robot server (read-only unless a
+//!   commander is allowed), subscribing to a device when its first observer does, and
+//!   reconnecting when the robot's server goes away;
+//! * **downstream** — per robot, a `player_proto::server` on a port of the relay, serving the
+//!   robot's devices to any Player client over the ordinary protocol ([`downstream`]);
+//! * newest data per device: every observer's queue starts with a replace rule, and each
+//!   connection's kernel send buffer is small, so a slow observer gets fresh data rather than
+//!   a backlog, and nobody waits for it;
+//! * read-only by default: observers may subscribe and read geometry, but their commands and
+//!   configuration requests are refused (see `player_proto::server::Commanders`); one
+//!   designated controller may command.
+//!
+//! When a robot's server goes away, the relay drops that robot's observers and stops
+//! listening on its port until the robot is back: observers see their server go and come back,
+//! as they would without the relay.
+
+pub mod downstream;
+mod relayed_device;
+pub mod robot;
+
+use std::net::{IpAddr, Ipv4Addr};
+use std::time::{Duration, Instant};
+
+use player_proto::client::{ClientOptions, ConnectError};
+use player_proto::server::Commanders;
+
+pub use downstream::DownstreamOptions;
+pub use robot::RelayedRobot;
+
+/// Kernel send buffer of each observer's connection: a few laser scans. More only lets stale
+/// data wait in the kernel for a slow observer.
+pub const DEFAULT_SEND_BUFFER: usize = 64 * 1024;
+
+/// Why the relay could not start.
+#[derive(Debug, thiserror::Error)]
+pub enum RelayError {
+    #[error("no robot to relay")]
+    NoRobots,
+    #[error("cannot start the upstream client: {0}")]
+    Upstream(#[from] ConnectError),
+    #[error("cannot start a relay thread: {0}")]
+    Thread(String),
+}
+
+/// One robot server and the relay port its observers connect to.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Route {
+    pub host: String,
+    pub port: u16,
+    /// 0: any free port (see [`RelayedRobot::listen_port`]).
+    pub listen_port: u16,
+}
+
+/// What to relay, and how.
+#[derive(Debug, Clone)]
+pub struct RelayConfig {
+    pub routes: Vec<Route>,
+    /// Where observers connect; loopback by default.
+    pub bind: IpAddr,
+    /// Who may command; nobody by default.
+    pub commanders: Commanders,
+    pub send_buffer: usize,
+    /// The upstream clients' options (timeouts, backoff); `read_only` and `notifier` are the
+    /// relay's.
+    pub upstream: ClientOptions,
+}
+
+impl Default for RelayConfig {
+    fn default() -> Self {
+        RelayConfig {
+            routes: Vec::new(),
+            bind: IpAddr::V4(Ipv4Addr::LOCALHOST),
+            commanders: Commanders::Nobody,
+            send_buffer: DEFAULT_SEND_BUFFER,
+            upstream: ClientOptions::default(),
+        }
+    }
+}
+
+/// A running relay; stops when dropped.
+pub struct Relay {
+    robots: Vec<RelayedRobot>,
+}
+
+impl Relay {
+    /// Starts a client per robot; each robot is served downstream as soon as its server
+    /// answers (see [`Relay::wait_serving`]).
+    pub fn start(config: RelayConfig) -> Result<Relay, RelayError> {
+        if config.routes.is_empty() {
+            return Err(RelayError::NoRobots);
+        }
+        let downstream = DownstreamOptions {
+            bind: config.bind,
+            commanders: config.commanders,
+            send_buffer: config.send_buffer,
+        };
+        let upstream = ClientOptions {
+            // A relay nobody may command cannot move a robot, whatever goes wrong above it.
+            read_only: config.commanders == Commanders::Nobody,
+            // The newest scan is all an observer gets: the robot need not queue older ones.
+            replace_old_data: true,
+            ..config.upstream
+        };
+        let robots = config
+            .routes
+            .iter()
+            .map(|route| {
+                RelayedRobot::start(
+                    &route.host,
+                    route.port,
+                    route.listen_port,
+                    upstream.clone(),
+                    downstream.clone(),
+                )
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Relay { robots })
+    }
+
+    pub fn robots(&self) -> &[RelayedRobot] {
+        &self.robots
+    }
+
+    /// Waits until every robot is served downstream, at most `timeout`; returns how many are.
+    pub fn wait_serving(&self, timeout: Duration) -> usize {
+        let deadline = Instant::now() + timeout;
+        self.robots
+            .iter()
+            .filter(|r| r.wait_serving(true, deadline.saturating_duration_since(Instant::now())))
+            .count()
+    }
+
+    /// Observers connected now, over all robots.
+    pub fn observers(&self) -> usize {
+        self.robots.iter().map(RelayedRobot::observers).sum()
+    }
+}
