@@ -124,6 +124,8 @@ bodies! {
     Bumper => BUMPER, interfaces::bumper::Bumper;
     Power => POWER, interfaces::power::Power;
     Gripper => GRIPPER, interfaces::gripper::Gripper;
+    Localize => LOCALIZE, interfaces::localize::Localize;
+    Planner => PLANNER, interfaces::planner::Planner;
 }
 
 impl From<interfaces::universal::Universal> for Body {

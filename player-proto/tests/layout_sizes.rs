@@ -53,4 +53,8 @@ sizes! {
     gripper::GripperData => 12, gripper::GripperGeometry => 104,
     map::MapInfo => 36, map::MapData => 28, map::MapVector => 24,
     speech::SpeechCmd => 8,
+    localize::LocalizeHypothesis => 80, localize::LocalizeData => 20, localize::LocalizeSetPose => 72,
+    localize::LocalizeParticle => 32, localize::LocalizeParticles => 40,
+    planner::PlannerData => 88, planner::PlannerCmd => 24, planner::PlannerWaypoints => 16,
+    planner::PlannerEnable => 4,
 }

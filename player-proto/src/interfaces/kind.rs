@@ -122,7 +122,9 @@ pub trait InterfaceMessages {
 mod tests {
     use super::*;
     use crate::interfaces::laser::{self, Laser, LaserGeometry, LaserScan};
-    use crate::interfaces::{bumper, camera, fiducial, map, player, position2d, ranger, sonar};
+    use crate::interfaces::{
+        bumper, camera, fiducial, localize, map, planner, player, position2d, ranger, sonar,
+    };
     use crate::wire::{DevAddr, MsgType};
     use bytes::Bytes;
 
@@ -182,6 +184,14 @@ mod tests {
                 ranger::Ranger::REQ_GET_CONFIG.subtype(),
             ),
             (sonar::REQ_GET_GEOM, sonar::Sonar::REQ_GET_GEOM.subtype()),
+            (
+                localize::REQ_GET_PARTICLES,
+                localize::Localize::REQ_GET_PARTICLES.subtype(),
+            ),
+            (
+                planner::REQ_GET_WAYPOINTS,
+                planner::Planner::REQ_GET_WAYPOINTS.subtype(),
+            ),
         ];
         for (i, (named, generated)) in pairs.into_iter().enumerate() {
             assert_eq!(named, generated, "pair {i}");
