@@ -45,6 +45,10 @@ generated_interfaces! {
     GRIPPER => interfaces::gripper::Gripper,
     LOCALIZE => interfaces::localize::Localize,
     PLANNER => interfaces::planner::Planner,
+    PTZ => interfaces::ptz::Ptz,
+    IR => interfaces::ir::Ir,
+    POINTCLOUD3D => interfaces::pointcloud3d::Pointcloud3d,
+    SPEECH_RECOGNITION => interfaces::speech_recognition::SpeechRecognition,
 }
 
 /// Any body: a typed one of a listed interface, a universal request, no body, or raw bytes.

@@ -123,7 +123,8 @@ mod tests {
     use super::*;
     use crate::interfaces::laser::{self, Laser, LaserGeometry, LaserScan};
     use crate::interfaces::{
-        bumper, camera, fiducial, localize, map, planner, player, position2d, ranger, sonar,
+        bumper, camera, fiducial, ir, localize, map, planner, player, position2d, ptz, ranger,
+        sonar,
     };
     use crate::wire::{DevAddr, MsgType};
     use bytes::Bytes;
@@ -192,6 +193,9 @@ mod tests {
                 planner::REQ_GET_WAYPOINTS,
                 planner::Planner::REQ_GET_WAYPOINTS.subtype(),
             ),
+            (ptz::REQ_GEOM, ptz::Ptz::REQ_GEOM.subtype()),
+            (ptz::REQ_STATUS, ptz::Ptz::REQ_STATUS.subtype()),
+            (ir::REQ_POSE, ir::Ir::REQ_POSE.subtype()),
         ];
         for (i, (named, generated)) in pairs.into_iter().enumerate() {
             assert_eq!(named, generated, "pair {i}");
@@ -241,7 +245,7 @@ mod tests {
         let ranger_data = MessageKind::data_of(Interface::RANGER).count();
         assert_eq!(ranger_data, 5);
         assert_eq!(
-            MessageKind::data_of(Interface::PTZ).count(),
+            MessageKind::data_of(Interface::AUDIO).count(),
             0,
             "not decoded"
         );
