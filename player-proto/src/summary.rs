@@ -8,6 +8,9 @@ use crate::interfaces::{
     player::Player, position2d::Position2d, power::Power, ranger::Ranger, simulation::Simulation,
     sonar::Sonar,
 };
+use crate::interfaces::{
+    ir::Ir, pointcloud3d::Pointcloud3d, ptz::Ptz, speech_recognition::SpeechRecognition,
+};
 use crate::message::{Body, Message};
 
 fn nearest(values: impl Iterator<Item = f64>) -> String {
@@ -174,6 +177,28 @@ pub fn summarize(message: &Message) -> String {
         Body::Power(Power::State(p)) => format!("{:.1} V, {:.0} %", p.volts, p.percent),
         Body::Localize(l) => localize(l),
         Body::Planner(p) => planner(p),
+        Body::Ptz(Ptz::State(s)) => format!(
+            "pan {:.1}° tilt {:.1}° fov {:.1}°",
+            s.pan.to_degrees(),
+            s.tilt.to_degrees(),
+            s.zoom.to_degrees()
+        ),
+        Body::Ptz(Ptz::Command(c)) => format!(
+            "to pan {:.1}° tilt {:.1}° fov {:.1}°",
+            c.pan.to_degrees(),
+            c.tilt.to_degrees(),
+            c.zoom.to_degrees()
+        ),
+        Body::Ir(Ir::Ranges(r)) => format!(
+            "{} ranges, {}",
+            r.ranges.len(),
+            nearest(r.ranges.iter().map(|&r| f64::from(r)))
+        ),
+        Body::Ir(Ir::Pose(p)) => format!("{} sensors", p.poses.len()),
+        Body::Pointcloud3d(Pointcloud3d::State(c)) => format!("{} points", c.points.len()),
+        Body::SpeechRecognition(SpeechRecognition::Text(t)) => {
+            format!("heard {:?}", t.text.as_str())
+        }
         other => format!("{other:?}"),
     }
 }
@@ -246,7 +271,9 @@ mod tests {
     use super::*;
     use crate::interfaces::localize::{LocalizeData, LocalizeHypothesis};
     use crate::interfaces::planner::{PlannerData, PlannerWaypoints};
+    use crate::interfaces::{ir::IrData, ptz::PtzData, speech_recognition::SpeechRecognitionData};
     use crate::message::Body;
+    use crate::wire::PlayerString;
     use crate::wire::{DevAddr, MsgType};
 
     fn line(addr: &str, body: impl Into<Body>) -> String {
@@ -297,6 +324,31 @@ mod tests {
         assert_eq!(
             line("planner:0", Planner::Waypoints(plan)),
             "3 waypoints, 8.98 m"
+        );
+    }
+
+    #[test]
+    fn devices_read_in_their_units() {
+        let ptz = PtzData {
+            pan: std::f32::consts::FRAC_PI_2,
+            zoom: std::f32::consts::FRAC_PI_4,
+            ..Default::default()
+        };
+        assert_eq!(
+            line("ptz:0", Ptz::State(ptz)),
+            "pan 90.0° tilt 0.0° fov 45.0°"
+        );
+        let ir = IrData {
+            ranges: vec![0.8, 0.25, f32::NAN],
+            ..Default::default()
+        };
+        assert_eq!(line("ir:0", Ir::Ranges(ir)), "3 ranges, min 0.25 m");
+        let heard = SpeechRecognitionData {
+            text: PlayerString::new("go left"),
+        };
+        assert_eq!(
+            line("speech_recognition:0", SpeechRecognition::Text(heard)),
+            "heard \"go left\""
         );
     }
 }
