@@ -1,17 +1,15 @@
 //! One-line human summaries of messages, for `playerdump`, `playerprint` and logs.
 
-use crate::interfaces::common::Pose2d;
-use crate::interfaces::localize::{Localize, cov};
-use crate::interfaces::planner::Planner;
+use crate::interfaces::gripper::{self, Gripper};
 use crate::interfaces::{
-    blobfinder::Blobfinder, camera::Camera, fiducial::Fiducial, laser::Laser, map::Map,
-    player::Player, position2d::Position2d, power::Power, ranger::Ranger, simulation::Simulation,
-    sonar::Sonar,
-};
-use crate::interfaces::{
-    ir::Ir, pointcloud3d::Pointcloud3d, ptz::Ptz, speech_recognition::SpeechRecognition,
+    blobfinder::Blobfinder, bumper::Bumper, camera::Camera, fiducial::Fiducial, ir::Ir,
+    laser::Laser, map::Map, player::Player, pointcloud3d::Pointcloud3d, position2d::Position2d,
+    power::Power, ptz::Ptz, ranger::Ranger, simulation::Simulation, sonar::Sonar,
+    speech_recognition::SpeechRecognition,
 };
 use crate::message::{Body, Message};
+
+mod navigation;
 
 fn nearest(values: impl Iterator<Item = f64>) -> String {
     match values.filter(|v| v.is_finite()).min_by(f64::total_cmp) {
@@ -163,6 +161,38 @@ pub fn summarize(message: &Message) -> String {
             }
             other => format!("{other:?}"),
         },
+        Body::Map(Map::Info(i) | Map::InfoData(i)) => format!(
+            "{}×{} cells of {:.3} m, origin {}",
+            i.width,
+            i.height,
+            i.scale,
+            navigation::pose2d(&i.origin)
+        ),
+        Body::Map(Map::Vector(v)) => format!(
+            "{} segments in ({:.2}, {:.2})–({:.2}, {:.2})",
+            v.segments.len(),
+            v.minx,
+            v.miny,
+            v.maxx,
+            v.maxy
+        ),
+        Body::Bumper(Bumper::State(b)) => {
+            let pressed: Vec<String> = (b.bumpers.iter().enumerate())
+                .filter(|(_, on)| **on != 0)
+                .map(|(i, _)| i.to_string())
+                .collect();
+            format!(
+                "{} bumpers, pressed: [{}]",
+                b.bumpers.len(),
+                pressed.join(" ")
+            )
+        }
+        Body::Gripper(Gripper::State(g)) => format!(
+            "{}, beams {:#b}, {} stored",
+            gripper_state(g.state),
+            g.beams,
+            g.stored
+        ),
         Body::Map(Map::Tile(t)) => format!(
             "tile {}×{} at ({}, {}), {} compressed bytes",
             t.width,
@@ -175,8 +205,8 @@ pub fn summarize(message: &Message) -> String {
             format!("{} blobs in {}×{}", b.blobs.len(), b.width, b.height)
         }
         Body::Power(Power::State(p)) => format!("{:.1} V, {:.0} %", p.volts, p.percent),
-        Body::Localize(l) => localize(l),
-        Body::Planner(p) => planner(p),
+        Body::Localize(l) => navigation::localize(l),
+        Body::Planner(p) => navigation::planner(p),
         Body::Ptz(Ptz::State(s)) => format!(
             "pan {:.1}° tilt {:.1}° fov {:.1}°",
             s.pan.to_degrees(),
@@ -203,128 +233,27 @@ pub fn summarize(message: &Message) -> String {
     }
 }
 
-fn pose2d(p: &Pose2d) -> String {
-    pose(p.px, p.py, p.pa)
-}
-
-/// Standard deviations of x, y and yaw: a reader judges a belief by its spread, not by
-/// variances in m² and rad².
-fn spread(c: &[f64; 6]) -> String {
-    let sd = |v: f64| v.max(0.0).sqrt();
-    format!(
-        "± ({:.3} m, {:.3} m, {:.1}°)",
-        sd(c[cov::XX]),
-        sd(c[cov::YY]),
-        sd(c[cov::AA]).to_degrees()
-    )
-}
-
-fn localize(l: &Localize) -> String {
-    match l {
-        Localize::Hypotheses(d) => match d.best() {
-            Some(best) => format!(
-                "{} hypotheses, best {} {} weight {:.2}",
-                d.hypoths.len(),
-                pose2d(&best.mean),
-                spread(&best.cov),
-                best.alpha
-            ),
-            None => "no hypotheses".into(),
-        },
-        Localize::SetPose(p) => format!("set pose {} {}", pose2d(&p.mean), spread(&p.cov)),
-        Localize::Particles(p) => format!(
-            "{} particles, mean {} variance {:.3e}",
-            p.particles.len(),
-            pose2d(&p.mean),
-            p.variance
-        ),
-    }
-}
-
-fn planner(p: &Planner) -> String {
-    match p {
-        Planner::State(s) if s.is_done() => {
-            format!("done at {}, goal {}", pose2d(&s.pos), pose2d(&s.goal))
-        }
-        Planner::State(s) if s.is_valid() => format!(
-            "at {}, waypoint {} of {} {}, goal {}",
-            pose2d(&s.pos),
-            s.waypoint_idx,
-            s.waypoints_count,
-            pose2d(&s.waypoint),
-            pose2d(&s.goal)
-        ),
-        Planner::State(s) => format!("no plan, at {}", pose2d(&s.pos)),
-        Planner::Goal(c) => format!("go to {}", pose2d(&c.goal)),
-        Planner::Start(c) => format!("start from {}", pose2d(&c.goal)),
-        Planner::Waypoints(w) => format!(
-            "{} waypoints, {:.2} m",
-            w.waypoints.len(),
-            w.waypoints_distance
-        ),
-        Planner::Enable(e) => if e.is_on() { "enable" } else { "disable" }.into(),
+fn gripper_state(state: u8) -> String {
+    match state {
+        gripper::STATE_OPEN => "open".into(),
+        gripper::STATE_CLOSED => "closed".into(),
+        gripper::STATE_MOVING => "moving".into(),
+        gripper::STATE_ERROR => "error".into(),
+        other => format!("state {other}"),
     }
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
-    use crate::interfaces::localize::{LocalizeData, LocalizeHypothesis};
-    use crate::interfaces::planner::{PlannerData, PlannerWaypoints};
+    use crate::interfaces::bumper::BumperData;
+    use crate::interfaces::gripper::GripperData;
     use crate::interfaces::{ir::IrData, ptz::PtzData, speech_recognition::SpeechRecognitionData};
-    use crate::message::Body;
-    use crate::wire::PlayerString;
-    use crate::wire::{DevAddr, MsgType};
+    use crate::wire::{DevAddr, MsgType, Opaque, PlayerString};
 
-    fn line(addr: &str, body: impl Into<Body>) -> String {
+    pub(super) fn line(addr: &str, body: impl Into<Body>) -> String {
         let addr: DevAddr = addr.parse().unwrap();
         summarize(&Message::typed(addr, MsgType::Data, body))
-    }
-
-    #[test]
-    fn a_belief_reads_as_its_best_hypothesis_and_spread() {
-        let weak = LocalizeHypothesis {
-            alpha: 0.25,
-            ..Default::default()
-        };
-        let strong = LocalizeHypothesis {
-            mean: Pose2d::new(1.0, -2.0, std::f64::consts::FRAC_PI_2),
-            cov: [0.01, 0.04, 0.0, 0.0, 0.0, 0.0],
-            alpha: 0.75,
-        };
-        let data = LocalizeData {
-            hypoths: vec![weak, strong],
-            ..Default::default()
-        };
-        assert_eq!(
-            line("localize:0", Localize::Hypotheses(data)),
-            "2 hypotheses, best (1.000, -2.000, 90.0°) ± (0.100 m, 0.200 m, 0.0°) weight 0.75"
-        );
-    }
-
-    #[test]
-    fn a_plan_reads_as_progress_towards_the_goal() {
-        let state = PlannerData {
-            valid: 1,
-            waypoint_idx: 1,
-            waypoints_count: 3,
-            goal: Pose2d::new(-2.0, 0.5, 0.0),
-            ..Default::default()
-        };
-        assert_eq!(
-            line("planner:0", Planner::State(state)),
-            "at (0.000, 0.000, 0.0°), waypoint 1 of 3 (0.000, 0.000, 0.0°), goal (-2.000, 0.500, 0.0°)"
-        );
-        let done = PlannerData { done: 1, ..state };
-        assert!(line("planner:0", Planner::State(done)).starts_with("done at"));
-        let plan = PlannerWaypoints {
-            waypoints_distance: 8.9765,
-            waypoints: vec![Pose2d::default(); 3],
-        };
-        assert_eq!(
-            line("planner:0", Planner::Waypoints(plan)),
-            "3 waypoints, 8.98 m"
-        );
     }
 
     #[test]
@@ -349,6 +278,22 @@ mod tests {
         assert_eq!(
             line("speech_recognition:0", SpeechRecognition::Text(heard)),
             "heard \"go left\""
+        );
+        let bumpers = BumperData {
+            bumpers: Opaque::from(vec![0, 1, 0, 0, 1]),
+        };
+        assert_eq!(
+            line("bumper:0", Bumper::State(bumpers)),
+            "5 bumpers, pressed: [1 4]"
+        );
+        let gripper = GripperData {
+            state: gripper::STATE_CLOSED,
+            beams: 0b101,
+            stored: 1,
+        };
+        assert_eq!(
+            line("gripper:0", Gripper::State(gripper)),
+            "closed, beams 0b101, 1 stored"
         );
     }
 }
