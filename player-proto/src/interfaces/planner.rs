@@ -19,7 +19,8 @@ xdr_struct! {
         pub goal: Pose2d,
         /// The waypoint being driven to.
         pub waypoint: Pose2d,
-        /// Index of `waypoint` in the plan; negative (or stale) without a plan or once done.
+        /// Index of `waypoint` in the plan. Meaningless without a plan or once done: the
+        /// definition allows a negative value there, `wavefront` sends 0.
         pub waypoint_idx: i32,
         /// How many waypoints the plan has. Only a number: the waypoints themselves come with
         /// a GET_WAYPOINTS request.
