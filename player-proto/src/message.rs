@@ -124,6 +124,12 @@ bodies! {
     Bumper => BUMPER, interfaces::bumper::Bumper;
     Power => POWER, interfaces::power::Power;
     Gripper => GRIPPER, interfaces::gripper::Gripper;
+    Localize => LOCALIZE, interfaces::localize::Localize;
+    Planner => PLANNER, interfaces::planner::Planner;
+    Ptz => PTZ, interfaces::ptz::Ptz;
+    Ir => IR, interfaces::ir::Ir;
+    Pointcloud3d => POINTCLOUD3D, interfaces::pointcloud3d::Pointcloud3d;
+    SpeechRecognition => SPEECH_RECOGNITION, interfaces::speech_recognition::SpeechRecognition;
 }
 
 impl From<interfaces::universal::Universal> for Body {

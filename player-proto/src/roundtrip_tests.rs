@@ -6,9 +6,68 @@
 //! rather than values keeps NaN payloads honest.
 
 use proptest::prelude::*;
+use proptest::strategy::Union;
 
-use crate::message::{Body, Message};
+use crate::interfaces::kind::MessageKind;
+use crate::interfaces::{self, universal::Universal};
+use crate::message::{Body, Message, arbitrary_bytes};
 use crate::wire::{DevAddr, FrameDecoder, Interface, MessageClass, MsgType};
+
+/// The interfaces whose messages are generated, one boxed strategy each. Boxed, because the
+/// derived `any::<Body>()` keeps every interface's value tree inline in one union: with 18
+/// interfaces that outgrew a test thread's stack.
+macro_rules! generated_interfaces {
+    ($($code:ident => $set:ty),* $(,)?) => {
+        const GENERATED: &[Interface] = &[$(Interface::$code),*];
+
+        fn typed_bodies() -> Vec<BoxedStrategy<Body>> {
+            vec![$(any::<$set>().prop_map(Body::from).boxed()),*]
+        }
+    };
+}
+
+generated_interfaces! {
+    PLAYER => interfaces::player::Player,
+    LASER => interfaces::laser::Laser,
+    SONAR => interfaces::sonar::Sonar,
+    POSITION2D => interfaces::position2d::Position2d,
+    FIDUCIAL => interfaces::fiducial::Fiducial,
+    CAMERA => interfaces::camera::Camera,
+    RANGER => interfaces::ranger::Ranger,
+    SIMULATION => interfaces::simulation::Simulation,
+    BLOBFINDER => interfaces::blobfinder::Blobfinder,
+    MAP => interfaces::map::Map,
+    GRAPHICS2D => interfaces::graphics2d::Graphics2d,
+    GRAPHICS3D => interfaces::graphics3d::Graphics3d,
+    SPEECH => interfaces::speech::Speech,
+    BUMPER => interfaces::bumper::Bumper,
+    POWER => interfaces::power::Power,
+    GRIPPER => interfaces::gripper::Gripper,
+    LOCALIZE => interfaces::localize::Localize,
+    PLANNER => interfaces::planner::Planner,
+    PTZ => interfaces::ptz::Ptz,
+    IR => interfaces::ir::Ir,
+    POINTCLOUD3D => interfaces::pointcloud3d::Pointcloud3d,
+    SPEECH_RECOGNITION => interfaces::speech_recognition::SpeechRecognition,
+}
+
+/// Any body: a typed one of a listed interface, a universal request, no body, or raw bytes.
+fn body() -> impl Strategy<Value = Body> {
+    let mut all = typed_bodies();
+    all.push(Just(Body::Empty).boxed());
+    all.push(any::<Universal>().prop_map(Body::Universal).boxed());
+    all.push(arbitrary_bytes().prop_map(Body::Unknown).boxed());
+    Union::new(all)
+}
+
+#[test]
+fn every_decoded_interface_is_generated() {
+    for (interf, name) in Interface::KNOWN {
+        if !MessageKind::all_of(*interf).is_empty() {
+            assert!(GENERATED.contains(interf), "{name} is not in the list");
+        }
+    }
+}
 
 fn msg_type_for(class: MessageClass) -> BoxedStrategy<MsgType> {
     match class {
@@ -23,7 +82,7 @@ fn msg_type_for(class: MessageClass) -> BoxedStrategy<MsgType> {
 
 /// A message whose header agrees with its body.
 fn message() -> impl Strategy<Value = Message> {
-    (any::<Body>(), any::<DevAddr>(), any::<f64>(), any::<u32>()).prop_flat_map(
+    (body(), any::<DevAddr>(), any::<f64>(), any::<u32>()).prop_flat_map(
         |(body, addr, timestamp, seq)| {
             let (class, subtype) = body.kind().unwrap_or((MessageClass::Data, 0));
             let interf = match (&body, body.interface()) {

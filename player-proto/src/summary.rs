@@ -1,11 +1,15 @@
 //! One-line human summaries of messages, for `playerdump`, `playerprint` and logs.
 
+use crate::interfaces::gripper::{self, Gripper};
 use crate::interfaces::{
-    blobfinder::Blobfinder, camera::Camera, fiducial::Fiducial, laser::Laser, map::Map,
-    player::Player, position2d::Position2d, power::Power, ranger::Ranger, simulation::Simulation,
-    sonar::Sonar,
+    blobfinder::Blobfinder, bumper::Bumper, camera::Camera, fiducial::Fiducial, ir::Ir,
+    laser::Laser, map::Map, player::Player, pointcloud3d::Pointcloud3d, position2d::Position2d,
+    power::Power, ptz::Ptz, ranger::Ranger, simulation::Simulation, sonar::Sonar,
+    speech_recognition::SpeechRecognition,
 };
 use crate::message::{Body, Message};
+
+mod navigation;
 
 fn nearest(values: impl Iterator<Item = f64>) -> String {
     match values.filter(|v| v.is_finite()).min_by(f64::total_cmp) {
@@ -157,6 +161,38 @@ pub fn summarize(message: &Message) -> String {
             }
             other => format!("{other:?}"),
         },
+        Body::Map(Map::Info(i) | Map::InfoData(i)) => format!(
+            "{}×{} cells of {:.3} m, origin {}",
+            i.width,
+            i.height,
+            i.scale,
+            navigation::pose2d(&i.origin)
+        ),
+        Body::Map(Map::Vector(v)) => format!(
+            "{} segments in ({:.2}, {:.2})–({:.2}, {:.2})",
+            v.segments.len(),
+            v.minx,
+            v.miny,
+            v.maxx,
+            v.maxy
+        ),
+        Body::Bumper(Bumper::State(b)) => {
+            let pressed: Vec<String> = (b.bumpers.iter().enumerate())
+                .filter(|(_, on)| **on != 0)
+                .map(|(i, _)| i.to_string())
+                .collect();
+            format!(
+                "{} bumpers, pressed: [{}]",
+                b.bumpers.len(),
+                pressed.join(" ")
+            )
+        }
+        Body::Gripper(Gripper::State(g)) => format!(
+            "{}, beams {:#b}, {} stored",
+            gripper_state(g.state),
+            g.beams,
+            g.stored
+        ),
         Body::Map(Map::Tile(t)) => format!(
             "tile {}×{} at ({}, {}), {} compressed bytes",
             t.width,
@@ -169,6 +205,95 @@ pub fn summarize(message: &Message) -> String {
             format!("{} blobs in {}×{}", b.blobs.len(), b.width, b.height)
         }
         Body::Power(Power::State(p)) => format!("{:.1} V, {:.0} %", p.volts, p.percent),
+        Body::Localize(l) => navigation::localize(l),
+        Body::Planner(p) => navigation::planner(p),
+        Body::Ptz(Ptz::State(s)) => format!(
+            "pan {:.1}° tilt {:.1}° fov {:.1}°",
+            s.pan.to_degrees(),
+            s.tilt.to_degrees(),
+            s.zoom.to_degrees()
+        ),
+        Body::Ptz(Ptz::Command(c)) => format!(
+            "to pan {:.1}° tilt {:.1}° fov {:.1}°",
+            c.pan.to_degrees(),
+            c.tilt.to_degrees(),
+            c.zoom.to_degrees()
+        ),
+        Body::Ir(Ir::Ranges(r)) => format!(
+            "{} ranges, {}",
+            r.ranges.len(),
+            nearest(r.ranges.iter().map(|&r| f64::from(r)))
+        ),
+        Body::Ir(Ir::Pose(p)) => format!("{} sensors", p.poses.len()),
+        Body::Pointcloud3d(Pointcloud3d::State(c)) => format!("{} points", c.points.len()),
+        Body::SpeechRecognition(SpeechRecognition::Text(t)) => {
+            format!("heard {:?}", t.text.as_str())
+        }
         other => format!("{other:?}"),
+    }
+}
+
+fn gripper_state(state: u8) -> String {
+    match state {
+        gripper::STATE_OPEN => "open".into(),
+        gripper::STATE_CLOSED => "closed".into(),
+        gripper::STATE_MOVING => "moving".into(),
+        gripper::STATE_ERROR => "error".into(),
+        other => format!("state {other}"),
+    }
+}
+
+#[cfg(test)]
+pub(super) mod tests {
+    use super::*;
+    use crate::interfaces::bumper::BumperData;
+    use crate::interfaces::gripper::GripperData;
+    use crate::interfaces::{ir::IrData, ptz::PtzData, speech_recognition::SpeechRecognitionData};
+    use crate::wire::{DevAddr, MsgType, Opaque, PlayerString};
+
+    pub(super) fn line(addr: &str, body: impl Into<Body>) -> String {
+        let addr: DevAddr = addr.parse().unwrap();
+        summarize(&Message::typed(addr, MsgType::Data, body))
+    }
+
+    #[test]
+    fn devices_read_in_their_units() {
+        let ptz = PtzData {
+            pan: std::f32::consts::FRAC_PI_2,
+            zoom: std::f32::consts::FRAC_PI_4,
+            ..Default::default()
+        };
+        assert_eq!(
+            line("ptz:0", Ptz::State(ptz)),
+            "pan 90.0° tilt 0.0° fov 45.0°"
+        );
+        let ir = IrData {
+            ranges: vec![0.8, 0.25, f32::NAN],
+            ..Default::default()
+        };
+        assert_eq!(line("ir:0", Ir::Ranges(ir)), "3 ranges, min 0.25 m");
+        let heard = SpeechRecognitionData {
+            text: PlayerString::new("go left"),
+        };
+        assert_eq!(
+            line("speech_recognition:0", SpeechRecognition::Text(heard)),
+            "heard \"go left\""
+        );
+        let bumpers = BumperData {
+            bumpers: Opaque::from(vec![0, 1, 0, 0, 1]),
+        };
+        assert_eq!(
+            line("bumper:0", Bumper::State(bumpers)),
+            "5 bumpers, pressed: [1 4]"
+        );
+        let gripper = GripperData {
+            state: gripper::STATE_CLOSED,
+            beams: 0b101,
+            stored: 1,
+        };
+        assert_eq!(
+            line("gripper:0", Gripper::State(gripper)),
+            "closed, beams 0b101, 1 stored"
+        );
     }
 }

@@ -4,74 +4,14 @@
 
 mod support;
 
-use player_proto::capture::{Direction, parse_capture, stream};
 use player_proto::interfaces::{
     fiducial::Fiducial, laser::Laser, player::Player, position2d::Position2d,
 };
 use player_proto::interfaces::{ranger::Ranger, simulation::Simulation, sonar::Sonar};
 use player_proto::message::{Body, Message};
-use player_proto::wire::{Banner, FrameDecoder, MsgType};
-use support::captures::{capture, captures_dir};
-
-/// Decodes one direction of a capture, checking the byte-identical round trip of every message.
-fn decode_stream(name: &str, bytes: &[u8], dir: Direction) -> (Option<Banner>, Vec<Message>) {
-    let mut frames = FrameDecoder::default();
-    frames.extend(bytes);
-    let banner = match dir {
-        Direction::ServerToClient => Some(
-            frames
-                .take_banner()
-                .expect("32 bytes of banner")
-                .unwrap_or_else(|e| panic!("{name}: {e}")),
-        ),
-        Direction::ClientToServer => None,
-    };
-    let mut messages = Vec::new();
-    while let Some(frame) = frames
-        .next_frame()
-        .unwrap_or_else(|e| panic!("{name} {dir}: {e}"))
-    {
-        let original = &bytes[frame.offset as usize..frame.offset as usize + 40 + frame.body.len()];
-        let message = Message::decode(frame.header, frame.body.clone())
-            .unwrap_or_else(|e| panic!("{name} {dir} at stream byte {}: {e}", frame.offset));
-        assert!(
-            !matches!(message.body, Body::Unknown(_)),
-            "{name} {dir} at stream byte {}: {} stayed undecoded",
-            frame.offset,
-            message.header
-        );
-        assert_eq!(
-            &message.to_bytes()[..],
-            original,
-            "{name} {dir} at byte {}: re-encoding differs",
-            frame.offset
-        );
-        messages.push(message);
-    }
-    assert_eq!(
-        frames.buffered(),
-        0,
-        "{name} {dir}: trailing partial message"
-    );
-    (banner, messages)
-}
-
-fn load(name: &str) -> (Vec<Message>, Vec<Message>) {
-    let text = std::fs::read_to_string(capture(name)).unwrap();
-    let chunks = parse_capture(&text).unwrap();
-    let (banner, s2c) = decode_stream(
-        name,
-        &stream(&chunks, Direction::ServerToClient),
-        Direction::ServerToClient,
-    );
-    assert_eq!(banner.unwrap().version, "3.1.1-dev");
-    let (_, c2s) = decode_stream(
-        name,
-        &stream(&chunks, Direction::ClientToServer),
-        Direction::ClientToServer,
-    );
-    (s2c, c2s)
-}
+use player_proto::wire::MsgType;
+use support::captures::captures_dir;
+use support::sessions::load;
 
 #[test]
 fn every_captured_message_decodes_typed_and_reencodes_identically() {
@@ -95,19 +35,6 @@ fn every_captured_message_decodes_typed_and_reencodes_identically() {
     }
     // The repository's set, with its camera and multi-robot sessions trimmed, holds 843.
     assert!(total >= 800, "only {total} messages");
-}
-
-#[test]
-fn navigation_sessions_of_typed_interfaces_decode_and_reencode_identically() {
-    // The localize and planner sessions join this list once those interfaces have typed bodies.
-    for name in [
-        "nav/devlist_driverinfo.jsonl",
-        "nav/devlist_driverinfo_port6666.jsonl",
-        "nav/map_info_data.jsonl",
-    ] {
-        let (s2c, c2s) = load(name);
-        assert!(!s2c.is_empty() && !c2s.is_empty(), "{name}");
-    }
 }
 
 fn data(messages: &[Message], subtype: u8) -> impl Iterator<Item = &Message> {

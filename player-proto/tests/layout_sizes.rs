@@ -53,4 +53,13 @@ sizes! {
     gripper::GripperData => 12, gripper::GripperGeometry => 104,
     map::MapInfo => 36, map::MapData => 28, map::MapVector => 24,
     speech::SpeechCmd => 8,
+    localize::LocalizeHypothesis => 80, localize::LocalizeData => 20, localize::LocalizeSetPose => 72,
+    localize::LocalizeParticle => 32, localize::LocalizeParticles => 40,
+    planner::PlannerData => 88, planner::PlannerCmd => 24, planner::PlannerWaypoints => 16,
+    planner::PlannerEnable => 4,
+    ptz::PtzData => 24, ptz::PtzCmd => 20, ptz::PtzStatus => 4, ptz::PtzGeometry => 72,
+    ptz::PtzGeneric => 8, ptz::PtzControlMode => 4,
+    ir::IrData => 16, ir::IrPose => 8, ir::IrPower => 4,
+    pointcloud3d::PointCloud3dElement => 40, pointcloud3d::PointCloud3dData => 8,
+    speech_recognition::SpeechRecognitionData => 8,
 }

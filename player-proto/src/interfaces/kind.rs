@@ -122,7 +122,10 @@ pub trait InterfaceMessages {
 mod tests {
     use super::*;
     use crate::interfaces::laser::{self, Laser, LaserGeometry, LaserScan};
-    use crate::interfaces::{bumper, camera, fiducial, map, player, position2d, ranger, sonar};
+    use crate::interfaces::{
+        bumper, camera, fiducial, ir, localize, map, planner, player, position2d, ptz, ranger,
+        sonar,
+    };
     use crate::wire::{DevAddr, MsgType};
     use bytes::Bytes;
 
@@ -182,6 +185,17 @@ mod tests {
                 ranger::Ranger::REQ_GET_CONFIG.subtype(),
             ),
             (sonar::REQ_GET_GEOM, sonar::Sonar::REQ_GET_GEOM.subtype()),
+            (
+                localize::REQ_GET_PARTICLES,
+                localize::Localize::REQ_GET_PARTICLES.subtype(),
+            ),
+            (
+                planner::REQ_GET_WAYPOINTS,
+                planner::Planner::REQ_GET_WAYPOINTS.subtype(),
+            ),
+            (ptz::REQ_GEOM, ptz::Ptz::REQ_GEOM.subtype()),
+            (ptz::REQ_STATUS, ptz::Ptz::REQ_STATUS.subtype()),
+            (ir::REQ_POSE, ir::Ir::REQ_POSE.subtype()),
         ];
         for (i, (named, generated)) in pairs.into_iter().enumerate() {
             assert_eq!(named, generated, "pair {i}");
@@ -231,7 +245,7 @@ mod tests {
         let ranger_data = MessageKind::data_of(Interface::RANGER).count();
         assert_eq!(ranger_data, 5);
         assert_eq!(
-            MessageKind::data_of(Interface::PTZ).count(),
+            MessageKind::data_of(Interface::AUDIO).count(),
             0,
             "not decoded"
         );

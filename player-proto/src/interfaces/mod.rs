@@ -35,16 +35,22 @@ pub mod fiducial;
 pub mod graphics2d;
 pub mod graphics3d;
 pub mod gripper;
+pub mod ir;
 pub mod kind;
 pub mod laser;
+pub mod localize;
 pub mod map;
+pub mod planner;
 pub mod player;
+pub mod pointcloud3d;
 pub mod position2d;
 pub mod power;
+pub mod ptz;
 pub mod ranger;
 pub mod simulation;
 pub mod sonar;
 pub mod speech;
+pub mod speech_recognition;
 pub mod universal;
 
 /// The typed messages of one interface.

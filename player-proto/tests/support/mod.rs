@@ -3,7 +3,9 @@
 
 #![allow(dead_code)]
 
+pub mod annotated;
 pub mod captures;
+pub mod sessions;
 
 use std::io::{Read, Write};
 use std::net::TcpStream;
