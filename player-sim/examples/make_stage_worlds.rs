@@ -50,6 +50,17 @@ fn main() {
     }
     hall.save(out.join("hall.png")).unwrap();
 
+    // navigation.png: 16 x 12 m at 10 px/m (0.1 m per pixel, the mapfile's resolution too) — a
+    // west room with a doorway, a corridor wall along the north-east, and two pillars.
+    let mut navigation = GrayImage::from_pixel(160, 120, Luma([255]));
+    border(&mut navigation, 2);
+    rect(&mut navigation, 50, 2, 51, 45);
+    rect(&mut navigation, 50, 65, 51, 117);
+    rect(&mut navigation, 95, 35, 157, 36);
+    rect(&mut navigation, 85, 75, 92, 82);
+    rect(&mut navigation, 120, 80, 127, 87);
+    navigation.save(out.join("navigation.png")).unwrap();
+
     // swarm.world: 256 robots with lasers on a 16 x 16 grid in the hall, one port each.
     let worlds = out.parent().unwrap();
     let mut world = String::from(

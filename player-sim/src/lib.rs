@@ -1,6 +1,7 @@
 //! Simulates robots in a Stage world and serves them over the Player protocol.
 //!
 //! * [`served`] — which devices each robot exposes on which port (from the .cfg).
+//! * [`mapfile`] — maps read from images as Player's `mapfile` driver reads them.
 //! * [`devices`], [`camera_frames`], [`serve`] — the simulation served over the Player protocol.
 //! * [`sim`] — the simulation: motion, collisions, sensors by ray casting.
 //! * [`world`] — the world a file describes: floorplan, robots and their sensors, obstacles.
@@ -8,6 +9,7 @@
 
 pub mod camera_frames;
 pub mod devices;
+pub mod mapfile;
 pub mod serve;
 pub mod served;
 pub mod sim;

@@ -1,12 +1,12 @@
 //! `player-sim WORLD` — serve a simulated Stage world over the Player protocol.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::{Context, Result};
 use clap::Parser;
 use player_sim::serve::{ServeOptions, serve};
-use player_sim::served::{default_devices, from_cfg, shift_ports};
+use player_sim::served::{DEFAULT_PORT, default_devices, from_cfgs, shift_ports};
 use player_sim::sim::{Noise, Simulation};
 use player_sim::world::World;
 
@@ -18,9 +18,11 @@ struct Cli {
     world: PathBuf,
 
     /// The Player .cfg naming each robot's devices and ports; by default the world's name with
-    /// .cfg, if there is one, else one port per robot from --port-base.
+    /// .cfg, if there is one, else one port per robot from --port-base. Give it again for the
+    /// .cfg of a second `player` process (navigation drivers reaching Stage's devices through
+    /// `passthrough`): player-sim serves the ports of both.
     #[arg(long)]
-    cfg: Option<PathBuf>,
+    cfg: Vec<PathBuf>,
 
     /// Serve the lowest port on this one, the others shifted alike.
     #[arg(long)]
@@ -30,8 +32,8 @@ struct Cli {
     #[arg(long, default_value_t = 1.0)]
     speedup: f64,
 
-    /// Seed of the sensor noise: a run is reproduced exactly by its seed. Only --range-noise
-    /// draws from it; without noise the simulation has no randomness at all.
+    /// Seed of the sensor noise and of Stage's wander controller (how long a robot keeps
+    /// turning): a run is reproduced exactly by its seed.
     #[arg(long, default_value_t = 0)]
     seed: u64,
 
@@ -71,14 +73,15 @@ fn run(cli: Cli) -> Result<()> {
     );
     let world = World::load(&cli.world)?;
     let mut ignored = world.ignored.clone();
-    let cfg = cli
-        .cfg
-        .clone()
-        .or_else(|| Some(cli.world.with_extension("cfg")).filter(|p| p.exists()));
-    let mut devices = match &cfg {
-        Some(path) => from_cfg(path, &world, &mut ignored)
-            .with_context(|| format!("reading {}", path.display()))?,
-        None => default_devices(&world, cli.port_base.unwrap_or(6665)),
+    let mut cfgs = cli.cfg.clone();
+    if cfgs.is_empty() {
+        cfgs.extend(Some(cli.world.with_extension("cfg")).filter(|p| p.exists()));
+    }
+    let mut devices = if cfgs.is_empty() {
+        default_devices(&world, cli.port_base.unwrap_or(DEFAULT_PORT))
+    } else {
+        let paths: Vec<&Path> = cfgs.iter().map(PathBuf::as_path).collect();
+        from_cfgs(&paths, &world, &mut ignored).context("reading the .cfg")?
     };
     if let Some(base) = cli.port_base {
         shift_ports(&mut devices, base);

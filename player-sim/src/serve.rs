@@ -122,7 +122,7 @@ pub fn serve(
                     robot: u32::from(actual),
                     ..d.addr()
                 },
-                d.source,
+                d.source.clone(),
             )
         })
         .collect();
@@ -166,7 +166,8 @@ fn step_loop(
             devices
                 .iter()
                 .filter(|(addr, _)| publisher.subscribers(*addr) > 0)
-                .flat_map(|&(addr, source)| {
+                .flat_map(|(addr, source)| {
+                    let addr = *addr;
                     SimDevice::data(&sim, source, id)
                         .into_iter()
                         .map(move |(subtype, body)| (addr, subtype, body))

@@ -74,7 +74,7 @@ fn syntax_errors_and_unsupported_parts_are_reported_with_positions() {
         dir.path(),
         "odd.world",
         "window ( size [ 1 1 ] )\nlaser_max 3\npaused 1\nresolution 0.05\n\
-         position( name \"r\" gui_nose 1 blobfinder( ) sensor( range [ 0 1 ] ) )\n",
+         position( name \"r\" gui_nose 1 blinkenlight( ) sensor( range [ 0 1 ] ) )\n",
     );
     let world = World::load(&odd).unwrap();
     let notes = world.ignored.join("\n");
@@ -91,7 +91,7 @@ fn syntax_errors_and_unsupported_parts_are_reported_with_positions() {
         "{notes}"
     );
     assert!(
-        notes.contains("ignored: a blobfinder on robot r at"),
+        notes.contains("ignored: a blinkenlight on robot r at"),
         "{notes}"
     );
     assert!(

@@ -2,23 +2,29 @@
 //! that stop a robot and set its stall flag, and sensors by ray casting. Deterministic: the
 //! same world and commands give the same trajectory.
 
+mod blobfinder;
 mod camera;
 mod geometry;
+mod gripper;
 mod nearby;
 mod noise;
 mod sensors;
 mod shapes;
+mod wander;
 
+pub use blobfinder::{Blob, blobs};
 pub use camera::{Frame, render_camera};
 pub use geometry::GroundBox;
+pub use gripper::{BEAM_BITS, GripperCommand, GripperState, Paddles};
 pub use nearby::{NearbyBoxes, SolidBox};
 pub use noise::Noise;
 pub use sensors::{
     FiducialHit, RangerReturns, body_at, fiducials, on_robot, ranger_returns, ranger_scan,
     ranger_scan_exhaustive,
 };
+pub use wander::WanderState;
 
-use crate::world::{Drive, Pose, World};
+use crate::world::{Controller, Drive, Pose, World};
 
 /// What a robot is told to do.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,6 +43,10 @@ pub struct RobotState {
     pub velocity: (f64, f64, f64),
     pub stall: bool,
     pub command: Command,
+    /// How Stage's wander controller is turning, for a robot with `ctrl "wander"`.
+    pub wander: WanderState,
+    /// One per gripper the robot has.
+    pub grippers: Vec<GripperState>,
 }
 
 /// The simulated world in motion.
@@ -47,8 +57,11 @@ pub struct Simulation {
     /// Simulated seconds since the start.
     pub time: f64,
     pub steps: u64,
-    /// Sensor noise and its seed; none by default.
+    /// Sensor noise and its seed; none by default. The wander controller draws from the
+    /// seed too.
     pub noise: Noise,
+    /// For each obstacle, the (robot, gripper) holding it.
+    pub carried_by: Vec<Option<(usize, usize)>>,
 }
 
 const STOP: Command = Command::Velocity {
@@ -67,15 +80,31 @@ impl Simulation {
                 velocity: (0.0, 0.0, 0.0),
                 stall: false,
                 command: STOP,
+                wander: WanderState::default(),
+                grippers: r.grippers.iter().map(GripperState::new).collect(),
             })
             .collect();
+        let carried_by = vec![None; world.obstacles.len()];
         Simulation {
             world,
             robots,
             time: 0.0,
             steps: 0,
             noise: Noise::default(),
+            carried_by,
         }
+    }
+
+    /// Does robot `robot` hold obstacle `obstacle` (so that it neither bumps into nor sees it)?
+    pub fn holds(&self, robot: Option<usize>, obstacle: usize) -> bool {
+        robot.is_some()
+            && self
+                .carried_by
+                .get(obstacle)
+                .copied()
+                .flatten()
+                .map(|(r, _)| r)
+                == robot
     }
 
     /// The robot named `name`.
@@ -102,12 +131,18 @@ impl Simulation {
             .enumerate()
             .filter(move |(i, _)| Some(*i) != except)
             .map(|(i, r)| self.footprint(i, r.pose));
-        let obstacles = self.world.obstacles.iter().map(|o| GroundBox {
-            pose: body_at(o.pose, o.origin),
-            length: o.size[0],
-            width: o.size[1],
-            shape: &o.shape,
-        });
+        let obstacles = self
+            .world
+            .obstacles
+            .iter()
+            .enumerate()
+            .filter(move |(k, _)| !self.holds(except, *k))
+            .map(|(_, o)| GroundBox {
+                pose: body_at(o.pose, o.origin),
+                length: o.size[0],
+                width: o.size[1],
+                shape: &o.shape,
+            });
         robots.chain(obstacles)
     }
 
@@ -135,6 +170,11 @@ impl Simulation {
     pub fn step(&mut self) {
         let dt = self.world.interval;
         for i in 0..self.robots.len() {
+            if let Some(Controller::Wander { ranger }) = self.world.robots[i].controller {
+                self.wander(i, ranger);
+            }
+        }
+        for i in 0..self.robots.len() {
             let (vx, vy, va) = self.velocity_for(i);
             let vy = if self.world.robots[i].drive == Drive::Omni {
                 vy
@@ -156,6 +196,12 @@ impl Simulation {
                 self.robots[i].stall = false;
                 self.robots[i].pose = next;
                 self.robots[i].velocity = (vx, vy, va);
+            }
+        }
+        self.carry();
+        for robot in 0..self.robots.len() {
+            for gripper in 0..self.robots[robot].grippers.len() {
+                self.update_gripper(robot, gripper);
             }
         }
         self.time += dt;

@@ -83,10 +83,16 @@ impl<'a> NearbyBoxes<'a> {
                     &spec.shape[..],
                 )
             });
-        let obstacles = sim.world.obstacles.iter().map(|o| {
-            let body = body_at(o.pose, o.origin);
-            (body, o.size, o.color, o.ranger_return, &o.shape[..])
-        });
+        let obstacles = sim
+            .world
+            .obstacles
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| !sim.holds(except, *k))
+            .map(|(_, o)| {
+                let body = body_at(o.pose, o.origin);
+                (body, o.size, o.color, o.ranger_return, &o.shape[..])
+            });
         let boxes = robots
             .chain(obstacles)
             .filter_map(|(pose, size, color, ranger_return, shape)| {

@@ -34,6 +34,15 @@ impl Noise {
         (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
     }
 
+    /// A uniform draw in (0, 1) for the given coordinates (for choices such as how long a
+    /// wandering robot keeps turning).
+    pub fn uniform(&self, coordinates: &[u64]) -> f64 {
+        let key = coordinates
+            .iter()
+            .fold(mix(self.seed), |acc, &c| mix(acc ^ c));
+        unit(mix(key))
+    }
+
     /// `range` with noise for the given coordinates, kept within `[min, max]`.
     pub fn range(&self, range: f64, min: f64, max: f64, coordinates: &[u64]) -> f64 {
         if self.range_sd <= 0.0 {

@@ -5,9 +5,12 @@
 //! file:line".
 
 mod bitmap;
+mod blobfinder;
 mod blocks;
 mod colors;
+mod controller;
 mod floorplan;
+mod gripper;
 mod models;
 mod properties;
 mod raster;
@@ -16,13 +19,16 @@ mod robot;
 use std::path::Path;
 
 pub use bitmap::{Face, OccupancyGrid};
+pub use blobfinder::BlobfinderSpec;
 pub use blocks::{Polygon, placed};
+pub use controller::Controller;
+pub use gripper::GripperSpec;
 pub use models::{Model, Types, read_with_includes};
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
 use properties::{
-    color_of, err, fiducial_of, name_of, number, opt_number, origin_of, pose_of, ranger_return_of,
-    size_of,
+    READ, color_of, err, fiducial_of, name_of, number, opt_number, origin_of, pose_of,
+    ranger_return_of, size_of,
 };
 
 /// Stage's drive models.
@@ -109,6 +115,10 @@ pub struct RobotSpec {
     pub rangers: Vec<RangerSpec>,
     pub fiducials: Vec<FiducialSpec>,
     pub cameras: Vec<CameraSpec>,
+    pub blobfinders: Vec<BlobfinderSpec>,
+    pub grippers: Vec<GripperSpec>,
+    /// Stage's `ctrl`: what drives the robot besides its clients.
+    pub controller: Option<Controller>,
 }
 
 /// A box that stops robots and beams (landmarks, furniture).
@@ -127,6 +137,8 @@ pub struct BoxObstacle {
     /// When there are some, rays and collisions meet these polygons (the box of `size`, their
     /// bounding box, is only the first, cheap test).
     pub shape: Vec<Polygon>,
+    /// Stage's `gripper_return`: a gripper can pick it up.
+    pub gripper_return: bool,
 }
 
 /// Where the floorplan bitmap lies, so a viewer can draw the same walls.
@@ -172,28 +184,6 @@ pub struct World {
 
 /// Stage's default raytrace resolution: 50 cells per metre.
 const DEFAULT_RESOLUTION: f64 = 0.02;
-
-/// Properties each kind of model reads; anything else is reported as ignored.
-const READ: &[&str] = &[
-    "name",
-    "pose",
-    "size",
-    "color",
-    "color_rgba",
-    "drive",
-    "bitmap",
-    "boundary",
-    "origin",
-    "fiducial_return",
-    "obstacle_return",
-    "ranger_return",
-    "range_min",
-    "range_max",
-    "range_max_id",
-    "fov",
-    "range",
-    "resolution",
-];
 
 impl World {
     /// Loads a world file and its includes.
@@ -354,6 +344,7 @@ impl World {
                     ranger_return: ranger_return_of(model)?,
                     origin: origin_of(model)?,
                     shape: blocks::model_blocks(model, [size[0], size[1]])?,
+                    gripper_return: opt_number(model, "gripper_return")?.is_some_and(|v| v != 0.0),
                 };
                 self.obstacles.push(obstacle);
             }

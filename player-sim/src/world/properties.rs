@@ -6,6 +6,37 @@ use super::colors;
 use super::models::Model;
 use crate::worldfile::{Pos, Property, WorldFileError};
 
+/// Properties each kind of model reads; anything else is reported as ignored.
+pub(super) const READ: &[&str] = &[
+    "name",
+    "pose",
+    "size",
+    "color",
+    "color_rgba",
+    "drive",
+    "bitmap",
+    "boundary",
+    "origin",
+    "fiducial_return",
+    "obstacle_return",
+    "ranger_return",
+    "range_min",
+    "range_max",
+    "range_max_id",
+    "fov",
+    "range",
+    "resolution",
+    "ctrl",
+    "gripper_return",
+    "colors",
+    "colors_count",
+    "image",
+    "pan",
+    "paddle_size",
+    "paddle_state",
+    "autosnatch",
+];
+
 pub(super) fn err(pos: &Pos, message: impl Into<String>) -> WorldFileError {
     WorldFileError::at(&pos.file, pos.line, pos.col, message)
 }

@@ -3,6 +3,7 @@
 //! of the models it stands on, as Stage stacks children on their parent's top).
 
 use super::blocks::model_blocks;
+use super::gripper::gripper;
 use super::models::Model;
 use super::properties::{
     color_of, err, fiducial_of, name_of, number, numbers, opt_number, origin_of, pose_from,
@@ -50,7 +51,16 @@ impl World {
             rangers: Vec::new(),
             fiducials: Vec::new(),
             cameras: Vec::new(),
+            blobfinders: Vec::new(),
+            grippers: Vec::new(),
+            controller: None,
         };
+        if let Some(p) = model.get("gripper_return") {
+            self.ignore(
+                "gripper_return on a robot (only boxes can be gripped)",
+                &p.pos,
+            );
+        }
         let on_base = Mount {
             pose: Pose::default(),
             top: size[2],
@@ -58,6 +68,7 @@ impl World {
         for child in &model.children {
             self.mounted(&mut robot, child, on_base, 1)?;
         }
+        robot.controller = self.controller(model, &robot.rangers)?;
         Ok(robot)
     }
 
@@ -99,6 +110,11 @@ impl World {
                 fov: opt_number(child, "fov")?.unwrap_or(180.0).to_radians(),
             }),
             "camera" => robot.cameras.push(camera(child, pose, z + parent.top)?),
+            "blobfinder" => {
+                let finder = self.blobfinder(child, pose)?;
+                robot.blobfinders.push(finder);
+            }
+            "gripper" => robot.grippers.push(gripper(child, pose)?),
             "model" => {
                 size_z = size_of(child, [0.0, 0.0, 0.0])?[2];
                 self.ignore(

@@ -1,13 +1,19 @@
 //! The simulated devices as a Player server presents them: requests answered from the world
 //! (geometry, configuration, model poses), commands given to the robots, and each step's data.
 
+mod blobfinder;
+mod gripper;
+mod map;
+
 use std::sync::{Arc, Mutex};
 
+use player_proto::interfaces::blobfinder::Blobfinder;
 use player_proto::interfaces::camera::Camera;
 use player_proto::interfaces::common::{BBox2d, BBox3d, Pose2d, Pose3d};
 use player_proto::interfaces::fiducial::{
     Fiducial, FiducialData, FiducialFov, FiducialGeometry, FiducialItem,
 };
+use player_proto::interfaces::gripper::Gripper;
 use player_proto::interfaces::kind::BodyKind;
 use player_proto::interfaces::laser::{Laser, LaserConfig, LaserGeometry, LaserScan};
 use player_proto::interfaces::position2d::{Position2d, Position2dData, Position2dGeometry};
@@ -72,7 +78,7 @@ fn ranger_config(ranger: &RangerSpec) -> RangerConfig {
 impl SimDevice {
     fn answer(&self, request: &Message) -> Reply {
         let mut sim = self.sim.lock().expect("simulation");
-        match self.served.source {
+        match self.served.source.clone() {
             Source::Position { robot } => {
                 let spec = &sim.world.robots[robot];
                 if asks(request, Position2d::REQ_GET_GEOM) {
@@ -187,6 +193,16 @@ impl SimDevice {
                     Reply::Nack
                 }
             }
+            Source::Map(map) => map::answer(&map.0, request),
+            Source::Blobfinder { .. } => Reply::Nack,
+            Source::Gripper { robot, gripper } => {
+                if asks(request, Gripper::REQ_GET_GEOM) {
+                    let geometry = gripper::geometry(&sim, robot, gripper);
+                    Reply::Ack(Body::Gripper(Gripper::Geometry(geometry)))
+                } else {
+                    Reply::Nack
+                }
+            }
             Source::Simulation => match &request.body {
                 Body::Simulation(SimMsg::Pose2d(asked)) => {
                     let name = asked.name.as_str();
@@ -233,9 +249,15 @@ impl SimDevice {
     /// This step's data messages (subtype, body), in the order they are sent: none for the
     /// simulation, ranges then intensities for a ranger (as Stage sends them), one message
     /// for every other device.
-    pub fn data(sim: &Simulation, source: Source, scan_id: u32) -> Vec<(u8, Body)> {
-        vec![match source {
-            Source::Simulation => return Vec::new(),
+    pub fn data(sim: &Simulation, source: &Source, scan_id: u32) -> Vec<(u8, Body)> {
+        vec![match *source {
+            Source::Simulation | Source::Map(_) => return Vec::new(),
+            Source::Blobfinder { robot, finder } => {
+                data_of(Blobfinder::DATA_BLOBS, blobfinder::data(sim, robot, finder))
+            }
+            Source::Gripper { robot, gripper } => {
+                data_of(Gripper::DATA_STATE, gripper::data(sim, robot, gripper))
+            }
             Source::Position { robot } => {
                 let r = &sim.robots[robot];
                 let (vx, vy, va) = r.velocity;
@@ -321,6 +343,13 @@ impl Device for SimDevice {
     }
 
     fn on_command(&mut self, command: &Message) {
+        if let Source::Gripper { robot, gripper } = self.served.source
+            && let Some(told) = gripper::command(command)
+        {
+            let mut sim = self.sim.lock().expect("simulation");
+            sim.robots[robot].grippers[gripper].command = told;
+            return;
+        }
         let Source::Position { robot } = self.served.source else {
             return;
         };

@@ -1,0 +1,80 @@
+//! Stage's `wander` controller: cruise ahead; when the ranger sees something close in the middle
+//! third of its scan (or anything very close), slow down (stop, if very close) and turn away
+//! from the nearer side, keeping that turn for a random 10 to 19 updates. Stage draws the
+//! duration from `random()`; here it is a pure function of the seed, the step and the robot.
+
+use super::{Command, Simulation, ranger_scan};
+
+/// Forward speed while the way is clear, m/s (Stage's).
+const CRUISE_SPEED: f64 = 0.4;
+/// Forward speed while turning away, m/s.
+const AVOID_SPEED: f64 = 0.05;
+/// Turn rate while turning away, rad/s.
+const AVOID_TURN: f64 = 0.5;
+/// Something nearer than this in the middle third of the scan is in the way, m.
+const MIN_FRONT_DISTANCE: f64 = 1.0;
+/// Anything nearer than this, anywhere in the scan, stops the robot, m.
+const STOP_DISTANCE: f64 = 0.3;
+/// A turn lasts this many updates and up to as many more.
+const AVOID_DURATION: u32 = 10;
+/// Tells the wander draws apart from the range noise drawn from the same seed.
+const WANDER_STREAM: u64 = 0x5741_4e44_4552;
+
+/// How a wandering robot is turning away.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct WanderState {
+    /// Updates left in the current turn.
+    pub avoid_count: u32,
+    /// +1 left, -1 right.
+    pub turn: i8,
+}
+
+impl Simulation {
+    /// Robot `robot`'s next command from its ranger `ranger`, as Stage's wander decides it.
+    pub(super) fn wander(&mut self, robot: usize, ranger: usize) {
+        let scan = ranger_scan(self, robot, &self.world.robots[robot].rangers[ranger]);
+        let n = scan.len();
+        if n == 0 {
+            return;
+        }
+        let (mut obstruction, mut stop) = (false, false);
+        let (mut min_left, mut min_right) = (f64::INFINITY, f64::INFINITY);
+        for (i, &range) in scan.iter().enumerate() {
+            if i > n / 3 && i < n - n / 3 && range < MIN_FRONT_DISTANCE {
+                obstruction = true;
+            }
+            if range < STOP_DISTANCE {
+                stop = true;
+            }
+            if i > n / 2 {
+                min_left = min_left.min(range);
+            } else {
+                min_right = min_right.min(range);
+            }
+        }
+        let steps = self.steps;
+        let noise = self.noise;
+        let state = &mut self.robots[robot].wander;
+        let command = if obstruction || stop || state.avoid_count > 0 {
+            if state.avoid_count < 1 {
+                let draw = noise.uniform(&[WANDER_STREAM, steps, robot as u64]);
+                state.avoid_count = AVOID_DURATION + (draw * f64::from(AVOID_DURATION)) as u32;
+                state.turn = if min_left < min_right { -1 } else { 1 };
+            }
+            state.avoid_count -= 1;
+            Command::Velocity {
+                vx: if stop { 0.0 } else { AVOID_SPEED },
+                vy: 0.0,
+                va: f64::from(state.turn) * AVOID_TURN,
+            }
+        } else {
+            state.avoid_count = 0;
+            Command::Velocity {
+                vx: CRUISE_SPEED,
+                vy: 0.0,
+                va: 0.0,
+            }
+        };
+        self.robots[robot].command = command;
+    }
+}
