@@ -122,7 +122,9 @@ impl Service {
     }
 }
 
-/// A component of a composition.
+/// A component of a composition. Its life, as the viewer drives it: made by its
+/// [`Constructor`], then [`Plugin::initialize`] once, [`Plugin::run`] every iteration, and
+/// [`Plugin::clean`] once before it is removed; nothing is called after `clean`.
 pub trait Plugin: Send {
     /// The configuration this plugin was made from, with its current state written in.
     fn save(&self) -> PluginConfig;
@@ -130,8 +132,14 @@ pub trait Plugin: Send {
     /// A short name for the item tree.
     fn title(&self) -> String;
 
-    /// Brings the scene up to date with the newest data. Returns whether anything changed.
-    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool;
+    /// Called once, after the window and its GL context exist and before the first
+    /// [`Plugin::run`]: the place for set-up that needs a live window, which a constructor
+    /// (also run for `--emit-config`-style checks and in GL-free tests) cannot assume.
+    fn initialize(&mut self, _ctx: &mut PluginContext<'_>) {}
+
+    /// One iteration of the viewer's loop: take the newest data into the scene and send what
+    /// the person asked for. Called often, so it must not block on the network.
+    fn run(&mut self, _ctx: &mut PluginContext<'_>) {}
 
     /// The plugin's panel in the item tree.
     fn ui(&mut self, _ui: &mut egui::Ui, _ctx: &mut PluginContext<'_>) {}
@@ -189,8 +197,10 @@ pub trait Plugin: Send {
         None
     }
 
-    /// Removes the plugin's nodes from the scene.
-    fn detach(&mut self, scene: &mut Scene, anchors: &mut Anchors);
+    /// Called once before the plugin is removed (its device went away, the window is
+    /// closing): takes its nodes out of the scene and withdraws its anchors, so that nothing
+    /// it drew outlives it. The plugin is dropped right after.
+    fn clean(&mut self, ctx: &mut PluginContext<'_>);
 }
 
 /// Makes a plugin from its configuration.

@@ -15,9 +15,9 @@ pub use floorplan::{Placement, walls_from_bitmap};
 use glam::Vec3;
 
 use framework::config::{ConfigValueError, Param, PluginConfig};
-use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
 use framework::scene::polygon::{parse_corners, prism};
-use framework::scene::{NodeId, Object3D, Rgba, Scene, SceneLighting};
+use framework::scene::{NodeId, Object3D, Rgba, SceneLighting};
 
 /// Fixed scene content placed once: the ground plane, the grid.
 struct Fixture {
@@ -35,12 +35,8 @@ impl Plugin for Fixture {
         self.title.into()
     }
 
-    fn update(&mut self, _: &mut PluginContext<'_>) -> bool {
-        false
-    }
-
-    fn detach(&mut self, scene: &mut Scene, _: &mut Anchors) {
-        scene.remove(self.node);
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
+        ctx.scene.remove(self.node);
     }
 }
 
@@ -217,11 +213,7 @@ impl Plugin for Lights {
         "Lights".into()
     }
 
-    fn update(&mut self, _: &mut PluginContext<'_>) -> bool {
-        false
-    }
-
-    fn detach(&mut self, scene: &mut Scene, _: &mut Anchors) {
-        scene.set_lighting(SceneLighting::default());
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
+        ctx.scene.set_lighting(SceneLighting::default());
     }
 }

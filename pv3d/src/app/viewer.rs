@@ -7,6 +7,7 @@
 //! the robot's popup of actions on it; right-click any object, robots included, for the same.
 
 mod input_chain;
+mod lifecycle;
 mod popups;
 
 use std::sync::Arc;
@@ -19,13 +20,15 @@ use framework::plugin::{Anchors, Plugin, PluginContext, PluginRegistry};
 use framework::scene::Scene;
 
 use super::view3d::{TargetDrag, View3d};
-use crate::composition::{Composer, PluginInstance, config_from_instance, write_back};
+use crate::composition::{Composer, PluginInstance, write_back};
 
 /// A plugin and what it was made from.
 struct Slot {
     plugin: Box<dyn Plugin>,
     device: Option<Arc<dyn DeviceAccess>>,
     instance: PluginInstance,
+    /// Whether [`Plugin::initialize`] ran (it runs before the first [`Plugin::run`]).
+    initialized: bool,
 }
 
 /// Looks up the device access for a plugin's device.
@@ -91,39 +94,6 @@ impl Viewer {
         viewer
     }
 
-    /// Makes and adds a plugin for each instance; an id already in use gets a suffix.
-    pub fn add_plugins(&mut self, instances: Vec<PluginInstance>, devices: DeviceLookup<'_>) {
-        let first_error = self.errors.len();
-        for mut instance in instances {
-            self.make_id_unique(&mut instance);
-            let config = config_from_instance(&instance);
-            let Some(create) = self.registry.constructor(&config.library) else {
-                let known: Vec<&str> = self.registry.libraries().collect();
-                self.errors.push(format!(
-                    "{}: unknown plugin library {:?}; built in: {}",
-                    config.origin,
-                    config.library,
-                    known.join(", ")
-                ));
-                continue;
-            };
-            let device = config.device.as_ref().and_then(devices);
-            let mut ctx = PluginContext::new(&mut self.scene, &mut self.anchors, Instant::now())
-                .with_device(device.as_deref());
-            match create(config, &mut ctx) {
-                Ok(plugin) => self.slots.push(Slot {
-                    plugin,
-                    device,
-                    instance,
-                }),
-                Err(e) => self.errors.push(e.to_string()),
-            }
-        }
-        for e in &self.errors[first_error..] {
-            tracing::error!("{e}");
-        }
-    }
-
     /// Plugin `index` and the context it is called in: its own device, the shared scene and
     /// anchors. Every call into a plugin after it was made goes through here.
     fn plugin_in_context(
@@ -135,19 +105,6 @@ impl Viewer {
         let ctx = PluginContext::new(&mut self.scene, &mut self.anchors, now)
             .with_device(slot.device.as_deref());
         (slot.plugin.as_mut(), ctx)
-    }
-
-    fn make_id_unique(&self, instance: &mut PluginInstance) {
-        let taken = |id: &str| self.slots.iter().any(|s| s.instance.id() == id);
-        let id = instance.id().to_string();
-        if id.is_empty() || !taken(&id) {
-            return;
-        }
-        let unique = (2..)
-            .map(|n| format!("{id}-{n}"))
-            .find(|candidate| !taken(candidate))
-            .expect("some suffix is free");
-        instance.element.set_attr("id", unique);
     }
 
     /// Adds the plugins of servers that answered since the last call (see [`Composer`]).
@@ -168,17 +125,6 @@ impl Viewer {
 
     pub fn plugin_count(&self) -> usize {
         self.slots.len()
-    }
-
-    /// Lets every plugin take its newest data. Returns whether the scene changed.
-    pub fn update(&mut self, now: Instant) -> bool {
-        self.compose_arrivals();
-        let mut changed = false;
-        for i in 0..self.slots.len() {
-            let (plugin, mut ctx) = self.plugin_in_context(i, now);
-            changed |= plugin.update(&mut ctx);
-        }
-        changed
     }
 
     /// The whole window: item tree on the left, 3D view in the middle.
@@ -375,12 +321,14 @@ impl Viewer {
 
 impl Drop for Viewer {
     fn drop(&mut self) {
-        // Leave no robot moving when the window goes away, and keep what the person set up.
+        // Leave no robot moving when the window goes away, keep what the person set up, and
+        // only then let the plugins clean up.
         self.stop_all();
         if self.save_target.is_some()
             && let Err(e) = self.save_now()
         {
             tracing::error!("could not save the composition on exit: {e}");
         }
+        self.remove_all_plugins();
     }
 }
