@@ -7,8 +7,9 @@ use std::time::Instant;
 use glam::Vec3;
 
 pub use crate::action::{Action, ObjectRef};
-use crate::config::{ConfigValueError, PluginConfig};
+use crate::config::PluginConfig;
 use crate::device::DeviceAccess;
+pub use crate::registry::{Component, Constructor, Metadata, PluginRegistry};
 use crate::scene::{NodeId, Scene};
 
 /// Where a device's scene node is, so that other plugins can attach to it (`<parentNode>`):
@@ -201,31 +202,4 @@ pub trait Plugin: Send {
     /// closing): takes its nodes out of the scene and withdraws its anchors, so that nothing
     /// it drew outlives it. The plugin is dropped right after.
     fn clean(&mut self, ctx: &mut PluginContext<'_>);
-}
-
-/// Makes a plugin from its configuration.
-pub type Constructor =
-    fn(PluginConfig, &mut PluginContext<'_>) -> Result<Box<dyn Plugin>, ConfigValueError>;
-
-/// The plugins built into the program, by library name (`libpv3d_laser`).
-#[derive(Default)]
-pub struct PluginRegistry {
-    constructors: Vec<(&'static str, Constructor)>,
-}
-
-impl PluginRegistry {
-    pub fn register(&mut self, library: &'static str, constructor: Constructor) {
-        self.constructors.push((library, constructor));
-    }
-
-    pub fn libraries(&self) -> impl Iterator<Item = &'static str> + '_ {
-        self.constructors.iter().map(|(l, _)| *l)
-    }
-
-    pub fn constructor(&self, library: &str) -> Option<Constructor> {
-        self.constructors
-            .iter()
-            .find(|(l, _)| *l == library)
-            .map(|(_, c)| *c)
-    }
 }

@@ -5,7 +5,7 @@
 //! ```
 //! use framework::scene::{NodeId, Object3D};
 //! use framework::testing::Harness;
-//! use framework::{ConfigValueError, Plugin, PluginConfig, PluginContext, PluginRegistry};
+//! use framework::{ConfigValueError, Metadata, Plugin, PluginConfig, PluginContext, PluginRegistry};
 //!
 //! struct Marker(NodeId, PluginConfig);
 //! impl Plugin for Marker {
@@ -20,7 +20,13 @@
 //! }
 //!
 //! let mut registry = PluginRegistry::default();
-//! registry.register("libmarker", create);
+//! let about = Metadata {
+//!     author: "A. Student",
+//!     email: "student@example.org",
+//!     web_page: "https://example.org/marker",
+//!     description: "A marker at the origin.",
+//! };
+//! registry.register("libmarker", about, create);
 //! let mut h = Harness::with_registry(registry);
 //! let config = PluginConfig { library: "libmarker".into(), ..PluginConfig::default() };
 //! h.make(config).unwrap();

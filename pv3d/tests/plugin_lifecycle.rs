@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
+use framework::plugin::Metadata;
 use framework::scene::{NodeId, Object3D};
 use framework::{ConfigValueError, Plugin, PluginConfig, PluginContext, PluginRegistry};
 use pv3d::app::Viewer;
@@ -29,6 +30,13 @@ struct Recorder {
 }
 
 impl Recorder {
+    const METADATA: Metadata = Metadata {
+        author: "pv3d tests",
+        email: "tests@example.invalid",
+        web_page: "https://example.invalid/recorder",
+        description: "Writes down the lifecycle calls it gets.",
+    };
+
     fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -74,7 +82,7 @@ fn instance(id: &str) -> PluginInstance {
 #[test]
 fn plugins_are_initialized_once_run_each_iteration_and_cleaned_last() {
     let mut registry = PluginRegistry::default();
-    registry.register("librecorder", Recorder::create);
+    registry.register("librecorder", Recorder::METADATA, Recorder::create);
     let mut viewer = Viewer::new(vec![instance("a")], registry, &|_| None);
     assert_eq!(
         calls(),

@@ -11,7 +11,7 @@ pub mod window;
 
 use frames::{CameraFrames, Offered};
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::plugin::{Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use player_proto::interfaces::camera::Camera;
 use window::CameraWindow;
 
@@ -23,6 +23,9 @@ pub struct CameraPlugin {
 }
 
 impl CameraPlugin {
+    pub const METADATA: Metadata =
+        crate::standard_metadata("A camera's images, raw or JPEG, in a window of their own.");
+
     pub fn create(
         config: PluginConfig,
         _ctx: &mut PluginContext<'_>,

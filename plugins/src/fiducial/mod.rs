@@ -14,7 +14,7 @@ use player_proto::interfaces::fiducial::{Fiducial, FiducialData, FiducialGeometr
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::pose::transform_of;
 use framework::scene::{Aabb, NodeId, Object3D, Rgba};
 
@@ -35,6 +35,10 @@ pub struct FiducialPlugin {
 }
 
 impl FiducialPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "The markers a fiducial finder sees, labelled by id and tagged so that a robot can go to or follow them.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,

@@ -15,7 +15,7 @@ pub use floorplan::{Placement, walls_from_bitmap};
 use glam::Vec3;
 
 use framework::config::{ConfigValueError, Param, PluginConfig};
-use framework::plugin::{Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::polygon::{parse_corners, prism};
 use framework::scene::{NodeId, Object3D, Rgba, SceneLighting};
 
@@ -44,6 +44,10 @@ impl Plugin for Fixture {
 pub struct Ground;
 
 impl Ground {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "A plane under everything, with the walls of a floorplan bitmap or of Stage blocks standing on it.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -133,6 +137,10 @@ impl Ground {
 pub struct Grid;
 
 impl Grid {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "Metre lines and the x and y axes on the ground, to judge distances and directions by.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -181,6 +189,10 @@ pub struct Lights {
 }
 
 impl Lights {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "The scene's light direction, ambient level and background colour.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,

@@ -26,7 +26,7 @@ pub use scan_geometry::{ScanStyle, endpoints, scan_geometry};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken, Stamped};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::pose::transform_of;
 use framework::scene::{NodeId, Object3D, Rgba};
 use framework::skin::{Skin, fit_into};
@@ -51,6 +51,10 @@ pub struct LaserPlugin {
 }
 
 impl LaserPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "A laser scan as points and the free space it sees, hung below its robot.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,

@@ -31,7 +31,7 @@ pub use widgets::joystick_id;
 use framework::action::{Action, ObjectRef};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, ConnectionState, LastTaken};
-use framework::plugin::{AnchorKey, Handled, InputEvent, Plugin, PluginContext, Service};
+use framework::plugin::{AnchorKey, Handled, InputEvent, Metadata, Plugin, PluginContext, Service};
 use framework::scene::pose::transform_of_2d;
 use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 use framework::skin::Skin;
@@ -75,6 +75,10 @@ pub struct Position2dPlugin {
 }
 
 impl Position2dPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "A robot's body at its odometry pose, with its trail; select it to drive it by clicking, dragging a target or the joystick, or to go to or follow a tagged object.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,

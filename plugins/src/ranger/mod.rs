@@ -26,7 +26,7 @@ use crate::sonar::cones::{ConeStyle, Transducer};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, DeviceAccess, LastTaken, RequestError, Stamped};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::pose::transform_of;
 use framework::scene::{NodeId, Object3D, Scene};
 
@@ -54,6 +54,10 @@ pub struct RangerPlugin {
 }
 
 impl RangerPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "A ranger's readings: cones for a ring of sensors, points and free space for a scanner.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,

@@ -19,7 +19,7 @@ use cones::{ConeStyle, Transducer, cone_geometry, evenly_spaced};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::{NodeId, Object3D, Scene};
 
 /// Radius of the ring transducers are assumed on while their poses are unknown, m.
@@ -52,6 +52,9 @@ pub struct SonarPlugin {
 }
 
 impl SonarPlugin {
+    pub const METADATA: Metadata =
+        crate::standard_metadata("A sonar ring's readings as cones around its robot.");
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,

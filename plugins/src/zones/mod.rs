@@ -11,7 +11,7 @@ use std::collections::{HashSet, VecDeque};
 use glam::{Vec2, Vec3};
 
 use framework::config::{ConfigValueError, Param, PluginConfig};
-use framework::plugin::{Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::{NodeId, Object3D, Rgba, Scene};
 
 use framework::scene::polygon::{contains, parse_corners, triangulate};
@@ -36,6 +36,10 @@ pub struct ZonesPlugin {
 }
 
 impl ZonesPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "Named zones drawn on the ground; reports the robots that enter and leave each.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,

@@ -7,6 +7,7 @@
 //! the robot's popup of actions on it; right-click any object, robots included, for the same.
 
 mod input_chain;
+mod item_tree;
 mod lifecycle;
 mod popups;
 
@@ -16,7 +17,7 @@ use std::time::Instant;
 use eframe::egui::{self, Ui};
 use framework::config::DeviceRef;
 use framework::device::DeviceAccess;
-use framework::plugin::{Anchors, Plugin, PluginContext, PluginRegistry};
+use framework::plugin::{Anchors, Metadata, Plugin, PluginContext, PluginRegistry};
 use framework::scene::Scene;
 
 use super::view3d::{TargetDrag, View3d};
@@ -27,6 +28,8 @@ struct Slot {
     plugin: Box<dyn Plugin>,
     device: Option<Arc<dyn DeviceAccess>>,
     instance: PluginInstance,
+    /// What its component says about itself, for the item tree.
+    metadata: Metadata,
     /// Whether [`Plugin::initialize`] ran (it runs before the first [`Plugin::run`]).
     initialized: bool,
 }
@@ -206,74 +209,6 @@ impl Viewer {
         if t && !typing {
             self.view.camera.toggle_projection();
         }
-    }
-
-    fn item_tree(&mut self, ui: &mut Ui) {
-        ui.heading("Components");
-        for error in &self.errors {
-            ui.colored_label(egui::Color32::from_rgb(230, 90, 80), error);
-        }
-        let now = Instant::now();
-        let mut activate = None;
-        let mut used = None;
-        for i in 0..self.slots.len() {
-            let active = self.active == Some(i);
-            let (plugin, mut ctx) = self.plugin_in_context(i, now);
-            let mut title = plugin.title();
-            if active {
-                title.push_str("  (active)");
-            }
-            egui::CollapsingHeader::new(title)
-                .id_salt(("plugin", i))
-                .show(ui, |ui| {
-                    plugin.ui(ui, &mut ctx);
-                    for service in plugin.services() {
-                        if ui
-                            .button(service.name)
-                            .on_hover_text(service.description)
-                            .clicked()
-                        {
-                            used = Some((i, service.name));
-                        }
-                    }
-                    if plugin.can_be_active() && !active && ui.button("Select").clicked() {
-                        activate = Some(i);
-                    }
-                });
-        }
-        if let Some(i) = activate {
-            self.set_active(Some(i));
-        }
-        if let Some((i, name)) = used {
-            self.popup_at = ui
-                .input(|i| i.pointer.interact_pos())
-                .unwrap_or(self.popup_at);
-            self.use_service(i, name);
-        }
-        if let Some(target) = &self.save_target {
-            ui.separator();
-            if ui
-                .button("Save")
-                .on_hover_text(format!(
-                    "write the composition with the current state to {}",
-                    target.path.display()
-                ))
-                .clicked()
-            {
-                self.save_message = Some(match self.save_now() {
-                    Ok(path) => format!("saved to {}", path.display()),
-                    Err(e) => format!("not saved: {e}"),
-                });
-            }
-            if let Some(message) = &self.save_message {
-                ui.small(message);
-            }
-        }
-        ui.separator();
-        ui.small(
-            "drag: pan/orbit · wheel: zoom · T: top/perspective · Tab: next robot · Space: stop all \
-             · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions",
-        );
     }
 
     /// The active handler's controls (a robot's joystick), over the view's bottom right.

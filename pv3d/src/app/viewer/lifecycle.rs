@@ -18,7 +18,7 @@ impl Viewer {
         for mut instance in instances {
             self.make_id_unique(&mut instance);
             let config = config_from_instance(&instance);
-            let Some(create) = self.registry.constructor(&config.library) else {
+            let Some(component) = self.registry.find(&config.library) else {
                 let known: Vec<&str> = self.registry.libraries().collect();
                 self.errors.push(format!(
                     "{}: unknown plugin library {:?}; built in: {}",
@@ -28,6 +28,7 @@ impl Viewer {
                 ));
                 continue;
             };
+            let (create, metadata) = (component.constructor, component.metadata);
             let device = config.device.as_ref().and_then(devices);
             let mut ctx = PluginContext::new(&mut self.scene, &mut self.anchors, Instant::now())
                 .with_device(device.as_deref());
@@ -36,6 +37,7 @@ impl Viewer {
                     plugin,
                     device,
                     instance,
+                    metadata,
                     initialized: false,
                 }),
                 Err(e) => self.errors.push(e.to_string()),

@@ -1,0 +1,98 @@
+//! The item tree: one entry per component, with its own panel, its services, and the paper's
+//! metadata — what it is for, who wrote it and where to read more — so that a composition
+//! explains its parts to whoever opens it.
+
+use std::time::Instant;
+
+use eframe::egui::{self, Ui};
+use framework::plugin::Metadata;
+
+use super::Viewer;
+
+impl Viewer {
+    /// The list of components on the left: each plugin's panel, services and "about" line,
+    /// then Save and a reminder of the mouse and keys.
+    pub(super) fn item_tree(&mut self, ui: &mut Ui) {
+        ui.heading("Components");
+        for error in &self.errors {
+            ui.colored_label(egui::Color32::from_rgb(230, 90, 80), error);
+        }
+        let now = Instant::now();
+        let mut activate = None;
+        let mut used = None;
+        for i in 0..self.slots.len() {
+            let active = self.active == Some(i);
+            let about = self.slots[i].metadata;
+            let (plugin, mut ctx) = self.plugin_in_context(i, now);
+            let mut title = plugin.title();
+            if active {
+                title.push_str("  (active)");
+            }
+            egui::CollapsingHeader::new(title)
+                .id_salt(("plugin", i))
+                .show(ui, |ui| {
+                    about_line(ui, i, &about);
+                    plugin.ui(ui, &mut ctx);
+                    for service in plugin.services() {
+                        if ui
+                            .button(service.name)
+                            .on_hover_text(service.description)
+                            .clicked()
+                        {
+                            used = Some((i, service.name));
+                        }
+                    }
+                    if plugin.can_be_active() && !active && ui.button("Select").clicked() {
+                        activate = Some(i);
+                    }
+                })
+                .header_response
+                .on_hover_text(about.description);
+        }
+        if let Some(i) = activate {
+            self.set_active(Some(i));
+        }
+        if let Some((i, name)) = used {
+            self.popup_at = ui
+                .input(|i| i.pointer.interact_pos())
+                .unwrap_or(self.popup_at);
+            self.use_service(i, name);
+        }
+        if let Some(target) = &self.save_target {
+            ui.separator();
+            if ui
+                .button("Save")
+                .on_hover_text(format!(
+                    "write the composition with the current state to {}",
+                    target.path.display()
+                ))
+                .clicked()
+            {
+                self.save_message = Some(match self.save_now() {
+                    Ok(path) => format!("saved to {}", path.display()),
+                    Err(e) => format!("not saved: {e}"),
+                });
+            }
+            if let Some(message) = &self.save_message {
+                ui.small(message);
+            }
+        }
+        ui.separator();
+        ui.small(
+            "drag: pan/orbit · wheel: zoom · T: top/perspective · Tab: next robot · Space: stop all \
+             · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions",
+        );
+    }
+}
+
+/// A collapsed "About" line under a plugin's entry: the description, the author with their
+/// e-mail, and the web page as a link.
+fn about_line(ui: &mut Ui, index: usize, about: &Metadata) {
+    egui::CollapsingHeader::new("About")
+        .id_salt(("about", index))
+        .show(ui, |ui| {
+            ui.label(about.description);
+            ui.label(format!("by {} <{}>", about.author, about.email));
+            ui.hyperlink(about.web_page);
+        });
+}
