@@ -2,7 +2,6 @@
 //! counted — by every plugin that uses a device on it. A server that goes away shows as
 //! reconnecting; the others carry on.
 
-use std::collections::HashMap;
 use std::sync::Arc;
 use std::time::Duration;
 
@@ -10,7 +9,7 @@ use framework::config::DeviceRef;
 use framework::device::DeviceAccess;
 use player_proto::client::{Client, ClientOptions, ConnectionState, MultiClient, Notifier};
 
-use super::device_link::ClientDevice;
+use super::device_links::{DeviceLinks, LinkKey};
 use crate::composition::{ClientDecl, FoundDevice};
 
 /// Silence after which a server is asked whether it is still there (a device-list request it
@@ -21,7 +20,8 @@ const STALL_TIMEOUT: Duration = Duration::from_secs(3);
 /// server), with the viewer's options and the device links plugins share.
 pub struct RobotManager {
     clients: MultiClient,
-    links: std::sync::Mutex<HashMap<(String, u16, player_proto::DevAddr), Arc<ClientDevice>>>,
+    /// The device links plugins hold, shared by plugins of the same device.
+    links: DeviceLinks,
 }
 
 impl RobotManager {
@@ -85,23 +85,16 @@ impl RobotManager {
         self.clients.iter().map(|c| (c.host(), c.port(), c))
     }
 
-    /// The devices plugins use, by server.
-    pub fn used_devices(&self) -> Vec<(String, u16, player_proto::DevAddr)> {
-        let mut used: Vec<_> = self.links.lock().expect("links").keys().cloned().collect();
-        used.sort();
-        used
+    /// The devices plugins use now, by server.
+    pub fn used_devices(&self) -> Vec<LinkKey> {
+        self.links.held()
     }
 
-    /// Access to a plugin's device (subscribing on first use; shared by plugins of the same
-    /// device).
+    /// Access to a plugin's device, shared by the plugins of the same device: the first one
+    /// subscribes, and when the last one drops its handle the device is unsubscribed.
     pub fn device(&self, device: &DeviceRef) -> Option<Arc<dyn DeviceAccess>> {
-        let client = self.client(&device.host, device.port)?.clone();
+        let client = self.client(&device.host, device.port)?;
         let key = (device.host.clone(), device.port, device.addr);
-        let mut links = self.links.lock().expect("links");
-        let link = links
-            .entry(key)
-            .or_insert_with(|| Arc::new(ClientDevice::new(client, device.addr)))
-            .clone();
-        Some(link)
+        Some(self.links.link(client, key))
     }
 }
