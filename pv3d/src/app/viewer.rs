@@ -6,10 +6,13 @@
 //! from the robot, and let go) to send it there; click a tagged object (a fiducial marker) for
 //! the robot's popup of actions on it; right-click any object, robots included, for the same.
 
+mod device_presence;
 mod input_chain;
 mod item_tree;
 mod lifecycle;
 mod popups;
+
+pub(crate) use device_presence::{GONE, GONE_COLOR};
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -42,6 +45,8 @@ pub struct Viewer {
     scene: Scene,
     anchors: Anchors,
     slots: Vec<Slot>,
+    /// Plugins whose device went away, waiting for it to come back.
+    gone: Vec<device_presence::GonePlugin>,
     /// Makes the plugins of servers that answer after the start.
     registry: PluginRegistry,
     pub view: View3d,
@@ -51,7 +56,8 @@ pub struct Viewer {
     pub errors: Vec<String>,
     /// The Player servers, for the status panel.
     pub robots: Option<Arc<crate::robots::RobotManager>>,
-    /// Turns the handlers into plugins for servers that answer late (needs `robots`).
+    /// Turns the handlers into plugins for servers that answer late, and for devices that
+    /// appear when a server comes back (needs `robots`).
     pub(crate) composer: Option<Composer>,
     status: super::status_panel::StatusPanel,
     /// Where "Save" writes the composition with the plugins' current state.
@@ -81,6 +87,7 @@ impl Viewer {
             scene: Scene::new(),
             anchors: Anchors::default(),
             slots: Vec::new(),
+            gone: Vec::new(),
             registry,
             view: View3d::default(),
             active: None,
@@ -110,18 +117,6 @@ impl Viewer {
         (slot.plugin.as_mut(), ctx)
     }
 
-    /// Adds the plugins of servers that answered since the last call (see [`Composer`]).
-    fn compose_arrivals(&mut self) {
-        let (Some(composer), Some(robots)) = (self.composer.as_mut(), self.robots.clone()) else {
-            return;
-        };
-        let arrivals = composer.arrivals(&robots);
-        if !arrivals.is_empty() {
-            tracing::info!("{} plugins for servers that answered late", arrivals.len());
-            self.add_plugins(arrivals, &|device| robots.device(device));
-        }
-    }
-
     pub fn scene(&self) -> &Scene {
         &self.scene
     }
@@ -143,7 +138,10 @@ impl Viewer {
             egui::Panel::bottom("robot-status")
                 .resizable(true)
                 .default_size(140.0)
-                .show(ui, |ui| self.status.ui(ui, &robots));
+                .show(ui, |ui| {
+                    let gone = self.gone_devices();
+                    self.status.ui(ui, &robots, &gone)
+                });
         }
         egui::CentralPanel::default()
             .frame(egui::Frame::NONE)
@@ -235,8 +233,9 @@ impl Viewer {
         Ok(target.path.clone())
     }
 
-    /// The composition's plugin elements with every plugin's current state written back, and
-    /// the plugins still waiting for their device as they were written.
+    /// The composition's plugin elements with every plugin's current state written back, the
+    /// plugins whose device is gone as they were when it went, and the plugins still waiting
+    /// for their device as they were written.
     pub fn save(&self) -> Vec<PluginInstance> {
         let mut saved: Vec<PluginInstance> = self
             .slots
@@ -247,6 +246,7 @@ impl Viewer {
                 instance
             })
             .collect();
+        saved.extend(self.gone.iter().map(|g| g.instance.clone()));
         if let Some(composer) = &self.composer {
             saved.extend(composer.waiting().iter().cloned());
         }

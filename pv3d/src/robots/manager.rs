@@ -10,7 +10,7 @@ use framework::device::DeviceAccess;
 use player_proto::client::{Client, ClientOptions, ConnectionState, MultiClient, Notifier};
 
 use super::device_links::{DeviceLinks, LinkKey};
-use crate::composition::{ClientDecl, FoundDevice};
+use crate::composition::ClientDecl;
 
 /// Silence after which a server is asked whether it is still there (a device-list request it
 /// always answers); no answer, and the connection is dropped and re-established.
@@ -59,21 +59,6 @@ impl RobotManager {
                 );
             }
         }
-    }
-
-    /// The devices every connected server reported.
-    pub fn devices(&self) -> Vec<FoundDevice> {
-        self.clients
-            .iter()
-            .flat_map(|client| {
-                client.devices().into_iter().map(move |d| FoundDevice {
-                    host: client.host().to_string(),
-                    port: client.port(),
-                    addr: d.addr,
-                    driver: d.driver,
-                })
-            })
-            .collect()
     }
 
     /// The shared client of a server.

@@ -8,6 +8,7 @@ use eframe::egui::{self, Ui};
 use framework::plugin::Metadata;
 
 use super::Viewer;
+use super::device_presence::{GONE, GONE_COLOR};
 
 impl Viewer {
     /// The list of components on the left: each plugin's panel, services and "about" line,
@@ -31,7 +32,7 @@ impl Viewer {
             egui::CollapsingHeader::new(title)
                 .id_salt(("plugin", i))
                 .show(ui, |ui| {
-                    about_line(ui, i, &about);
+                    about_line(ui, ("plugin", i), &about);
                     plugin.ui(ui, &mut ctx);
                     for service in plugin.services() {
                         if ui
@@ -49,6 +50,7 @@ impl Viewer {
                 .header_response
                 .on_hover_text(about.description);
         }
+        self.gone_entries(ui);
         if let Some(i) = activate {
             self.set_active(Some(i));
         }
@@ -83,13 +85,38 @@ impl Viewer {
              · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions",
         );
     }
+
+    /// The plugins whose device went away: named as they were, marked, and told when they
+    /// come back.
+    fn gone_entries(&self, ui: &mut Ui) {
+        for (i, gone) in self.gone.iter().enumerate() {
+            let device = gone.device().map_or(String::new(), |d| {
+                format!(
+                    "{}:{} on {}:{}",
+                    d.addr.interf, d.addr.index, d.host, d.port
+                )
+            });
+            let title = egui::RichText::new(format!("{}  ({GONE})", gone.title)).color(GONE_COLOR);
+            egui::CollapsingHeader::new(title)
+                .id_salt(("gone", i))
+                .show(ui, |ui| {
+                    about_line(ui, ("gone", i), &gone.metadata);
+                    ui.label(format!(
+                        "{device} is no longer listed by its server; this plugin was cleaned \
+                         and resumes, as it was, when the device comes back"
+                    ));
+                })
+                .header_response
+                .on_hover_text(gone.metadata.description);
+        }
+    }
 }
 
 /// A collapsed "About" line under a plugin's entry: the description, the author with their
 /// e-mail, and the web page as a link.
-fn about_line(ui: &mut Ui, index: usize, about: &Metadata) {
+fn about_line(ui: &mut Ui, entry: impl std::hash::Hash + std::fmt::Debug, about: &Metadata) {
     egui::CollapsingHeader::new("About")
-        .id_salt(("about", index))
+        .id_salt(("about", entry))
         .show(ui, |ui| {
             ui.label(about.description);
             ui.label(format!("by {} <{}>", about.author, about.email));

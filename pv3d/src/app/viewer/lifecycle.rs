@@ -49,7 +49,10 @@ impl Viewer {
     }
 
     fn make_id_unique(&self, instance: &mut PluginInstance) {
-        let taken = |id: &str| self.slots.iter().any(|s| s.instance.id() == id);
+        let taken = |id: &str| {
+            self.slots.iter().any(|s| s.instance.id() == id)
+                || self.gone.iter().any(|g| g.instance.id() == id)
+        };
         let id = instance.id().to_string();
         if id.is_empty() || !taken(&id) {
             return;
@@ -61,11 +64,12 @@ impl Viewer {
         instance.element.set_attr("id", unique);
     }
 
-    /// One iteration of the viewer: adds the plugins of servers that answered late, then runs
-    /// every plugin, initializing first the ones that never ran. Call it from a frame, before
+    /// One iteration of the viewer: follows the servers (plugins for devices that appeared,
+    /// plugins of devices that went away cleaned, returning ones resumed), then runs every
+    /// plugin, initializing first the ones that never ran. Call it from a frame, before
     /// [`Viewer::ui`]: that is what makes "initialized after the window and GL exist" hold.
     pub fn update(&mut self, now: Instant) {
-        self.compose_arrivals();
+        self.follow_servers();
         for i in 0..self.slots.len() {
             let first_run = !std::mem::replace(&mut self.slots[i].initialized, true);
             let (plugin, mut ctx) = self.plugin_in_context(i, now);
