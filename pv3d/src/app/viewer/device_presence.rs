@@ -59,7 +59,10 @@ impl Viewer {
             self.device_back(device, &lookup);
         }
         if !changes.new_plugins.is_empty() {
-            tracing::info!("{} plugins for new devices", changes.new_plugins.len());
+            tracing::info!(
+                "{} plugins for new devices (of a server that answered late, or came back with more)",
+                changes.new_plugins.len()
+            );
             self.add_plugins(changes.new_plugins, &lookup);
         }
     }
