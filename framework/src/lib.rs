@@ -2,8 +2,10 @@
 //! crate to write a component; the standard components live in the `plugins` crate and the
 //! application that composes and draws them in `pv3d`.
 //!
-//! * [`plugin`] — the [`Plugin`] trait, its [`PluginContext`], input events, services and the
-//!   registry of constructors by library name.
+//! * [`plugin`] — the [`Plugin`] trait (its lifecycle: initialize, run, clean), its
+//!   [`PluginContext`], input events and services.
+//! * [`registry`] — the components by library name, each with its [`Metadata`] (author,
+//!   e-mail, web page, description).
 //! * [`scene`] — the tree of [`scene::Object3D`] plugins fill and the viewer draws (no OpenGL
 //!   here: a plugin describes geometry, `pv3d` renders it).
 //! * [`config`] — plugin parameters with defaults and errors that say where.
@@ -18,6 +20,7 @@ pub mod config;
 pub mod device;
 pub mod parent_link;
 pub mod plugin;
+pub mod registry;
 pub mod scene;
 pub mod skin;
 pub mod testing;
@@ -25,4 +28,5 @@ pub mod testing;
 pub use action::{Action, ObjectRef};
 pub use config::{ConfigValueError, Param, PluginConfig};
 pub use device::{Awaited, DeviceAccess, LastTaken};
-pub use plugin::{Handled, InputEvent, Plugin, PluginContext, PluginRegistry};
+pub use plugin::{Handled, InputEvent, Plugin, PluginContext};
+pub use registry::{Metadata, PluginRegistry};

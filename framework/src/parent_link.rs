@@ -31,19 +31,17 @@ impl ParentLink {
         }
     }
 
-    /// Puts `node` below its parent once the parent's node is known. Returns whether that
-    /// happened now.
-    pub fn attach(&mut self, node: NodeId, ctx: &mut PluginContext<'_>) -> bool {
+    /// Puts `node` below its parent once the parent's node is known.
+    pub fn attach(&mut self, node: NodeId, ctx: &mut PluginContext<'_>) {
         if self.attached {
-            return false;
+            return;
         }
         let Some(parent) = self.key.as_ref().and_then(|k| ctx.anchors.find(k)) else {
-            return false;
+            return;
         };
         if let Some(object) = ctx.scene.get_mut(node) {
             object.parent = Some(parent);
         }
         self.attached = true;
-        true
     }
 }

@@ -7,8 +7,9 @@ use std::time::Instant;
 use glam::Vec3;
 
 pub use crate::action::{Action, ObjectRef};
-use crate::config::{ConfigValueError, PluginConfig};
+use crate::config::PluginConfig;
 use crate::device::DeviceAccess;
+pub use crate::registry::{Component, Constructor, Metadata, PluginRegistry};
 use crate::scene::{NodeId, Scene};
 
 /// Where a device's scene node is, so that other plugins can attach to it (`<parentNode>`):
@@ -122,7 +123,9 @@ impl Service {
     }
 }
 
-/// A component of a composition.
+/// A component of a composition. Its life, as the viewer drives it: made by its
+/// [`Constructor`], then [`Plugin::initialize`] once, [`Plugin::run`] every iteration, and
+/// [`Plugin::clean`] once before it is removed; nothing is called after `clean`.
 pub trait Plugin: Send {
     /// The configuration this plugin was made from, with its current state written in.
     fn save(&self) -> PluginConfig;
@@ -130,8 +133,14 @@ pub trait Plugin: Send {
     /// A short name for the item tree.
     fn title(&self) -> String;
 
-    /// Brings the scene up to date with the newest data. Returns whether anything changed.
-    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool;
+    /// Called once, after the window and its GL context exist and before the first
+    /// [`Plugin::run`]: the place for set-up that needs a live window, which a constructor
+    /// (also run for `--emit-config`-style checks and in GL-free tests) cannot assume.
+    fn initialize(&mut self, _ctx: &mut PluginContext<'_>) {}
+
+    /// One iteration of the viewer's loop: take the newest data into the scene and send what
+    /// the person asked for. Called often, so it must not block on the network.
+    fn run(&mut self, _ctx: &mut PluginContext<'_>) {}
 
     /// The plugin's panel in the item tree.
     fn ui(&mut self, _ui: &mut egui::Ui, _ctx: &mut PluginContext<'_>) {}
@@ -189,33 +198,8 @@ pub trait Plugin: Send {
         None
     }
 
-    /// Removes the plugin's nodes from the scene.
-    fn detach(&mut self, scene: &mut Scene, anchors: &mut Anchors);
-}
-
-/// Makes a plugin from its configuration.
-pub type Constructor =
-    fn(PluginConfig, &mut PluginContext<'_>) -> Result<Box<dyn Plugin>, ConfigValueError>;
-
-/// The plugins built into the program, by library name (`libpv3d_laser`).
-#[derive(Default)]
-pub struct PluginRegistry {
-    constructors: Vec<(&'static str, Constructor)>,
-}
-
-impl PluginRegistry {
-    pub fn register(&mut self, library: &'static str, constructor: Constructor) {
-        self.constructors.push((library, constructor));
-    }
-
-    pub fn libraries(&self) -> impl Iterator<Item = &'static str> + '_ {
-        self.constructors.iter().map(|(l, _)| *l)
-    }
-
-    pub fn constructor(&self, library: &str) -> Option<Constructor> {
-        self.constructors
-            .iter()
-            .find(|(l, _)| *l == library)
-            .map(|(_, c)| *c)
-    }
+    /// Called once before the plugin is removed (its device went away, the window is
+    /// closing): takes its nodes out of the scene and withdraws its anchors, so that nothing
+    /// it drew outlives it. The plugin is dropped right after.
+    fn clean(&mut self, ctx: &mut PluginContext<'_>);
 }

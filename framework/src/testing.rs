@@ -1,19 +1,17 @@
 //! What a plugin needs around it in a test: a scene, the anchors sensors hang from, a device
 //! fed by hand and the registry the plugin is made from. Nothing here needs a Player server, a
-//! window or a GPU: a test feeds messages, calls `update`, and inspects the scene.
+//! window or a GPU: a test feeds messages, calls `run`, and inspects the scene.
 //!
 //! ```
-//! use framework::plugin::Anchors;
-//! use framework::scene::{NodeId, Object3D, Scene};
+//! use framework::scene::{NodeId, Object3D};
 //! use framework::testing::Harness;
-//! use framework::{ConfigValueError, Plugin, PluginConfig, PluginContext, PluginRegistry};
+//! use framework::{ConfigValueError, Metadata, Plugin, PluginConfig, PluginContext, PluginRegistry};
 //!
 //! struct Marker(NodeId, PluginConfig);
 //! impl Plugin for Marker {
 //!     fn save(&self) -> PluginConfig { self.1.clone() }
 //!     fn title(&self) -> String { "marker".into() }
-//!     fn update(&mut self, _: &mut PluginContext<'_>) -> bool { false }
-//!     fn detach(&mut self, scene: &mut Scene, _: &mut Anchors) { scene.remove(self.0); }
+//!     fn clean(&mut self, ctx: &mut PluginContext<'_>) { ctx.scene.remove(self.0); }
 //! }
 //! fn create(config: PluginConfig, ctx: &mut PluginContext<'_>)
 //!     -> Result<Box<dyn Plugin>, ConfigValueError> {
@@ -22,7 +20,13 @@
 //! }
 //!
 //! let mut registry = PluginRegistry::default();
-//! registry.register("libmarker", create);
+//! let about = Metadata {
+//!     author: "A. Student",
+//!     email: "student@example.org",
+//!     web_page: "https://example.org/marker",
+//!     description: "A marker at the origin.",
+//! };
+//! registry.register("libmarker", about, create);
 //! let mut h = Harness::with_registry(registry);
 //! let config = PluginConfig { library: "libmarker".into(), ..PluginConfig::default() };
 //! h.make(config).unwrap();
@@ -68,7 +72,7 @@ impl Harness {
         }
     }
 
-    /// The context a plugin is made and updated in, with the hand-fed device.
+    /// The context a plugin is made and run in, with the hand-fed device.
     pub fn ctx(&mut self) -> PluginContext<'_> {
         PluginContext::new(&mut self.scene, &mut self.anchors, self.now)
             .with_device(Some(&self.device))
@@ -86,6 +90,14 @@ impl Harness {
             .constructor(&config.library)
             .unwrap_or_else(|| panic!("no plugin {}", config.library));
         create(config, &mut self.ctx())
+    }
+
+    /// Runs `plugin` once, as an iteration of the viewer does, and says whether that changed
+    /// the scene (its generation moved): what a plugin's run is for, seen from outside.
+    pub fn run_changes_scene(&mut self, plugin: &mut dyn Plugin) -> bool {
+        let before = self.scene.generation();
+        plugin.run(&mut self.ctx());
+        self.scene.generation() != before
     }
 
     /// A robot body at `(x, 0)`, published as the anchor of `position2d:0` on

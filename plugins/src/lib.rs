@@ -2,7 +2,7 @@
 //! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones and power. Each is built
 //! on the `framework` crate alone and can be read without the rest of the application.
 
-use framework::PluginRegistry;
+use framework::{Metadata, PluginRegistry};
 
 pub mod camera;
 pub mod fiducial;
@@ -14,19 +14,77 @@ pub mod ranger;
 pub mod sonar;
 pub mod zones;
 
+/// Who wrote the standard components, and where to reach them: one place for all of them.
+/// The project has no public address yet, so the contact fields use reserved `.invalid`
+/// names (RFC 2606) until it has one.
+const AUTHOR: &str = "The pv3d developers";
+const EMAIL: &str = "pv3d@pv3d.invalid";
+const WEB_PAGE: &str = "https://pv3d.invalid/components";
+
+/// The metadata of a standard component: the project's author and addresses, and what this
+/// component is for.
+pub(crate) const fn standard_metadata(description: &'static str) -> Metadata {
+    Metadata {
+        author: AUTHOR,
+        email: EMAIL,
+        web_page: WEB_PAGE,
+        description,
+    }
+}
+
 /// Every plugin built into pv3d, by library name.
 pub fn standard_plugins() -> PluginRegistry {
     let mut registry = PluginRegistry::default();
-    registry.register("libpv3d_ground", ground::Ground::create);
-    registry.register("libpv3d_grid", ground::Grid::create);
-    registry.register("libpv3d_lights", ground::Lights::create);
-    registry.register("libpv3d_laser", laser::LaserPlugin::create);
-    registry.register("libpv3d_position2d", position2d::Position2dPlugin::create);
-    registry.register("libpv3d_fiducial", fiducial::FiducialPlugin::create);
-    registry.register("libpv3d_sonar", sonar::SonarPlugin::create);
-    registry.register("libpv3d_ranger", ranger::RangerPlugin::create);
-    registry.register("libpv3d_camera", camera::CameraPlugin::create);
-    registry.register("libpv3d_zones", zones::ZonesPlugin::create);
-    registry.register("libpv3d_power", power::PowerPlugin::create);
+    registry.register(
+        "libpv3d_ground",
+        ground::Ground::METADATA,
+        ground::Ground::create,
+    );
+    registry.register("libpv3d_grid", ground::Grid::METADATA, ground::Grid::create);
+    registry.register(
+        "libpv3d_lights",
+        ground::Lights::METADATA,
+        ground::Lights::create,
+    );
+    registry.register(
+        "libpv3d_laser",
+        laser::LaserPlugin::METADATA,
+        laser::LaserPlugin::create,
+    );
+    registry.register(
+        "libpv3d_position2d",
+        position2d::Position2dPlugin::METADATA,
+        position2d::Position2dPlugin::create,
+    );
+    registry.register(
+        "libpv3d_fiducial",
+        fiducial::FiducialPlugin::METADATA,
+        fiducial::FiducialPlugin::create,
+    );
+    registry.register(
+        "libpv3d_sonar",
+        sonar::SonarPlugin::METADATA,
+        sonar::SonarPlugin::create,
+    );
+    registry.register(
+        "libpv3d_ranger",
+        ranger::RangerPlugin::METADATA,
+        ranger::RangerPlugin::create,
+    );
+    registry.register(
+        "libpv3d_camera",
+        camera::CameraPlugin::METADATA,
+        camera::CameraPlugin::create,
+    );
+    registry.register(
+        "libpv3d_zones",
+        zones::ZonesPlugin::METADATA,
+        zones::ZonesPlugin::create,
+    );
+    registry.register(
+        "libpv3d_power",
+        power::PowerPlugin::METADATA,
+        power::PowerPlugin::create,
+    );
     registry
 }

@@ -179,7 +179,10 @@ fn the_plugin_shows_the_frame_as_a_texture_of_its_size_without_gl() {
         MsgType::Data,
         Camera::State(rgb_frame(40, 30, [9, 9, 9])),
     ));
-    assert!(!plugin.update(&mut h.ctx()), "the scene does not change");
+    assert!(
+        !h.run_changes_scene(plugin.as_mut()),
+        "the scene does not change"
+    );
 
     // A headless egui pass: no viewport support, so the window is embedded.
     let egui_ctx = egui::Context::default();

@@ -42,7 +42,7 @@ fn detections_become_tagged_markers() {
     let addr: DevAddr = "fiducial:0".parse().unwrap();
     h.device
         .push(Message::typed(addr, MsgType::Data, Fiducial::Scan(scan)));
-    assert!(plugin.update(&mut h.ctx()));
+    assert!(h.run_changes_scene(plugin.as_mut()));
     let scene = &h.scene;
     let markers: Vec<_> = scene
         .iter()

@@ -77,8 +77,11 @@ fn scans_become_points_below_the_robot_at_the_geometry_pose() {
     };
     h.device
         .push(Message::typed(addr, MsgType::Data, Laser::Scan(scan)));
-    assert!(plugin.update(&mut h.ctx()));
-    assert!(!plugin.update(&mut h.ctx()), "nothing new, nothing redrawn");
+    assert!(h.run_changes_scene(plugin.as_mut()));
+    assert!(
+        !h.run_changes_scene(plugin.as_mut()),
+        "nothing new, nothing redrawn"
+    );
 
     let node = plugin.node().unwrap();
     let scene = &h.scene;
@@ -147,7 +150,7 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
             },
         }),
     ));
-    assert!(plugin.update(&mut h.ctx()));
+    assert!(h.run_changes_scene(plugin.as_mut()));
     let points = points_of(&h.scene, node);
     assert_eq!(points.len(), 2);
     assert!((points[0] - Vec3::X).length() < 1e-5, "{points:?}");
@@ -163,7 +166,7 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
             ..LaserScanAngle::default()
         }),
     ));
-    assert!(plugin.update(&mut h.ctx()));
+    assert!(h.run_changes_scene(plugin.as_mut()));
     let points = points_of(&h.scene, node);
     assert_eq!(points.len(), 2, "{points:?}");
     assert!(
@@ -174,7 +177,10 @@ fn scans_with_a_pose_or_a_bearing_per_reading_are_drawn_newest_first() {
         (points[1] - Vec3::new(0.0, -2.0, 0.0)).length() < 1e-5,
         "{points:?}"
     );
-    assert!(!plugin.update(&mut h.ctx()), "nothing new: nothing redrawn");
+    assert!(
+        !h.run_changes_scene(plugin.as_mut()),
+        "nothing new: nothing redrawn"
+    );
 }
 
 /// Where the points of `node` are, in its own frame.

@@ -104,7 +104,7 @@ fn the_body_follows_odometry_and_is_an_anchor_for_sensors() {
     };
     assert_eq!(w.anchors.find(&key), plugin.node());
     odometry(&w.device, 1.0, 2.0, std::f64::consts::FRAC_PI_2);
-    assert!(plugin.update(&mut w.ctx()));
+    assert!(w.run_changes_scene(plugin.as_mut()));
     let node = plugin.node().unwrap();
     let nose = w
         .scene
@@ -115,7 +115,7 @@ fn the_body_follows_odometry_and_is_an_anchor_for_sensors() {
         "facing +y: {nose}"
     );
     odometry(&w.device, 1.5, 2.0, 0.0);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     let trail_lines: usize = w
         .scene
         .iter()
@@ -129,7 +129,7 @@ fn the_body_follows_odometry_and_is_an_anchor_for_sensors() {
 fn a_clicked_target_is_driven_to_and_stop_all_halts() {
     let (mut w, mut plugin) = world();
     odometry(&w.device, 0.0, 0.0, 0.0);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     plugin.on_event(
         &InputEvent::GroundClicked(Vec3::new(2.0, 0.0, 0.0)),
         &mut w.ctx(),
@@ -144,7 +144,7 @@ fn a_clicked_target_is_driven_to_and_stop_all_halts() {
         &InputEvent::GroundClicked(Vec3::new(2.0, 0.0, 0.0)),
         &mut w.ctx(),
     );
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     let (speed, turn) = *velocities(&w.device).last().unwrap();
     assert!(
         speed > 0.4 && turn.abs() < 1e-6,
@@ -154,7 +154,7 @@ fn a_clicked_target_is_driven_to_and_stop_all_halts() {
     plugin.on_event(&InputEvent::StopAll, &mut w.ctx());
     assert_eq!(*velocities(&w.device).last().unwrap(), (0.0, 0.0));
     w.now += Duration::from_secs(1);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(
         *velocities(&w.device).last().unwrap(),
         (0.0, 0.0),
@@ -171,10 +171,10 @@ fn arriving_stops_and_a_lost_connection_sends_nothing() {
         &InputEvent::GroundClicked(Vec3::new(1.0, 0.0, 0.0)),
         &mut w.ctx(),
     );
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     odometry(&w.device, 0.98, 0.0, 0.0);
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(
         *velocities(&w.device).last().unwrap(),
         (0.0, 0.0),
@@ -188,17 +188,17 @@ fn arriving_stops_and_a_lost_connection_sends_nothing() {
     *w.device.state.lock().unwrap() = Some(ConnectionState::Reconnecting { attempt: 1 });
     let before = velocities(&w.device).len();
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     *w.device.state.lock().unwrap() = Some(ConnectionState::Connected);
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(
         velocities(&w.device)[before..],
         [(0.0, 0.0)],
         "the target was dropped with the connection, and its return brought one zero command"
     );
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(velocities(&w.device).len(), before + 1, "and nothing more");
 }
 
@@ -208,7 +208,7 @@ fn position_mode_sends_one_waypoint_and_writes_the_mode_back() {
     c.params.push(Param::new("mode", "position"));
     let (mut w, mut plugin) = world_with(c);
     odometry(&w.device, 0.0, 0.0, 0.0);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     plugin.on_event(&InputEvent::Activated(true), &mut w.ctx());
     plugin.on_event(
         &InputEvent::GroundClicked(Vec3::new(0.0, 2.0, 0.0)),
@@ -216,7 +216,7 @@ fn position_mode_sends_one_waypoint_and_writes_the_mode_back() {
     );
     for _ in 0..3 {
         w.now += Duration::from_millis(200);
-        plugin.update(&mut w.ctx());
+        plugin.run(&mut w.ctx());
     }
     let sent = waypoints(&w.device);
     assert_eq!(sent.len(), 1, "one way-point, not one per frame: {sent:?}");
@@ -232,7 +232,7 @@ fn position_mode_sends_one_waypoint_and_writes_the_mode_back() {
     );
     // The server drove it there: done, and a zero velocity makes sure it stays.
     odometry(&w.device, 0.0, 1.98, 1.5);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(velocities(&w.device), vec![(0.0, 0.0)]);
     let saved = plugin.save();
     assert_eq!(saved.text("mode"), Some("position"));
@@ -248,7 +248,7 @@ fn position_mode_sends_one_waypoint_and_writes_the_mode_back() {
 fn a_dragged_target_shows_but_is_sent_only_on_release() {
     let (mut w, mut plugin) = world();
     odometry(&w.device, 0.0, 0.0, 0.0);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     plugin.on_event(&InputEvent::Activated(true), &mut w.ctx());
     // The dragged target is drawn in cyan, a goal in amber.
     let drawn_in = |w: &Harness, rgb: [u8; 3]| -> usize {
@@ -269,7 +269,7 @@ fn a_dragged_target_shows_but_is_sent_only_on_release() {
         &mut w.ctx(),
     );
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(
         drawn_in(&w, cyan),
         4,
@@ -285,7 +285,7 @@ fn a_dragged_target_shows_but_is_sent_only_on_release() {
         &mut w.ctx(),
     );
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     let (speed, _) = *velocities(&w.device).last().unwrap();
     assert!(speed > 0.4, "released: driving to the drop point");
     assert_eq!(drawn_in(&w, cyan), 0, "only the goal is drawn now");
@@ -296,7 +296,7 @@ fn a_dragged_target_shows_but_is_sent_only_on_release() {
 fn go_to_and_follow_a_marker_that_is_re_created_every_scan() {
     let (mut w, mut plugin) = world();
     odometry(&w.device, 0.0, 0.0, 0.0);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     let seen = marker(&mut w.scene, 7, 3.0, 0.0);
     let target = ObjectRef::of(&w.scene, seen).unwrap();
     let names: Vec<&str> = plugin.actions_on(&target).iter().map(|a| a.name).collect();
@@ -310,11 +310,11 @@ fn go_to_and_follow_a_marker_that_is_re_created_every_scan() {
     // Go to: drives to 0.8 m short of the marker, then stops there.
     plugin.run_action("Go to", &target, &mut w.ctx());
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert!(velocities(&w.device).last().unwrap().0 > 0.4);
     odometry(&w.device, 2.19, 0.0, 0.0);
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(
         *velocities(&w.device).last().unwrap(),
         (0.0, 0.0),
@@ -327,17 +327,17 @@ fn go_to_and_follow_a_marker_that_is_re_created_every_scan() {
     marker(&mut w.scene, 8, 2.5, -2.0);
     marker(&mut w.scene, 7, 2.2, 3.0);
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     let (_, turn) = *velocities(&w.device).last().unwrap();
     assert!(turn > 0.5, "turning left, towards marker 7 (not 8): {turn}");
     // Near enough: it holds still, but keeps following.
     odometry(&w.device, 2.2, 2.3, 1.57);
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(*velocities(&w.device).last().unwrap(), (0.0, 0.0));
     let held = velocities(&w.device).len();
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(
         velocities(&w.device).len(),
         held,
@@ -348,13 +348,13 @@ fn go_to_and_follow_a_marker_that_is_re_created_every_scan() {
     w.scene.get_mut(walked).unwrap().transform =
         glam::Affine3A::from_translation(Vec3::new(2.2, 5.0, 0.0));
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert!(velocities(&w.device).last().unwrap().0 > 0.3, "after them");
     plugin.on_event(&InputEvent::StopAll, &mut w.ctx());
     assert_eq!(*velocities(&w.device).last().unwrap(), (0.0, 0.0));
     let stopped = velocities(&w.device).len();
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(velocities(&w.device).len(), stopped, "stopped following");
 }
 
@@ -378,13 +378,13 @@ fn following_in_position_mode_sends_a_new_waypoint_only_when_the_object_moved() 
     c.params.push(Param::new("followDistance", "1"));
     let (mut w, mut plugin) = world_with(c);
     odometry(&w.device, 0.0, 0.0, 0.0);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     let seen = marker(&mut w.scene, 7, 4.0, 0.0);
     let target = ObjectRef::of(&w.scene, seen).unwrap();
     plugin.run_action("Follow", &target, &mut w.ctx());
     for _ in 0..3 {
         w.now += Duration::from_millis(200);
-        plugin.update(&mut w.ctx());
+        plugin.run(&mut w.ctx());
     }
     let sent = waypoints(&w.device);
     assert_eq!(sent.len(), 1, "{sent:?}");
@@ -396,12 +396,12 @@ fn following_in_position_mode_sends_a_new_waypoint_only_when_the_object_moved() 
     w.scene.get_mut(seen).unwrap().transform =
         glam::Affine3A::from_translation(Vec3::new(4.05, 0.0, 0.0));
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(waypoints(&w.device).len(), 1);
     w.scene.get_mut(seen).unwrap().transform =
         glam::Affine3A::from_translation(Vec3::new(4.0, 2.0, 0.0));
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     let sent = waypoints(&w.device);
     assert_eq!(sent.len(), 2);
     let (x, y, a) = sent[1];
@@ -414,7 +414,7 @@ fn following_in_position_mode_sends_a_new_waypoint_only_when_the_object_moved() 
     // Arrived within the distance: a zero velocity, and no more way-points.
     odometry(&w.device, expected.x.into(), expected.y.into(), a);
     w.now += Duration::from_millis(200);
-    plugin.update(&mut w.ctx());
+    plugin.run(&mut w.ctx());
     assert_eq!(velocities(&w.device), vec![(0.0, 0.0)]);
     assert_eq!(waypoints(&w.device).len(), 2);
 }

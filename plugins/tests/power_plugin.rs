@@ -66,7 +66,7 @@ fn the_gauge_stands_on_its_robot_and_shows_the_charge() {
     let robot = h.robot_at(3.0);
     let mut plugin = make(&mut h, vec![]);
     feed(&h, 80.0);
-    assert!(plugin.update(&mut h.ctx()));
+    assert!(h.run_changes_scene(plugin.as_mut()));
     let node = plugin.node().unwrap();
     assert_eq!(h.scene.get(node).unwrap().parent, Some(robot));
     let at = h
@@ -87,13 +87,13 @@ fn below_the_threshold_it_turns_amber_then_red() {
     h.robot_at(0.0);
     let mut plugin = make(&mut h, vec![Param::new("lowPercent", "30")]);
     feed(&h, 25.0);
-    plugin.update(&mut h.ctx());
+    plugin.run(&mut h.ctx());
     assert_eq!(filled_width(&h, plugin.as_ref()).1, Rgba::rgb(240, 170, 40));
     feed(&h, 10.0);
-    plugin.update(&mut h.ctx());
+    plugin.run(&mut h.ctx());
     assert_eq!(filled_width(&h, plugin.as_ref()).1, Rgba::rgb(230, 60, 50));
     assert!(
-        !plugin.update(&mut h.ctx()),
+        !h.run_changes_scene(plugin.as_mut()),
         "the same reading twice changes nothing"
     );
 }

@@ -56,7 +56,7 @@ fn push_ranges(device: &RecordingDevice, ranges: Vec<f64>) {
 }
 
 /// Makes the plugin with `device` in a scene with a robot at (5, 0) facing +x, lets `feed`
-/// give the device its data, and updates the plugin once; returns the scene, the robot's node,
+/// give the device its data, and runs the plugin once; returns the scene, the robot's node,
 /// the plugin's node and the plugin.
 fn run(
     device: RecordingDevice,
@@ -85,8 +85,11 @@ fn run(
         "geometry and config asked for"
     );
     feed(&h.device);
-    assert!(plugin.update(&mut h.ctx()));
-    assert!(!plugin.update(&mut h.ctx()), "nothing new, nothing redrawn");
+    assert!(h.run_changes_scene(plugin.as_mut()));
+    assert!(
+        !h.run_changes_scene(plugin.as_mut()),
+        "nothing new, nothing redrawn"
+    );
     let node = plugin.node().unwrap();
     (h.scene, robot, node, plugin)
 }
@@ -196,7 +199,7 @@ fn readings_before_the_config_wait_for_it() {
         panic!("default config refused");
     };
     push_ranges(&h.device, vec![1.0; 181]);
-    plugin.update(&mut h.ctx());
+    plugin.run(&mut h.ctx());
     let node = plugin.node().unwrap();
     assert!(h.scene.get(node).unwrap().geometry.is_empty());
 
@@ -211,7 +214,7 @@ fn readings_before_the_config_wait_for_it() {
     let reply = Message::typed(addr(), MsgType::Ack, Ranger::Config(config));
     let config_kind = Ranger::REQ_GET_CONFIG.kind();
     assert_eq!(h.device.answer_later(config_kind, Ok(reply)), 1);
-    assert!(plugin.update(&mut h.ctx()));
+    assert!(h.run_changes_scene(plugin.as_mut()));
     assert_eq!(h.scene.get(node).unwrap().geometry.points.len(), 181);
 }
 

@@ -93,7 +93,7 @@ fn robots_wearing_one_file_share_one_mesh_read_once() {
         );
     }
     let mut gone = robots.pop().unwrap();
-    gone.detach(&mut w.scene, &mut w.anchors);
+    gone.clean(&mut w.ctx());
     drop(gone);
     assert_eq!(manager.users(&file), 2);
     robots.clear();
@@ -173,7 +173,7 @@ fn a_laser_wears_its_skin_at_the_size_its_geometry_reports() {
     let mut laser = w
         .make(config("libpv3d_laser", "laser", &dir, "scanner.obj"))
         .unwrap();
-    laser.update(&mut w.ctx());
+    laser.run(&mut w.ctx());
     let (skin, body) = w
         .scene
         .iter()

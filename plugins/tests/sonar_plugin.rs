@@ -89,8 +89,11 @@ fn one_cone_per_transducer_at_its_pose_as_long_as_its_reading() {
             ranges: vec![1.0, 2.0],
         }),
     ));
-    assert!(plugin.update(&mut h.ctx()));
-    assert!(!plugin.update(&mut h.ctx()), "nothing new, nothing redrawn");
+    assert!(h.run_changes_scene(plugin.as_mut()));
+    assert!(
+        !h.run_changes_scene(plugin.as_mut()),
+        "nothing new, nothing redrawn"
+    );
     let scene = &h.scene;
 
     let node = plugin.node().unwrap();
@@ -135,7 +138,7 @@ fn without_geometry_the_transducers_are_drawn_on_a_ring_and_state_is_saved() {
             ranges: vec![1.0; 4],
         }),
     ));
-    assert!(plugin.update(&mut h.ctx()));
+    assert!(h.run_changes_scene(plugin.as_mut()));
     let object = h.scene.get(plugin.node().unwrap()).unwrap();
     assert_eq!(object.geometry.triangles.len(), 4 * ARC_SEGMENTS * 3);
     assert!(object.geometry.lines.is_empty(), "outlines switched off");

@@ -62,21 +62,24 @@ fn robots_entering_and_leaving_a_zone_are_noticed() {
         "translucent"
     );
 
-    assert!(
-        !plugin.update(&mut ctx),
+    let before = ctx.scene.generation();
+    plugin.run(&mut ctx);
+    assert_eq!(
+        ctx.scene.generation(),
+        before,
         "watching robots changes nothing in the scene"
     );
-    plugin.detach(ctx.scene, ctx.anchors);
+    plugin.clean(&mut ctx);
     assert!(
         !ctx.scene.iter().any(|(_, o)| o.has_tag("zone")),
-        "detach removes the zones"
+        "clean removes the zones"
     );
 
     let mut zones = ZonesPlugin::new(config(vec![zone("dock", L_DOCK)]), &mut ctx).unwrap();
-    zones.update(&mut ctx);
+    zones.run(&mut ctx);
     assert_eq!(zones.robots_in("dock"), ["robot1"]);
     ctx.scene.get_mut(r1).unwrap().transform = Affine3A::from_translation(Vec3::new(1.5, 1.5, 0.0));
-    zones.update(&mut ctx);
+    zones.run(&mut ctx);
     assert!(
         zones.robots_in("dock").is_empty(),
         "the L's missing corner is outside"

@@ -96,11 +96,22 @@ pub fn point_at(composition: &mut Composition, port: u16) {
 /// Serves `world` (relative to the checkout) with every device on one given port, as a
 /// server restarted on its old port, or started after the viewer, would be.
 pub fn serve_on_port(world: &str, port: u16) -> Running {
+    serve_some_on_port(world, port, |_| true)
+}
+
+/// [`serve_on_port`] with only the devices `keep` keeps: a server restarted with a device
+/// fewer.
+pub fn serve_some_on_port(
+    world: &str,
+    port: u16,
+    keep: impl Fn(&player_sim::served::ServedDevice) -> bool,
+) -> Running {
     use player_sim::{served::from_cfg, sim::Simulation, world::World};
     let world_file = repo_root().join(world);
     let world = World::load(&world_file).expect("world");
     let mut devices =
         from_cfg(&world_file.with_extension("cfg"), &world, &mut Vec::new()).expect("cfg");
+    devices.retain(|device| keep(device));
     for device in &mut devices {
         device.port = port;
     }

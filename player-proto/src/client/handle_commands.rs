@@ -118,9 +118,15 @@ impl Client {
 
     /// Unsubscribes and forgets the device's data.
     pub fn unsubscribe(&self, addr: DevAddr) -> Result<(), RequestError> {
+        self.wait(self.unsubscribe_async(addr)).map(|_| ())
+    }
+
+    /// Unsubscribes without waiting: the client's thread forgets the device's data when it
+    /// takes the command, and the reply arrives later. For a UI thread letting a device go,
+    /// which must not block on a slow server.
+    pub fn unsubscribe_async(&self, addr: DevAddr) -> PendingReply {
         let device = (addr.interf, addr.index);
-        self.wait(self.ask(|reply| Command::Unsubscribe { device, reply }))
-            .map(|_| ())
+        self.ask(|reply| Command::Unsubscribe { device, reply })
     }
 
     /// Switches between PUSH and PULL at run time. The mode holds from now on, so it is

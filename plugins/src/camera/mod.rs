@@ -11,8 +11,7 @@ pub mod window;
 
 use frames::{CameraFrames, Offered};
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::plugin::{Anchors, Plugin, PluginContext};
-use framework::scene::Scene;
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use player_proto::interfaces::camera::Camera;
 use window::CameraWindow;
 
@@ -24,6 +23,9 @@ pub struct CameraPlugin {
 }
 
 impl CameraPlugin {
+    pub const METADATA: Metadata =
+        crate::standard_metadata("A camera's images, raw or JPEG, in a window of their own.");
+
     pub fn create(
         config: PluginConfig,
         _ctx: &mut PluginContext<'_>,
@@ -55,13 +57,12 @@ impl Plugin for CameraPlugin {
     }
 
     /// Takes the newest frame. The scene does not change: the image lives in its window.
-    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+    fn run(&mut self, ctx: &mut PluginContext<'_>) {
         if let Some(sample) = ctx.device.and_then(|d| d.latest(Camera::DATA_STATE.kind()))
             && let Offered::Failed(reason) = self.frames.offer(&sample)
         {
             tracing::debug!(plugin = %self.config.id, "camera frame not shown: {reason}");
         }
-        false
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
@@ -82,5 +83,5 @@ impl Plugin for CameraPlugin {
         );
     }
 
-    fn detach(&mut self, _scene: &mut Scene, _anchors: &mut Anchors) {}
+    fn clean(&mut self, _ctx: &mut PluginContext<'_>) {}
 }

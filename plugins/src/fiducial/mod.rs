@@ -14,9 +14,9 @@ use player_proto::interfaces::fiducial::{Fiducial, FiducialData, FiducialGeometr
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::pose::transform_of;
-use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
+use framework::scene::{Aabb, NodeId, Object3D, Rgba};
 
 /// Drawn size of a marker, m.
 const MARKER: f32 = 0.3;
@@ -35,6 +35,10 @@ pub struct FiducialPlugin {
 }
 
 impl FiducialPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "The markers a fiducial finder sees, labelled by id and tagged so that a robot can go to or follow them.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -68,15 +72,13 @@ impl FiducialPlugin {
         }))
     }
 
-    fn place(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let mut changed = self.parent.attach(self.node, ctx);
+    fn place(&mut self, ctx: &mut PluginContext<'_>) {
+        self.parent.attach(self.node, ctx);
         if let Some(Ok(g)) = self.geometry_reply.take()
             && let Some(n) = ctx.scene.get_mut(self.node)
         {
             n.transform = transform_of(&g.pose);
-            changed = true;
         }
-        changed
     }
 }
 
@@ -89,10 +91,10 @@ impl Plugin for FiducialPlugin {
         self.config.titled("Fiducials")
     }
 
-    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let changed = self.place(ctx);
+    fn run(&mut self, ctx: &mut PluginContext<'_>) {
+        self.place(ctx);
         let Some((data, _)) = self.scan_taken.newest_of::<FiducialData>(ctx.device) else {
-            return changed;
+            return;
         };
         for marker in self.markers.drain(..) {
             ctx.scene.remove(marker);
@@ -128,7 +130,6 @@ impl Plugin for FiducialPlugin {
             self.markers.push(ctx.scene.add(object));
             self.seen.push((item.id, item.range() as f32));
         }
-        true
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, _ctx: &mut PluginContext<'_>) {
@@ -149,7 +150,7 @@ impl Plugin for FiducialPlugin {
         Some(self.node)
     }
 
-    fn detach(&mut self, scene: &mut Scene, _anchors: &mut Anchors) {
-        scene.remove(self.node);
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
+        ctx.scene.remove(self.node);
     }
 }

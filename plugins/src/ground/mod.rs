@@ -15,9 +15,9 @@ pub use floorplan::{Placement, walls_from_bitmap};
 use glam::Vec3;
 
 use framework::config::{ConfigValueError, Param, PluginConfig};
-use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::polygon::{parse_corners, prism};
-use framework::scene::{NodeId, Object3D, Rgba, Scene, SceneLighting};
+use framework::scene::{NodeId, Object3D, Rgba, SceneLighting};
 
 /// Fixed scene content placed once: the ground plane, the grid.
 struct Fixture {
@@ -35,12 +35,8 @@ impl Plugin for Fixture {
         self.title.into()
     }
 
-    fn update(&mut self, _: &mut PluginContext<'_>) -> bool {
-        false
-    }
-
-    fn detach(&mut self, scene: &mut Scene, _: &mut Anchors) {
-        scene.remove(self.node);
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
+        ctx.scene.remove(self.node);
     }
 }
 
@@ -48,6 +44,10 @@ impl Plugin for Fixture {
 pub struct Ground;
 
 impl Ground {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "A plane under everything, with the walls of a floorplan bitmap or of Stage blocks standing on it.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -137,6 +137,10 @@ impl Ground {
 pub struct Grid;
 
 impl Grid {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "Metre lines and the x and y axes on the ground, to judge distances and directions by.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -185,6 +189,10 @@ pub struct Lights {
 }
 
 impl Lights {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "The scene's light direction, ambient level and background colour.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -217,11 +225,7 @@ impl Plugin for Lights {
         "Lights".into()
     }
 
-    fn update(&mut self, _: &mut PluginContext<'_>) -> bool {
-        false
-    }
-
-    fn detach(&mut self, scene: &mut Scene, _: &mut Anchors) {
-        scene.set_lighting(SceneLighting::default());
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
+        ctx.scene.set_lighting(SceneLighting::default());
     }
 }

@@ -26,9 +26,9 @@ pub use scan_geometry::{ScanStyle, endpoints, scan_geometry};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken, Stamped};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::pose::transform_of;
-use framework::scene::{NodeId, Object3D, Rgba, Scene};
+use framework::scene::{NodeId, Object3D, Rgba};
 use framework::skin::{Skin, fit_into};
 
 /// The scanner's size until its geometry says otherwise (a SICK LMS200's), m.
@@ -51,6 +51,10 @@ pub struct LaserPlugin {
 }
 
 impl LaserPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "A laser scan as points and the free space it sees, hung below its robot.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -97,9 +101,9 @@ impl LaserPlugin {
         }
     }
 
-    fn place_from_geometry(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+    fn place_from_geometry(&mut self, ctx: &mut PluginContext<'_>) {
         let Some(outcome) = self.geometry.take() else {
-            return false;
+            return;
         };
         match outcome {
             Ok(g) => {
@@ -110,21 +114,19 @@ impl LaserPlugin {
                 if size.min_element() > 0.0 && size.is_finite() {
                     self.draw_skin(ctx, size);
                 }
-                true
             }
             Err(e) => {
                 tracing::info!(plugin = %self.config.id, "no laser geometry ({e}); drawing at the robot's origin");
-                false
             }
         }
     }
 
-    fn redraw(&mut self, sample: &Stamped, ctx: &mut PluginContext<'_>) -> bool {
+    fn redraw(&mut self, sample: &Stamped, ctx: &mut PluginContext<'_>) {
         let scan = match &sample.message.body {
             Body::Laser(Laser::Scan(scan)) => Readings::from_scan(scan),
             Body::Laser(Laser::ScanPose(with_pose)) => Readings::from_scan(&with_pose.scan),
             Body::Laser(Laser::ScanAngle(with_angles)) => Readings::from_scan_angle(with_angles),
-            _ => return false,
+            _ => return,
         };
         let scan = &scan;
         let nearest = endpoints(scan)
@@ -133,10 +135,9 @@ impl LaserPlugin {
             .min_by(f32::total_cmp);
         self.summary = Some((scan.ranges.len(), nearest, sample.received));
         let Some(node) = ctx.scene.get_mut(self.node) else {
-            return false;
+            return;
         };
         scan_geometry(scan, &self.style, &mut node.geometry);
-        true
     }
 }
 
@@ -151,9 +152,9 @@ impl Plugin for LaserPlugin {
         self.config.titled("Laser")
     }
 
-    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let mut changed = self.place_from_geometry(ctx);
-        changed |= self.parent.attach(self.node, ctx);
+    fn run(&mut self, ctx: &mut PluginContext<'_>) {
+        self.place_from_geometry(ctx);
+        self.parent.attach(self.node, ctx);
         let newest = ctx.device.and_then(|d| {
             (0..self.drawn.len())
                 .filter_map(|i| Some((i, d.latest(self.drawn[i].0)?)))
@@ -162,9 +163,8 @@ impl Plugin for LaserPlugin {
         if let Some((i, sample)) = newest
             && self.drawn[i].1.is_new(&sample)
         {
-            changed |= self.redraw(&sample, ctx);
+            self.redraw(&sample, ctx);
         }
-        changed
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
@@ -191,8 +191,8 @@ impl Plugin for LaserPlugin {
         Some(self.node)
     }
 
-    fn detach(&mut self, scene: &mut Scene, anchors: &mut Anchors) {
-        anchors.withdraw(self.node);
-        scene.remove(self.node);
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
+        ctx.anchors.withdraw(self.node);
+        ctx.scene.remove(self.node);
     }
 }

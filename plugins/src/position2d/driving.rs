@@ -83,25 +83,25 @@ impl Position2dPlugin {
         self.redraw_trail(ctx.scene);
     }
 
-    /// One step of tele-operation; returns whether the scene changed.
-    pub(super) fn teleoperate(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+    /// One step of tele-operation.
+    pub(super) fn teleoperate(&mut self, ctx: &mut PluginContext<'_>) {
         if ctx.device.is_some_and(|d| d.read_only()) {
             // Observed only: nothing to drive, and nothing would be sent.
-            return false;
+            return;
         }
         let connected = ctx.device.is_some_and(|d| d.is_connected());
         if !connected {
             // The connection dropped: forget what we were doing, so nothing resumes by itself.
-            let changed = self.goal.is_some() || self.joystick.is_some();
+            let was_driving = self.goal.is_some() || self.joystick.is_some();
             self.goal = None;
             self.joystick = None;
             self.moving = false;
             self.sent_waypoint = None;
             self.link_up = false;
-            if changed {
+            if was_driving {
                 self.redraw_trail(ctx.scene);
             }
-            return changed;
+            return;
         }
         if !self.link_up {
             // Back (or up for the first time since it dropped): the server may still hold our
@@ -116,7 +116,7 @@ impl Position2dPlugin {
                 // The person let go: that zero was the last command.
                 self.joystick = None;
             }
-            return false;
+            return;
         }
         match self.goal.clone() {
             Some(Goal::Point(point)) => self.go_to_point(ctx, point),
@@ -139,13 +139,12 @@ impl Position2dPlugin {
                     None if self.moving => self.drive(ctx, 0.0, 0.0),
                     None => {}
                 }
-                moved
             }
-            None => false,
+            None => {}
         }
     }
 
-    fn go_to_point(&mut self, ctx: &mut PluginContext<'_>, point: Vec2) -> bool {
+    fn go_to_point(&mut self, ctx: &mut PluginContext<'_>, point: Vec2) {
         let robot = Vec2::new(self.pose.0, self.pose.1);
         let arrived = match self.mode {
             DriveMode::Velocity => steer_towards(self.pose, point, self.limits).is_none(),
@@ -153,10 +152,9 @@ impl Position2dPlugin {
         };
         if arrived {
             self.stop(ctx);
-            return true;
+            return;
         }
         self.head_for(ctx, point, heading(robot, point, self.pose.2));
-        false
     }
 
     /// Drives towards `aim`, to face `yaw` there (position mode only).

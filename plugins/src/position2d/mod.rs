@@ -31,7 +31,7 @@ pub use widgets::joystick_id;
 use framework::action::{Action, ObjectRef};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, ConnectionState, LastTaken};
-use framework::plugin::{AnchorKey, Anchors, Handled, InputEvent, Plugin, PluginContext, Service};
+use framework::plugin::{AnchorKey, Handled, InputEvent, Metadata, Plugin, PluginContext, Service};
 use framework::scene::pose::transform_of_2d;
 use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 use framework::skin::Skin;
@@ -75,6 +75,10 @@ pub struct Position2dPlugin {
 }
 
 impl Position2dPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "A robot's body at its odometry pose, with its trail; select it to drive it by clicking, dragging a target or the joystick, or to go to or follow a tagged object.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -177,9 +181,9 @@ impl Position2dPlugin {
         }
     }
 
-    fn take_geometry(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+    fn take_geometry(&mut self, ctx: &mut PluginContext<'_>) {
         let Some(outcome) = self.geometry_reply.take() else {
-            return false;
+            return;
         };
         if let Ok(g) = outcome
             && g.size.sl > 0.0
@@ -188,14 +192,12 @@ impl Position2dPlugin {
             let height = if g.size.sh > 0.0 { g.size.sh } else { 0.22 };
             self.size = Vec3::new(g.size.sl as f32, g.size.sw as f32, height as f32);
             self.redraw_body(ctx.scene);
-            return true;
         }
-        false
     }
 
-    fn take_state(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+    fn take_state(&mut self, ctx: &mut PluginContext<'_>) {
         let Some((state, _)) = self.state_taken.newest_of::<Position2dData>(ctx.device) else {
-            return false;
+            return;
         };
         self.pose = (
             state.pos.px as f32,
@@ -209,7 +211,6 @@ impl Position2dPlugin {
         }
         self.trail.record(Vec2::new(self.pose.0, self.pose.1));
         self.redraw_trail(ctx.scene);
-        true
     }
 }
 
@@ -231,11 +232,10 @@ impl Plugin for Position2dPlugin {
         }
     }
 
-    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let mut changed = self.take_geometry(ctx);
-        changed |= self.take_state(ctx);
-        changed |= self.teleoperate(ctx);
-        changed
+    fn run(&mut self, ctx: &mut PluginContext<'_>) {
+        self.take_geometry(ctx);
+        self.take_state(ctx);
+        self.teleoperate(ctx);
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
@@ -358,11 +358,11 @@ impl Plugin for Position2dPlugin {
         Some(self.node)
     }
 
-    fn detach(&mut self, scene: &mut Scene, anchors: &mut Anchors) {
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
         if self.anchor.is_some() {
-            anchors.withdraw(self.node);
+            ctx.anchors.withdraw(self.node);
         }
-        scene.remove(self.node);
-        scene.remove(self.trail_node);
+        ctx.scene.remove(self.node);
+        ctx.scene.remove(self.trail_node);
     }
 }

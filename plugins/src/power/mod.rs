@@ -16,7 +16,7 @@ use player_proto::interfaces::power::PowerData;
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::LastTaken;
 use framework::parent_link::ParentLink;
-use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::{NodeId, Object3D, Rgba, Scene};
 
 pub use charge::{Charge, Level};
@@ -37,6 +37,10 @@ pub struct PowerPlugin {
 }
 
 impl PowerPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "A robot's battery: a gauge above the robot and every figure the device reports, with a warning when it runs low.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -99,10 +103,10 @@ impl Plugin for PowerPlugin {
         self.config.titled("Battery")
     }
 
-    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let attached = self.parent.attach(self.node, ctx);
+    fn run(&mut self, ctx: &mut PluginContext<'_>) {
+        self.parent.attach(self.node, ctx);
         let Some((data, _)) = self.taken.newest_of::<PowerData>(ctx.device) else {
-            return attached;
+            return;
         };
         let charge = Charge::read(&data, &self.thresholds);
         let was = self.charge.as_ref().map(|c| c.level);
@@ -111,7 +115,6 @@ impl Plugin for PowerPlugin {
         }
         self.draw(&charge, ctx.scene);
         self.charge = Some(charge);
-        true
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, _ctx: &mut PluginContext<'_>) {
@@ -131,7 +134,7 @@ impl Plugin for PowerPlugin {
         Some(self.node)
     }
 
-    fn detach(&mut self, scene: &mut Scene, _anchors: &mut Anchors) {
-        scene.remove(self.node);
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
+        ctx.scene.remove(self.node);
     }
 }

@@ -26,7 +26,7 @@ use crate::sonar::cones::{ConeStyle, Transducer};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, DeviceAccess, LastTaken, RequestError, Stamped};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::pose::transform_of;
 use framework::scene::{NodeId, Object3D, Scene};
 
@@ -54,6 +54,10 @@ pub struct RangerPlugin {
 }
 
 impl RangerPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "A ranger's readings: cones for a ring of sensors, points and free space for a scanner.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -170,9 +174,9 @@ impl RangerPlugin {
         self.received = Some(received);
     }
 
-    fn redraw(&mut self, scene: &mut Scene) -> bool {
+    fn redraw(&mut self, scene: &mut Scene) {
         let Some(object) = scene.get_mut(self.node) else {
-            return false;
+            return;
         };
         let data = RangerData {
             ranges: &self.ranges,
@@ -187,7 +191,6 @@ impl RangerPlugin {
             &mut object.geometry,
         );
         object.visible = self.visible;
-        true
     }
 }
 
@@ -204,17 +207,16 @@ impl Plugin for RangerPlugin {
         self.config.titled("Ranger")
     }
 
-    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let mut changed = self.parent.attach(self.node, ctx);
+    fn run(&mut self, ctx: &mut PluginContext<'_>) {
+        self.parent.attach(self.node, ctx);
         self.take_replies(ctx.scene);
         if let Some(device) = ctx.device {
             self.take_data(device, ctx.scene);
         }
         if self.redraw_needed {
             self.redraw_needed = false;
-            changed |= self.redraw(ctx.scene);
+            self.redraw(ctx.scene);
         }
-        changed
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
@@ -245,8 +247,8 @@ impl Plugin for RangerPlugin {
         Some(self.node)
     }
 
-    fn detach(&mut self, scene: &mut Scene, anchors: &mut Anchors) {
-        anchors.withdraw(self.node);
-        scene.remove(self.node);
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
+        ctx.anchors.withdraw(self.node);
+        ctx.scene.remove(self.node);
     }
 }

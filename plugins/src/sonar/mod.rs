@@ -19,7 +19,7 @@ use cones::{ConeStyle, Transducer, cone_geometry, evenly_spaced};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::{NodeId, Object3D, Scene};
 
 /// Radius of the ring transducers are assumed on while their poses are unknown, m.
@@ -52,6 +52,9 @@ pub struct SonarPlugin {
 }
 
 impl SonarPlugin {
+    pub const METADATA: Metadata =
+        crate::standard_metadata("A sonar ring's readings as cones around its robot.");
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -113,12 +116,12 @@ impl SonarPlugin {
         self.redraw_needed = true;
     }
 
-    fn redraw(&mut self, scene: &mut Scene) -> bool {
+    fn redraw(&mut self, scene: &mut Scene) {
         if self.pose_source == PoseSource::Assumed && self.transducers.len() != self.ranges.len() {
             self.transducers = evenly_spaced(self.ranges.len(), ASSUMED_RING_RADIUS);
         }
         let Some(object) = scene.get_mut(self.node) else {
-            return false;
+            return;
         };
         cone_geometry(
             &self.transducers,
@@ -127,7 +130,6 @@ impl SonarPlugin {
             &mut object.geometry,
         );
         object.visible = self.visible;
-        true
     }
 }
 
@@ -143,8 +145,8 @@ impl Plugin for SonarPlugin {
         self.config.titled("Sonar")
     }
 
-    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
-        let mut changed = self.parent.attach(self.node, ctx);
+    fn run(&mut self, ctx: &mut PluginContext<'_>) {
+        self.parent.attach(self.node, ctx);
         self.take_geometry_reply();
         if let Some((g, _)) = self.geometry_taken.newest_of::<SonarGeometry>(ctx.device) {
             self.adopt_poses(&g.poses);
@@ -154,9 +156,8 @@ impl Plugin for SonarPlugin {
         }
         if self.redraw_needed {
             self.redraw_needed = false;
-            changed |= self.redraw(ctx.scene);
+            self.redraw(ctx.scene);
         }
-        changed
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
@@ -193,8 +194,8 @@ impl Plugin for SonarPlugin {
         Some(self.node)
     }
 
-    fn detach(&mut self, scene: &mut Scene, anchors: &mut Anchors) {
-        anchors.withdraw(self.node);
-        scene.remove(self.node);
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
+        ctx.anchors.withdraw(self.node);
+        ctx.scene.remove(self.node);
     }
 }

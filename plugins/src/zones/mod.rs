@@ -11,7 +11,7 @@ use std::collections::{HashSet, VecDeque};
 use glam::{Vec2, Vec3};
 
 use framework::config::{ConfigValueError, Param, PluginConfig};
-use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::plugin::{Metadata, Plugin, PluginContext};
 use framework::scene::{NodeId, Object3D, Rgba, Scene};
 
 use framework::scene::polygon::{contains, parse_corners, triangulate};
@@ -36,6 +36,10 @@ pub struct ZonesPlugin {
 }
 
 impl ZonesPlugin {
+    pub const METADATA: Metadata = crate::standard_metadata(
+        "Named zones drawn on the ground; reports the robots that enter and leave each.",
+    );
+
     pub fn create(
         config: PluginConfig,
         ctx: &mut PluginContext<'_>,
@@ -144,7 +148,7 @@ impl Plugin for ZonesPlugin {
     }
 
     /// Watches the robots; the zones themselves never change, so the scene does not either.
-    fn update(&mut self, ctx: &mut PluginContext<'_>) -> bool {
+    fn run(&mut self, ctx: &mut PluginContext<'_>) {
         let mut now_inside = HashSet::new();
         for (robot, position) in Self::robots(ctx.scene) {
             for (i, zone) in self.zones.iter().enumerate() {
@@ -171,12 +175,11 @@ impl Plugin for ZonesPlugin {
             self.events.push_back(event);
         }
         self.inside = now_inside;
-        false
     }
 
-    fn detach(&mut self, scene: &mut Scene, _anchors: &mut Anchors) {
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
         for node in self.nodes.drain(..) {
-            scene.remove(node);
+            ctx.scene.remove(node);
         }
     }
 

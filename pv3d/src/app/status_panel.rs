@@ -1,5 +1,6 @@
-//! The robots' status: each server's connection state, and each used device's message rate
-//! and the age of its newest data — so a person sees freshness and lag at a glance.
+//! The robots' status: each server's connection state, each used device's message rate and
+//! the age of its newest data — so a person sees freshness and lag at a glance — and the
+//! devices whose plugins wait for them to come back.
 
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
@@ -9,6 +10,8 @@ use player_proto::client::{Client, ConnectionState};
 use player_proto::interfaces::kind::MessageKind;
 use player_proto::wire::DevAddr;
 
+use super::viewer::{GONE, GONE_COLOR};
+use crate::composition::FoundDevice;
 use crate::robots::RobotManager;
 
 /// Rates are computed over windows of this length.
@@ -22,8 +25,9 @@ pub struct StatusPanel {
 
 impl StatusPanel {
     /// A summary line, then one row per server. Only the rows in sight are built, so a swarm
-    /// of hundreds of servers costs a screenful of rows per frame, not hundreds.
-    pub fn ui(&mut self, ui: &mut Ui, robots: &RobotManager) {
+    /// of hundreds of servers costs a screenful of rows per frame, not hundreds. `gone`: the
+    /// devices a server no longer lists while plugins wait for them.
+    pub fn ui(&mut self, ui: &mut Ui, robots: &RobotManager, gone: &[FoundDevice]) {
         let now = Instant::now();
         let clients: Vec<_> = robots.clients().collect();
         let connected = clients
@@ -44,7 +48,7 @@ impl StatusPanel {
                     .striped(true)
                     .show(ui, |ui| {
                         for &(host, port, client) in &clients[rows] {
-                            self.row(ui, now, host, port, client, &used);
+                            self.row(ui, now, (host, port), client, &used, gone);
                             ui.end_row();
                         }
                     });
@@ -55,10 +59,10 @@ impl StatusPanel {
         &mut self,
         ui: &mut Ui,
         now: Instant,
-        host: &str,
-        port: u16,
+        (host, port): (&str, u16),
         client: &Client,
         used: &[(String, u16, DevAddr)],
+        gone: &[FoundDevice],
     ) {
         let state = client.state();
         let color = match state {
@@ -97,6 +101,16 @@ impl StatusPanel {
                 addr.interf, addr.index, entry.2
             ));
         }
-        ui.label(cells.join("   "));
+        let gone_here: Vec<String> = gone
+            .iter()
+            .filter(|d| d.host == host && d.port == port)
+            .map(|d| format!("{}:{} {GONE}", d.addr.interf, d.addr.index))
+            .collect();
+        ui.horizontal(|ui| {
+            ui.label(cells.join("   "));
+            if !gone_here.is_empty() {
+                ui.colored_label(GONE_COLOR, gone_here.join("   "));
+            }
+        });
     }
 }

@@ -6,8 +6,13 @@
 //! from the robot, and let go) to send it there; click a tagged object (a fiducial marker) for
 //! the robot's popup of actions on it; right-click any object, robots included, for the same.
 
+mod device_presence;
 mod input_chain;
+mod item_tree;
+mod lifecycle;
 mod popups;
+
+pub(crate) use device_presence::{GONE, GONE_COLOR};
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -15,17 +20,21 @@ use std::time::Instant;
 use eframe::egui::{self, Ui};
 use framework::config::DeviceRef;
 use framework::device::DeviceAccess;
-use framework::plugin::{Anchors, Plugin, PluginContext, PluginRegistry};
+use framework::plugin::{Anchors, Metadata, Plugin, PluginContext, PluginRegistry};
 use framework::scene::Scene;
 
 use super::view3d::{TargetDrag, View3d};
-use crate::composition::{Composer, PluginInstance, config_from_instance, write_back};
+use crate::composition::{Composer, PluginInstance, write_back};
 
 /// A plugin and what it was made from.
 struct Slot {
     plugin: Box<dyn Plugin>,
     device: Option<Arc<dyn DeviceAccess>>,
     instance: PluginInstance,
+    /// What its component says about itself, for the item tree.
+    metadata: Metadata,
+    /// Whether [`Plugin::initialize`] ran (it runs before the first [`Plugin::run`]).
+    initialized: bool,
 }
 
 /// Looks up the device access for a plugin's device.
@@ -36,6 +45,8 @@ pub struct Viewer {
     scene: Scene,
     anchors: Anchors,
     slots: Vec<Slot>,
+    /// Plugins whose device went away, waiting for it to come back.
+    gone: Vec<device_presence::GonePlugin>,
     /// Makes the plugins of servers that answer after the start.
     registry: PluginRegistry,
     pub view: View3d,
@@ -45,7 +56,8 @@ pub struct Viewer {
     pub errors: Vec<String>,
     /// The Player servers, for the status panel.
     pub robots: Option<Arc<crate::robots::RobotManager>>,
-    /// Turns the handlers into plugins for servers that answer late (needs `robots`).
+    /// Turns the handlers into plugins for servers that answer late, and for devices that
+    /// appear when a server comes back (needs `robots`).
     pub(crate) composer: Option<Composer>,
     status: super::status_panel::StatusPanel,
     /// Where "Save" writes the composition with the plugins' current state.
@@ -75,6 +87,7 @@ impl Viewer {
             scene: Scene::new(),
             anchors: Anchors::default(),
             slots: Vec::new(),
+            gone: Vec::new(),
             registry,
             view: View3d::default(),
             active: None,
@@ -91,39 +104,6 @@ impl Viewer {
         viewer
     }
 
-    /// Makes and adds a plugin for each instance; an id already in use gets a suffix.
-    pub fn add_plugins(&mut self, instances: Vec<PluginInstance>, devices: DeviceLookup<'_>) {
-        let first_error = self.errors.len();
-        for mut instance in instances {
-            self.make_id_unique(&mut instance);
-            let config = config_from_instance(&instance);
-            let Some(create) = self.registry.constructor(&config.library) else {
-                let known: Vec<&str> = self.registry.libraries().collect();
-                self.errors.push(format!(
-                    "{}: unknown plugin library {:?}; built in: {}",
-                    config.origin,
-                    config.library,
-                    known.join(", ")
-                ));
-                continue;
-            };
-            let device = config.device.as_ref().and_then(devices);
-            let mut ctx = PluginContext::new(&mut self.scene, &mut self.anchors, Instant::now())
-                .with_device(device.as_deref());
-            match create(config, &mut ctx) {
-                Ok(plugin) => self.slots.push(Slot {
-                    plugin,
-                    device,
-                    instance,
-                }),
-                Err(e) => self.errors.push(e.to_string()),
-            }
-        }
-        for e in &self.errors[first_error..] {
-            tracing::error!("{e}");
-        }
-    }
-
     /// Plugin `index` and the context it is called in: its own device, the shared scene and
     /// anchors. Every call into a plugin after it was made goes through here.
     fn plugin_in_context(
@@ -137,48 +117,12 @@ impl Viewer {
         (slot.plugin.as_mut(), ctx)
     }
 
-    fn make_id_unique(&self, instance: &mut PluginInstance) {
-        let taken = |id: &str| self.slots.iter().any(|s| s.instance.id() == id);
-        let id = instance.id().to_string();
-        if id.is_empty() || !taken(&id) {
-            return;
-        }
-        let unique = (2..)
-            .map(|n| format!("{id}-{n}"))
-            .find(|candidate| !taken(candidate))
-            .expect("some suffix is free");
-        instance.element.set_attr("id", unique);
-    }
-
-    /// Adds the plugins of servers that answered since the last call (see [`Composer`]).
-    fn compose_arrivals(&mut self) {
-        let (Some(composer), Some(robots)) = (self.composer.as_mut(), self.robots.clone()) else {
-            return;
-        };
-        let arrivals = composer.arrivals(&robots);
-        if !arrivals.is_empty() {
-            tracing::info!("{} plugins for servers that answered late", arrivals.len());
-            self.add_plugins(arrivals, &|device| robots.device(device));
-        }
-    }
-
     pub fn scene(&self) -> &Scene {
         &self.scene
     }
 
     pub fn plugin_count(&self) -> usize {
         self.slots.len()
-    }
-
-    /// Lets every plugin take its newest data. Returns whether the scene changed.
-    pub fn update(&mut self, now: Instant) -> bool {
-        self.compose_arrivals();
-        let mut changed = false;
-        for i in 0..self.slots.len() {
-            let (plugin, mut ctx) = self.plugin_in_context(i, now);
-            changed |= plugin.update(&mut ctx);
-        }
-        changed
     }
 
     /// The whole window: item tree on the left, 3D view in the middle.
@@ -194,7 +138,10 @@ impl Viewer {
             egui::Panel::bottom("robot-status")
                 .resizable(true)
                 .default_size(140.0)
-                .show(ui, |ui| self.status.ui(ui, &robots));
+                .show(ui, |ui| {
+                    let gone = self.gone_devices();
+                    self.status.ui(ui, &robots, &gone)
+                });
         }
         egui::CentralPanel::default()
             .frame(egui::Frame::NONE)
@@ -262,87 +209,6 @@ impl Viewer {
         }
     }
 
-    fn item_tree(&mut self, ui: &mut Ui) {
-        ui.heading("Components");
-        for error in &self.errors {
-            ui.colored_label(egui::Color32::from_rgb(230, 90, 80), error);
-        }
-        let now = Instant::now();
-        let observing = self.observing();
-        if observing {
-            ui.strong("Observing: read-only, no tele-operation");
-        }
-        let mut activate = None;
-        let mut used = None;
-        for i in 0..self.slots.len() {
-            let active = self.active == Some(i);
-            let (plugin, mut ctx) = self.plugin_in_context(i, now);
-            let mut title = plugin.title();
-            if active {
-                title.push_str("  (active)");
-            }
-            egui::CollapsingHeader::new(title)
-                .id_salt(("plugin", i))
-                .show(ui, |ui| {
-                    plugin.ui(ui, &mut ctx);
-                    // An observer's services would command the robot: none are offered.
-                    let services = if observing {
-                        Vec::new()
-                    } else {
-                        plugin.services()
-                    };
-                    for service in services {
-                        if ui
-                            .button(service.name)
-                            .on_hover_text(service.description)
-                            .clicked()
-                        {
-                            used = Some((i, service.name));
-                        }
-                    }
-                    let selectable = plugin.can_be_active() && !observing;
-                    if selectable && !active && ui.button("Select").clicked() {
-                        activate = Some(i);
-                    }
-                });
-        }
-        if let Some(i) = activate {
-            self.set_active(Some(i));
-        }
-        if let Some((i, name)) = used {
-            self.popup_at = ui
-                .input(|i| i.pointer.interact_pos())
-                .unwrap_or(self.popup_at);
-            self.use_service(i, name);
-        }
-        if let Some(target) = &self.save_target {
-            ui.separator();
-            if ui
-                .button("Save")
-                .on_hover_text(format!(
-                    "write the composition with the current state to {}",
-                    target.path.display()
-                ))
-                .clicked()
-            {
-                self.save_message = Some(match self.save_now() {
-                    Ok(path) => format!("saved to {}", path.display()),
-                    Err(e) => format!("not saved: {e}"),
-                });
-            }
-            if let Some(message) = &self.save_message {
-                ui.small(message);
-            }
-        }
-        ui.separator();
-        ui.small(if self.observing() {
-            "drag: pan/orbit · wheel: zoom · T: top/perspective"
-        } else {
-            "drag: pan/orbit · wheel: zoom · T: top/perspective · Tab: next robot · Space: stop all \
-             · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions"
-        });
-    }
-
     /// The active handler's controls (a robot's joystick), over the view's bottom right.
     fn active_controls(&mut self, egui_ctx: &egui::Context, view_rect: egui::Rect) {
         let Some(active) = self.active else { return };
@@ -367,8 +233,9 @@ impl Viewer {
         Ok(target.path.clone())
     }
 
-    /// The composition's plugin elements with every plugin's current state written back, and
-    /// the plugins still waiting for their device as they were written.
+    /// The composition's plugin elements with every plugin's current state written back, the
+    /// plugins whose device is gone as they were when it went, and the plugins still waiting
+    /// for their device as they were written.
     pub fn save(&self) -> Vec<PluginInstance> {
         let mut saved: Vec<PluginInstance> = self
             .slots
@@ -379,6 +246,7 @@ impl Viewer {
                 instance
             })
             .collect();
+        saved.extend(self.gone.iter().map(|g| g.instance.clone()));
         if let Some(composer) = &self.composer {
             saved.extend(composer.waiting().iter().cloned());
         }
@@ -388,12 +256,14 @@ impl Viewer {
 
 impl Drop for Viewer {
     fn drop(&mut self) {
-        // Leave no robot moving when the window goes away, and keep what the person set up.
+        // Leave no robot moving when the window goes away, keep what the person set up, and
+        // only then let the plugins clean up.
         self.stop_all();
         if self.save_target.is_some()
             && let Err(e) = self.save_now()
         {
             tracing::error!("could not save the composition on exit: {e}");
         }
+        self.remove_all_plugins();
     }
 }

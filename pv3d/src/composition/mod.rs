@@ -9,6 +9,7 @@
 //! names file:line:column.
 
 mod composer;
+mod device_ledger;
 mod device_mask;
 mod emit;
 mod error;
@@ -21,7 +22,7 @@ mod plugin_config;
 mod relocate;
 mod xml_tree;
 
-pub use composer::Composer;
+pub use composer::{Composer, DeviceChanges};
 pub use device_mask::{DeviceMask, FoundDevice, MaskError};
 pub use emit::{emit_document, to_xml_string};
 pub use error::{ConfigError, SourcePos};

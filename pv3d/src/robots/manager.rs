@@ -2,7 +2,6 @@
 //! counted — by every plugin that uses a device on it. A server that goes away shows as
 //! reconnecting; the others carry on.
 
-use std::collections::HashMap;
 use std::sync::Arc;
 use std::time::Duration;
 
@@ -10,8 +9,8 @@ use framework::config::DeviceRef;
 use framework::device::DeviceAccess;
 use player_proto::client::{Client, ClientOptions, ConnectionState, MultiClient, Notifier};
 
-use super::device_link::ClientDevice;
-use crate::composition::{ClientDecl, FoundDevice};
+use super::device_links::{DeviceLinks, LinkKey};
+use crate::composition::ClientDecl;
 
 /// Silence after which a server is asked whether it is still there (a device-list request it
 /// always answers); no answer, and the connection is dropped and re-established.
@@ -30,7 +29,8 @@ pub struct RobotManager {
     clients: MultiClient,
     /// Every client is read-only (`pv3d --observe`).
     observing: bool,
-    links: std::sync::Mutex<HashMap<(String, u16, player_proto::DevAddr), Arc<ClientDevice>>>,
+    /// The device links plugins hold, shared by plugins of the same device.
+    links: DeviceLinks,
 }
 
 impl RobotManager {
@@ -86,21 +86,6 @@ impl RobotManager {
         }
     }
 
-    /// The devices every connected server reported.
-    pub fn devices(&self) -> Vec<FoundDevice> {
-        self.clients
-            .iter()
-            .flat_map(|client| {
-                client.devices().into_iter().map(move |d| FoundDevice {
-                    host: client.host().to_string(),
-                    port: client.port(),
-                    addr: d.addr,
-                    driver: d.driver,
-                })
-            })
-            .collect()
-    }
-
     /// The shared client of a server.
     pub fn client(&self, host: &str, port: u16) -> Option<&Arc<Client>> {
         self.clients.find(host, port)
@@ -110,23 +95,16 @@ impl RobotManager {
         self.clients.iter().map(|c| (c.host(), c.port(), c))
     }
 
-    /// The devices plugins use, by server.
-    pub fn used_devices(&self) -> Vec<(String, u16, player_proto::DevAddr)> {
-        let mut used: Vec<_> = self.links.lock().expect("links").keys().cloned().collect();
-        used.sort();
-        used
+    /// The devices plugins use now, by server.
+    pub fn used_devices(&self) -> Vec<LinkKey> {
+        self.links.held()
     }
 
-    /// Access to a plugin's device (subscribing on first use; shared by plugins of the same
-    /// device).
+    /// Access to a plugin's device, shared by the plugins of the same device: the first one
+    /// subscribes, and when the last one drops its handle the device is unsubscribed.
     pub fn device(&self, device: &DeviceRef) -> Option<Arc<dyn DeviceAccess>> {
-        let client = self.client(&device.host, device.port)?.clone();
+        let client = self.client(&device.host, device.port)?;
         let key = (device.host.clone(), device.port, device.addr);
-        let mut links = self.links.lock().expect("links");
-        let link = links
-            .entry(key)
-            .or_insert_with(|| Arc::new(ClientDevice::new(client, device.addr)))
-            .clone();
-        Some(link)
+        Some(self.links.link(client, key))
     }
 }

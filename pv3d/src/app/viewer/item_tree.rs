@@ -1,0 +1,138 @@
+//! The item tree: one entry per component, with its own panel, its services, and the paper's
+//! metadata — what it is for, who wrote it and where to read more — so that a composition
+//! explains its parts to whoever opens it.
+
+use std::time::Instant;
+
+use eframe::egui::{self, Ui};
+use framework::plugin::Metadata;
+
+use super::Viewer;
+use super::device_presence::{GONE, GONE_COLOR};
+
+impl Viewer {
+    /// The list of components on the left: each plugin's panel, services and "about" line,
+    /// then Save and a reminder of the mouse and keys.
+    pub(super) fn item_tree(&mut self, ui: &mut Ui) {
+        ui.heading("Components");
+        for error in &self.errors {
+            ui.colored_label(egui::Color32::from_rgb(230, 90, 80), error);
+        }
+        let now = Instant::now();
+        let observing = self.observing();
+        if observing {
+            ui.strong("Observing: read-only, no tele-operation");
+        }
+        let mut activate = None;
+        let mut used = None;
+        for i in 0..self.slots.len() {
+            let active = self.active == Some(i);
+            let about = self.slots[i].metadata;
+            let (plugin, mut ctx) = self.plugin_in_context(i, now);
+            let mut title = plugin.title();
+            if active {
+                title.push_str("  (active)");
+            }
+            egui::CollapsingHeader::new(title)
+                .id_salt(("plugin", i))
+                .show(ui, |ui| {
+                    about_line(ui, ("plugin", i), &about);
+                    plugin.ui(ui, &mut ctx);
+                    // An observer's services would command the robot: none are offered.
+                    let services = if observing {
+                        Vec::new()
+                    } else {
+                        plugin.services()
+                    };
+                    for service in services {
+                        if ui
+                            .button(service.name)
+                            .on_hover_text(service.description)
+                            .clicked()
+                        {
+                            used = Some((i, service.name));
+                        }
+                    }
+                    let selectable = plugin.can_be_active() && !observing;
+                    if selectable && !active && ui.button("Select").clicked() {
+                        activate = Some(i);
+                    }
+                })
+                .header_response
+                .on_hover_text(about.description);
+        }
+        self.gone_entries(ui);
+        if let Some(i) = activate {
+            self.set_active(Some(i));
+        }
+        if let Some((i, name)) = used {
+            self.popup_at = ui
+                .input(|i| i.pointer.interact_pos())
+                .unwrap_or(self.popup_at);
+            self.use_service(i, name);
+        }
+        if let Some(target) = &self.save_target {
+            ui.separator();
+            if ui
+                .button("Save")
+                .on_hover_text(format!(
+                    "write the composition with the current state to {}",
+                    target.path.display()
+                ))
+                .clicked()
+            {
+                self.save_message = Some(match self.save_now() {
+                    Ok(path) => format!("saved to {}", path.display()),
+                    Err(e) => format!("not saved: {e}"),
+                });
+            }
+            if let Some(message) = &self.save_message {
+                ui.small(message);
+            }
+        }
+        ui.separator();
+        ui.small(if observing {
+            "drag: pan/orbit · wheel: zoom · T: top/perspective"
+        } else {
+            "drag: pan/orbit · wheel: zoom · T: top/perspective · Tab: next robot · Space: stop all \
+             · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions"
+        });
+    }
+
+    /// The plugins whose device went away: named as they were, marked, and told when they
+    /// come back.
+    fn gone_entries(&self, ui: &mut Ui) {
+        for (i, gone) in self.gone.iter().enumerate() {
+            let device = gone.device().map_or(String::new(), |d| {
+                format!(
+                    "{}:{} on {}:{}",
+                    d.addr.interf, d.addr.index, d.host, d.port
+                )
+            });
+            let title = egui::RichText::new(format!("{}  ({GONE})", gone.title)).color(GONE_COLOR);
+            egui::CollapsingHeader::new(title)
+                .id_salt(("gone", i))
+                .show(ui, |ui| {
+                    about_line(ui, ("gone", i), &gone.metadata);
+                    ui.label(format!(
+                        "{device} is no longer listed by its server; this plugin was cleaned \
+                         and resumes, as it was, when the device comes back"
+                    ));
+                })
+                .header_response
+                .on_hover_text(gone.metadata.description);
+        }
+    }
+}
+
+/// A collapsed "About" line under a plugin's entry: the description, the author with their
+/// e-mail, and the web page as a link.
+fn about_line(ui: &mut Ui, entry: impl std::hash::Hash + std::fmt::Debug, about: &Metadata) {
+    egui::CollapsingHeader::new("About")
+        .id_salt(("about", entry))
+        .show(ui, |ui| {
+            ui.label(about.description);
+            ui.label(format!("by {} <{}>", about.author, about.email));
+            ui.hyperlink(about.web_page);
+        });
+}
