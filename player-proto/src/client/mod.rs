@@ -33,6 +33,7 @@ mod robot_thread;
 mod serve;
 mod session_state;
 mod store;
+mod tap;
 
 pub use crate::delivery::{DataMode, ReplaceAction, ReplaceRule};
 pub use handle::Client;
@@ -44,6 +45,7 @@ pub use proxies::{
 pub use published::{ConnectionState, DeviceInfo};
 pub use requests::{PendingReply, RequestError};
 pub use store::{DeviceStats, Stamped};
+pub use tap::{ConnectionTap, Tap, TapEvent};
 
 /// Why a client could not connect.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

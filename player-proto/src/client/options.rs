@@ -62,6 +62,8 @@ pub struct ClientOptions {
     /// Choose it longer than the biggest message takes to arrive.
     pub stall_timeout: Option<Duration>,
     pub notifier: Option<Notifier>,
+    /// Sees every message of the connection as it crossed the wire (a recorder).
+    pub tap: Option<super::Tap>,
 }
 
 impl Default for ClientOptions {
@@ -76,6 +78,7 @@ impl Default for ClientOptions {
             max_pending_requests: 256,
             stall_timeout: None,
             notifier: None,
+            tap: None,
         }
     }
 }
@@ -92,6 +95,7 @@ impl fmt::Debug for ClientOptions {
             .field("max_pending_requests", &self.max_pending_requests)
             .field("stall_timeout", &self.stall_timeout)
             .field("notifier", &self.notifier.is_some())
+            .field("tap", &self.tap.is_some())
             .finish()
     }
 }
