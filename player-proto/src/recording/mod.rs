@@ -3,6 +3,8 @@
 //!
 //! * [`format`] — the file header, the record framing, the record kinds.
 //! * [`writer`] / [`reader`] — appending records; reading them back without trusting the file.
+//! * [`from_capture`] — a capture of real Player traffic (`captures/`) as records.
+//! * [`index`] — one pass for what a replay or a summary needs (devices, replies, seeking).
 //! * [`recorder`] — a client tap that writes on its own thread and counts what it could not.
 //!
 //! ```no_run
@@ -19,11 +21,14 @@
 //! ```
 
 pub mod format;
+pub mod from_capture;
+pub mod index;
 pub mod reader;
 pub mod recorder;
 pub mod writer;
 
 pub use format::{Event, Record};
+pub use index::RecordingIndex;
 pub use reader::{ReadError, RecordingReader};
 pub use recorder::{Recorder, RecorderError, RecorderStats};
 pub use writer::{RecordingWriter, WriteError};
