@@ -110,6 +110,7 @@ bodies! {
     Bumper => BUMPER, interfaces::bumper::Bumper;
     Power => POWER, interfaces::power::Power;
     Gripper => GRIPPER, interfaces::gripper::Gripper;
+    Log => LOG, interfaces::log::Log;
 }
 
 impl From<interfaces::universal::Universal> for Body {

@@ -19,6 +19,7 @@ pub mod graphics2d;
 pub mod graphics3d;
 pub mod gripper;
 pub mod laser;
+pub mod log;
 pub mod map;
 pub mod player;
 pub mod position2d;

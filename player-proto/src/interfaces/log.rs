@@ -1,0 +1,124 @@
+//! The `log` interface (code 45): control of a device that writes data to a log or plays a
+//! log back as if the logged devices were live (Player's `writelog` and `readlog` drivers; here
+//! also `player-sim --replay`).
+//!
+//! Requests 1–5 are Player's. Player sets the playback speed only in the driver's
+//! configuration and has no way to seek, step or report where playback is, which a timeline
+//! needs; those are this project's extension, numbered after Player's and laid out as Player's
+//! generator lays out a struct, so a Player client that knows nothing of them never meets
+//! them (it never asks, and it does not subscribe to `log` devices for data):
+//!
+//! | Class | Subtype | Body | Meaning |
+//! |---|---|---|---|
+//! | request | 6 | [`LogSetReadSpeed`] | playback speed, 1 = real time (`readlog`'s `speed` option, at run time) |
+//! | request | 7 | [`LogSetReadPosition`] | seek: seconds from the log's start |
+//! | request | 8 | [`LogReadStep`] | advance this many seconds of log (0: to the next message) |
+//! | data | 1 | [`LogPlayback`] | where playback is, sent to subscribers while it is served |
+
+use crate::wire::PlayerString;
+
+/// `PLAYER_LOG_TYPE_READ`: a device that plays a log back.
+pub const TYPE_READ: u8 = 1;
+/// `PLAYER_LOG_TYPE_WRITE`: a device that writes a log.
+pub const TYPE_WRITE: u8 = 2;
+
+/// Request subtypes (Player's, then this project's).
+pub const REQ_SET_WRITE_STATE: u8 = 1;
+pub const REQ_SET_READ_STATE: u8 = 2;
+pub const REQ_GET_STATE: u8 = 3;
+/// Bodiless: back to the start, playing or paused as before.
+pub const REQ_SET_READ_REWIND: u8 = 4;
+pub const REQ_SET_FILENAME: u8 = 5;
+pub const REQ_SET_READ_SPEED: u8 = 6;
+pub const REQ_SET_READ_POSITION: u8 = 7;
+pub const REQ_READ_STEP: u8 = 8;
+/// Data subtype of [`LogPlayback`].
+pub const DATA_PLAYBACK: u8 = 1;
+
+/// Filename bytes, NUL included (`char filename[256]`).
+pub const MAX_FILENAME: u32 = 256;
+
+
+xdr_struct! {
+    /// `player_log_set_write_state_t`: start (1) or stop (0) writing.
+    #[derive(Copy)]
+    pub struct LogSetWriteState {
+        pub state: u8,
+    }
+}
+
+xdr_struct! {
+    /// `player_log_set_read_state_t`: play (1) or pause (0).
+    #[derive(Copy)]
+    pub struct LogSetReadState {
+        pub state: u8,
+    }
+}
+
+xdr_struct! {
+    /// `player_log_get_state_t`: asked with an empty body; `kind` is `TYPE_READ` or
+    /// `TYPE_WRITE` (Player's field is `type`), `state` 1 while playing or writing.
+    #[derive(Copy)]
+    pub struct LogState {
+        pub kind: u8,
+        pub state: u8,
+    }
+}
+
+xdr_struct! {
+    /// `player_log_set_filename_t`: the file a write device writes next.
+    pub struct LogSetFilename {
+        pub filename: PlayerString [max MAX_FILENAME],
+    }
+}
+
+xdr_struct! {
+    /// Extension: playback speed, recorded seconds per real second (above 0).
+    #[derive(Copy)]
+    pub struct LogSetReadSpeed {
+        pub speed: f64,
+    }
+}
+
+xdr_struct! {
+    /// Extension: seek to `position` seconds after the log's first message.
+    #[derive(Copy)]
+    pub struct LogSetReadPosition {
+        pub position: f64,
+    }
+}
+
+xdr_struct! {
+    /// Extension: play `seconds` more of the log, then stand still (0: up to the next
+    /// message).
+    #[derive(Copy)]
+    pub struct LogReadStep {
+        pub seconds: f64,
+    }
+}
+
+xdr_struct! {
+    /// Extension: where playback is. `state` 1 while playing; `position` and `duration` in
+    /// seconds of log, from its first message.
+    #[derive(Copy)]
+    pub struct LogPlayback {
+        pub state: u8,
+        pub speed: f64,
+        pub position: f64,
+        pub duration: f64,
+    }
+}
+
+interface_messages! {
+    /// Messages of the `log` interface.
+    pub enum Log {
+        Request 1 => SetWriteState(LogSetWriteState),
+        Request 2 => SetReadState(LogSetReadState),
+        Request 3 => State(LogState),
+        Request 5 => SetFilename(LogSetFilename),
+        Request 6 => SetReadSpeed(LogSetReadSpeed),
+        Request 7 => SetReadPosition(LogSetReadPosition),
+        Request 8 => ReadStep(LogReadStep),
+        Data 1 => Playback(LogPlayback),
+    }
+}
