@@ -151,7 +151,10 @@ fn replay(path: &Path, cli: &Cli) -> Result<()> {
     };
     let replaying = player_sim::replay::replay(path, &options)?;
     if let Some(stopped) = &replaying.stopped {
-        eprintln!("player-sim: {}: plays up to where it stops: {stopped}", path.display());
+        eprintln!(
+            "player-sim: {}: plays up to where it stops: {stopped}",
+            path.display()
+        );
     }
     for s in &replaying.servers {
         eprintln!(

@@ -38,7 +38,6 @@ pub const DATA_PLAYBACK: u8 = 1;
 /// Filename bytes, NUL included (`char filename[256]`).
 pub const MAX_FILENAME: u32 = 256;
 
-
 xdr_struct! {
     /// `player_log_set_write_state_t`: start (1) or stop (0) writing.
     #[derive(Copy)]

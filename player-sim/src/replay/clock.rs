@@ -16,7 +16,10 @@ pub enum Wake {
     Due,
     /// Playback was moved to `to` (ns from the start): read from there; `seeks` is the
     /// count of seeks to wait with from now on.
-    Seek { to: u64, seeks: u64 },
+    Seek {
+        to: u64,
+        seeks: u64,
+    },
     /// Something else changed (play, pause, speed), or the wait's limit passed.
     Changed,
     Stop,
@@ -231,7 +234,13 @@ mod tests {
         assert_eq!(clock.wait_for(700, 0, &mut changes, LONG), Wake::Due);
         assert_eq!(clock.position_ns(), 700);
         clock.seek(50_000);
-        assert_eq!(clock.wait_for(9_000, 0, &mut changes, LONG), Wake::Seek { to: 10_000, seeks: 1 });
+        assert_eq!(
+            clock.wait_for(9_000, 0, &mut changes, LONG),
+            Wake::Seek {
+                to: 10_000,
+                seeks: 1
+            }
+        );
     }
 
     #[test]

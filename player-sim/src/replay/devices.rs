@@ -62,7 +62,7 @@ const NS_PER_S: f64 = 1e9;
 
 /// Seconds of recording in the clock's unit; `None` for a negative or non-finite value.
 fn to_ns(seconds: f64) -> Option<u64> {
-    (seconds >= 0.0 && seconds.is_finite()).then(|| (seconds * NS_PER_S) as u64)
+    (seconds >= 0.0 && seconds.is_finite()).then_some((seconds * NS_PER_S) as u64)
 }
 
 impl Device for LogDevice {

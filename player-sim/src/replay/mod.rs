@@ -56,9 +56,7 @@ pub enum ReplayError {
     Read { path: PathBuf, source: ReadError },
     #[error("{path} holds no connection to replay")]
     Empty { path: PathBuf },
-    #[error(
-        "{a} and {b} were both recorded on port {port}; serve them apart with --port-base"
-    )]
+    #[error("{a} and {b} were both recorded on port {port}; serve them apart with --port-base")]
     SamePort { port: u16, a: String, b: String },
     #[error("port base {base} leaves no port for the recorded server {server}")]
     NoPort { base: u16, server: String },
@@ -127,7 +125,10 @@ pub fn replay(path: &Path, options: &ReplayOptions) -> Result<Replaying, ReplayE
     // clients) share it.
     let mut servers: BTreeMap<(u16, String), Vec<u32>> = BTreeMap::new();
     for (&number, c) in &index.connections {
-        servers.entry((c.port, c.host.clone())).or_default().push(number);
+        servers
+            .entry((c.port, c.host.clone()))
+            .or_default()
+            .push(number);
     }
     if servers.is_empty() {
         return Err(ReplayError::Empty {
@@ -166,7 +167,11 @@ pub fn replay(path: &Path, options: &ReplayOptions) -> Result<Replaying, ReplayE
         let replies = Arc::new(replies);
         for (&(interf, index), driver) in &devices {
             let device = ReplayedDevice {
-                driver: if driver.is_empty() { "readlog".into() } else { driver.clone() },
+                driver: if driver.is_empty() {
+                    "readlog".into()
+                } else {
+                    driver.clone()
+                },
                 replies: replies.clone(),
             };
             config.device(robot, DevAddr::local(interf, index), device);

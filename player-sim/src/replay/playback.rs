@@ -71,7 +71,10 @@ impl Playback {
                     }
                 }
                 // Wait for a seek (or a stop) with nothing due.
-                match self.clock.wait_for(u64::MAX, seeks, &mut changes, STATUS_EVERY) {
+                match self
+                    .clock
+                    .wait_for(u64::MAX, seeks, &mut changes, STATUS_EVERY)
+                {
                     Wake::Stop => return,
                     Wake::Seek { to, seeks: now } => {
                         seeks = now;
@@ -83,7 +86,10 @@ impl Playback {
                 self.report();
                 continue;
             };
-            match self.clock.wait_for(due.at, seeks, &mut changes, STATUS_EVERY) {
+            match self
+                .clock
+                .wait_for(due.at, seeks, &mut changes, STATUS_EVERY)
+            {
                 Wake::Stop => return,
                 Wake::Due => {
                     self.publish(due);
@@ -167,7 +173,7 @@ impl Playback {
     }
 
     /// Reads from the seek point before `to`, keeping the newest message of each device and
-    /// subtype before `to`, publishes those, and returns the reader there.
+    /// subtype up to `to`, publishes those, and returns the reader after them.
     fn seek(&self, to: u64) -> Option<Reader> {
         let target = self.first_ns.saturating_add(to);
         let after = self.seek_points.partition_point(|p| p.time_ns <= target);
@@ -180,7 +186,7 @@ impl Playback {
             let Some(due) = self.next_due(&mut reader) else {
                 break;
             };
-            if due.at >= to {
+            if due.at > to {
                 // Read again from this record's start, so it is played, not lost.
                 let back = SeekPoint {
                     time_ns: target,
@@ -207,8 +213,12 @@ impl Playback {
             interf: h.addr.interf,
             index: h.addr.index,
         };
-        self.publisher
-            .publish(addr, h.subtype, Body::Unknown(due.body.clone()), h.timestamp);
+        self.publisher.publish(
+            addr,
+            h.subtype,
+            Body::Unknown(due.body.clone()),
+            h.timestamp,
+        );
     }
 
     /// Tells the `log` devices' subscribers where playback is.
