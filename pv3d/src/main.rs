@@ -14,7 +14,7 @@ use pv3d::app::{
 use pv3d::composition::{Composer, Composition, ParserRegistry, emit_document};
 use pv3d::embedded_world::serve_world;
 use pv3d::render::Projection;
-use pv3d::robots::RobotManager;
+use pv3d::robots::{RobotManager, recording::Recording};
 
 /// Player Viewer 3D: compose Player devices into a 3D viewer and tele-operation tool.
 #[derive(Parser, Debug)]
@@ -32,6 +32,11 @@ struct Cli {
     /// it, with configs/stage-world.pv3d.xml unless compositions are given.
     #[arg(long, value_name = "WORLD", conflicts_with = "demo")]
     world: Option<PathBuf>,
+
+    /// Record every message of every server to this file (docs/RECORDING-FORMAT.md); replay
+    /// it with `player-sim --replay FILE`.
+    #[arg(long, value_name = "FILE.prec")]
+    record: Option<PathBuf>,
 
     /// Simulated seconds per real second for --demo and --world.
     #[arg(long, default_value_t = 1.0, value_name = "FACTOR")]
@@ -164,9 +169,11 @@ fn main() -> Result<()> {
     };
     let waker = UiWaker::default();
     let wake = waker.clone();
-    let robots = Arc::new(RobotManager::start(
+    let recording = cli.record.as_deref().map(Recording::start).transpose()?;
+    let robots = Arc::new(RobotManager::start_tapped(
         &composition.clients,
         Some(Arc::new(move || wake.wake())),
+        recording.as_ref().map(Recording::tap),
     ));
     robots.wait_for_handshakes(Duration::from_secs_f64(cli.connect_timeout));
     let mut composer = Composer::new(composition.clone());

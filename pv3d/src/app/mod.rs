@@ -3,6 +3,7 @@
 
 pub mod headless_ui;
 pub mod status_panel;
+pub mod timeline;
 pub mod view3d;
 pub mod viewer;
 pub mod window;

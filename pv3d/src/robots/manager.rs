@@ -8,7 +8,7 @@ use std::time::Duration;
 
 use framework::config::DeviceRef;
 use framework::device::DeviceAccess;
-use player_proto::client::{Client, ClientOptions, ConnectionState, MultiClient, Notifier};
+use player_proto::client::{Client, ClientOptions, ConnectionState, MultiClient, Notifier, Tap};
 
 use super::device_link::ClientDevice;
 use crate::composition::{ClientDecl, FoundDevice};
@@ -28,12 +28,22 @@ impl RobotManager {
     /// Starts a client for each server (at once, in their own threads); `notifier` runs when
     /// any of them stored new data.
     pub fn start(servers: &[ClientDecl], notifier: Option<Notifier>) -> RobotManager {
+        RobotManager::start_tapped(servers, notifier, None)
+    }
+
+    /// [`RobotManager::start`] with every connection's messages shown to `tap` (a recorder).
+    pub fn start_tapped(
+        servers: &[ClientDecl],
+        notifier: Option<Notifier>,
+        tap: Option<Tap>,
+    ) -> RobotManager {
         let mut clients = MultiClient::new();
         for server in servers {
             let options = ClientOptions {
                 notifier: notifier.clone(),
                 // A viewer must show a robot whose server hangs, not its last data forever.
                 stall_timeout: Some(STALL_TIMEOUT),
+                tap: tap.clone(),
                 ..ClientOptions::default()
             };
             if let Err(e) = clients.add(&server.host, server.port, options) {

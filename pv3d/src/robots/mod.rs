@@ -2,6 +2,7 @@
 
 mod device_link;
 mod manager;
+pub mod recording;
 
 pub use device_link::ClientDevice;
 pub use manager::RobotManager;
