@@ -5,6 +5,7 @@
 //! * [`writer`] / [`reader`] — appending records; reading them back without trusting the file.
 //! * [`from_capture`] — a capture of real Player traffic (`captures/`) as records.
 //! * [`index`] — one pass for what a replay or a summary needs (devices, replies, seeking).
+//! * [`playerlog`] — export to the text format of Player's `writelog`/`readlog` drivers.
 //! * [`recorder`] — a client tap that writes on its own thread and counts what it could not.
 //!
 //! ```no_run
@@ -23,6 +24,7 @@
 pub mod format;
 pub mod from_capture;
 pub mod index;
+pub mod playerlog;
 pub mod reader;
 pub mod recorder;
 pub mod writer;
