@@ -346,7 +346,7 @@ fn a_torn_recording_replays_up_to_the_cut_and_says_where() {
 }
 
 #[test]
-fn a_client_that_vanishes_leaves_the_others_playing_and_a_killed_replay_is_a_reconnect() {
+fn a_vanishing_client_leaves_the_others_playing_and_a_killed_replay_is_reconnected_to() {
     let dir = tempfile::tempdir().unwrap();
     let (path, recorded) = record_live(dir.path());
     let port = free_port();
@@ -385,4 +385,21 @@ fn a_client_that_vanishes_leaves_the_others_playing_and_a_killed_replay_is_a_rec
         "{state:?}"
     );
     assert!(client.last_disconnect().is_some());
+
+    // A replay started again on the port is found, and the subscriptions are restored.
+    let mut again = replay_binary(&path, port, &["--loop"]);
+    client
+        .wait_for_state(WAIT, |s| *s == ConnectionState::Connected)
+        .expect("reconnected");
+    let (header, _) = loop {
+        let seen = next_data(&received);
+        if client.state() == ConnectionState::Connected
+            && seen.0.timestamp == recorded[0].0.timestamp
+        {
+            break seen;
+        }
+    };
+    assert_eq!(header.addr.robot, u32::from(port));
+    again.kill().unwrap();
+    let _ = again.wait();
 }
