@@ -110,6 +110,9 @@ bodies! {
     Bumper => BUMPER, interfaces::bumper::Bumper;
     Power => POWER, interfaces::power::Power;
     Gripper => GRIPPER, interfaces::gripper::Gripper;
+    // Left out of `Body`'s generated strategy (one more arm overflows the 2 MiB stack of a
+    // debug test thread); `interfaces::log` has its own round-trip property.
+    #[cfg_attr(any(test, feature = "proptest"), proptest(skip))]
     Log => LOG, interfaces::log::Log;
 }
 
