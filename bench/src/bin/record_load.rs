@@ -171,10 +171,11 @@ fn main() -> Result<()> {
             }
             (bytes_after, written_after) = (s.bytes, s.written);
             eprintln!(
-                "  {t:>5.0} s  {:.0} MB  {} records  {} lost",
+                "  {t:>5.0} s  {:.0} MB  {} records  {} lost{}",
                 s.bytes as f64 / MB,
                 s.written,
-                s.lost()
+                s.lost(),
+                s.error.map(|e| format!("  ({e})")).unwrap_or_default()
             );
         };
         measure(&traffic, clock, &window, cli.seconds, &stored, &mut tick)?
