@@ -22,6 +22,7 @@ pub mod delivery;
 pub mod fuzz_input;
 pub mod interfaces;
 pub mod message;
+pub mod recording;
 pub mod server;
 pub mod summary;
 pub mod transport;

@@ -130,6 +130,10 @@ bodies! {
     Ir => IR, interfaces::ir::Ir;
     Pointcloud3d => POINTCLOUD3D, interfaces::pointcloud3d::Pointcloud3d;
     SpeechRecognition => SPEECH_RECOGNITION, interfaces::speech_recognition::SpeechRecognition;
+    // Left out of `Body`'s generated strategy (one more arm overflows the 2 MiB stack of a
+    // debug test thread); `interfaces::log` has its own round-trip property.
+    #[cfg_attr(any(test, feature = "proptest"), proptest(skip))]
+    Log => LOG, interfaces::log::Log;
 }
 
 impl From<interfaces::universal::Universal> for Body {

@@ -49,6 +49,7 @@ generated_interfaces! {
     IR => interfaces::ir::Ir,
     POINTCLOUD3D => interfaces::pointcloud3d::Pointcloud3d,
     SPEECH_RECOGNITION => interfaces::speech_recognition::SpeechRecognition,
+    LOG => interfaces::log::Log,
 }
 
 /// Any body: a typed one of a listed interface, a universal request, no body, or raw bytes.

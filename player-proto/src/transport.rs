@@ -38,6 +38,19 @@ pub enum Incoming {
     Closed,
 }
 
+impl Incoming {
+    /// What a frame read by [`MessageReader::read_frame`] is (`None`: a clean close).
+    pub fn decode(frame: Option<Frame>) -> Incoming {
+        match frame {
+            None => Incoming::Closed,
+            Some(frame) => match Message::decode(frame.header, frame.body) {
+                Ok(message) => Incoming::Message(message),
+                Err(err) => Incoming::Undecodable(err),
+            },
+        }
+    }
+}
+
 /// Reads messages from a byte stream.
 #[derive(Debug)]
 pub struct MessageReader<R> {
@@ -85,13 +98,7 @@ impl<R: AsyncRead + Unpin> MessageReader<R> {
 
     /// The next message, decoded.
     pub async fn read(&mut self) -> Result<Incoming, TransportError> {
-        Ok(match self.read_frame().await? {
-            None => Incoming::Closed,
-            Some(frame) => match Message::decode(frame.header, frame.body) {
-                Ok(message) => Incoming::Message(message),
-                Err(err) => Incoming::Undecodable(err),
-            },
-        })
+        Ok(Incoming::decode(self.read_frame().await?))
     }
 
     /// Bytes of the stream consumed so far.

@@ -3,6 +3,7 @@
 //! * [`served`] — which devices each robot exposes on which port (from the .cfg).
 //! * [`mapfile`] — maps read from images as Player's `mapfile` driver reads them.
 //! * [`devices`], [`camera_frames`], [`serve`] — the simulation served over the Player protocol.
+//! * [`replay`] — a recording served as the Player servers it was recorded from.
 //! * [`sim`] — the simulation: motion, collisions, sensors by ray casting.
 //! * [`world`] — the world a file describes: floorplan, robots and their sensors, obstacles.
 //! * [`worldfile`] — the syntax of Stage world files and Player config files.
@@ -10,6 +11,7 @@
 pub mod camera_frames;
 pub mod devices;
 pub mod mapfile;
+pub mod replay;
 pub mod serve;
 pub mod served;
 pub mod sim;

@@ -1,10 +1,12 @@
 //! `player-sim WORLD` — serve a simulated Stage world over the Player protocol.
+//! `player-sim --replay FILE` — serve a recording as the Player servers it was recorded from.
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::{Context, Result};
 use clap::Parser;
+use player_sim::replay::ReplayOptions;
 use player_sim::serve::{ServeOptions, serve};
 use player_sim::served::{DEFAULT_PORT, default_devices, from_cfgs, shift_ports};
 use player_sim::sim::{Noise, Simulation};
@@ -15,7 +17,25 @@ use player_sim::world::World;
 #[command(version, about)]
 struct Cli {
     /// A Stage world file, e.g. stage-worlds/multirobot.world.
-    world: PathBuf,
+    #[arg(required_unless_present = "replay", conflicts_with = "replay")]
+    world: Option<PathBuf>,
+
+    /// Serve this recording (pv3d --record, playerrecord) instead of a world: its servers on
+    /// their recorded ports (or from --port-base), playback controlled by a `log` device.
+    #[arg(long, value_name = "FILE")]
+    replay: Option<PathBuf>,
+
+    /// Replay speed: recorded seconds per real second.
+    #[arg(long, default_value_t = 1.0, requires = "replay")]
+    speed: f64,
+
+    /// Start the replay paused.
+    #[arg(long, requires = "replay")]
+    paused: bool,
+
+    /// Start the replay again when it ends.
+    #[arg(long = "loop", requires = "replay")]
+    looping: bool,
 
     /// The Player .cfg naming each robot's devices and ports; by default the world's name with
     /// .cfg, if there is one, else one port per robot from --port-base. Give it again for the
@@ -63,6 +83,12 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: Cli) -> Result<()> {
+    if let Some(path) = &cli.replay {
+        return replay(path, &cli);
+    }
+    let Some(world_path) = &cli.world else {
+        anyhow::bail!("name a world file, or a recording with --replay");
+    };
     anyhow::ensure!(
         cli.speedup >= 0.0 && cli.speedup.is_finite(),
         "--speedup must be 0 or more"
@@ -71,11 +97,11 @@ fn run(cli: Cli) -> Result<()> {
         cli.range_noise >= 0.0 && cli.range_noise.is_finite(),
         "--range-noise must be 0 or more metres"
     );
-    let world = World::load(&cli.world)?;
+    let world = World::load(world_path)?;
     let mut ignored = world.ignored.clone();
     let mut cfgs = cli.cfg.clone();
     if cfgs.is_empty() {
-        cfgs.extend(Some(cli.world.with_extension("cfg")).filter(|p| p.exists()));
+        cfgs.extend(Some(world_path.with_extension("cfg")).filter(|p| p.exists()));
     }
     let mut devices = if cfgs.is_empty() {
         default_devices(&world, cli.port_base.unwrap_or(DEFAULT_PORT))
@@ -111,9 +137,40 @@ fn run(cli: Cli) -> Result<()> {
     let ports: Vec<String> = running.ports.iter().map(|(_, p)| p.to_string()).collect();
     eprintln!(
         "player-sim: serving {} on port(s) {}",
-        cli.world.display(),
+        world_path.display(),
         ports.join(", ")
     );
     running.wait();
+    Ok(())
+}
+
+fn replay(path: &Path, cli: &Cli) -> Result<()> {
+    let options = ReplayOptions {
+        bind: cli.bind,
+        port_base: cli.port_base,
+        speed: cli.speed,
+        paused: cli.paused,
+        looping: cli.looping,
+    };
+    let replaying = player_sim::replay::replay(path, &options)?;
+    if let Some(stopped) = &replaying.stopped {
+        eprintln!(
+            "player-sim: {}: plays up to where it stops: {stopped}",
+            path.display()
+        );
+    }
+    for s in &replaying.servers {
+        eprintln!(
+            "player-sim: replaying {}:{} on port {} (control: {}:{})",
+            s.host, s.recorded_port, s.port, s.log.interf, s.log.index
+        );
+    }
+    eprintln!(
+        "player-sim: replaying {} ({:.1} s recorded) on {} port(s)",
+        path.display(),
+        replaying.clock.duration_ns() as f64 / 1e9,
+        replaying.servers.len()
+    );
+    replaying.wait();
     Ok(())
 }

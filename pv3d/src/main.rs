@@ -13,6 +13,7 @@ use pv3d::composition::{Composition, ParserRegistry, emit_document};
 use pv3d::embedded_world::serve_world;
 use pv3d::headless::{ScreenshotRun, write_screenshot};
 use pv3d::render::Projection;
+use pv3d::robots::recording::Recording;
 
 /// Player Viewer 3D: compose Player devices into a 3D viewer and tele-operation tool.
 #[derive(Parser, Debug)]
@@ -30,6 +31,11 @@ struct Cli {
     /// it, with configs/stage-world.pv3d.xml unless compositions are given.
     #[arg(long, value_name = "WORLD", conflicts_with = "demo")]
     world: Option<PathBuf>,
+
+    /// Record every message of every server to this file (docs/RECORDING-FORMAT.md); replay
+    /// it with `player-sim --replay FILE`.
+    #[arg(long, value_name = "FILE.prec")]
+    record: Option<PathBuf>,
 
     /// Simulated seconds per real second for --demo and --world.
     #[arg(long, default_value_t = 1.0, value_name = "FACTOR")]
@@ -166,10 +172,13 @@ fn main() -> Result<()> {
         None => None,
     };
     let waker = UiWaker::default();
+    // Declared before the viewer, so dropped after it: the robots hold the recording's tap.
+    let recording = cli.record.as_deref().map(Recording::start).transpose()?;
     let mut builder = ViewerBuilder::new(composition)
         .wake_with(waker.notifier())
         .connect_timeout(Duration::from_secs_f64(cli.connect_timeout))
         .observe(cli.observe)
+        .record_with(recording.as_ref().map(Recording::tap))
         .start_view(match cli.view {
             StartView::Top => Projection::Top,
             StartView::Perspective => Projection::Perspective,

@@ -1,7 +1,9 @@
 //! Opening a connection: TCP, the banner, then the handshake that sets the session up again —
 //! data mode, replace rules, device list, driver names, subscriptions.
 
-use bytes::BytesMut;
+use std::time::SystemTime;
+
+use bytes::{Bytes, BytesMut};
 use tokio::net::TcpStream;
 use tokio::net::tcp::{OwnedReadHalf, OwnedWriteHalf};
 use tokio::time::Instant;
@@ -10,15 +12,18 @@ use super::published::DeviceInfo;
 use super::requests::granted;
 use super::robot_thread::{End, Robot};
 use super::session_state::{device_request, to_server};
+use super::tap::{ConnectionTap, TapEvent};
+use crate::capture::Direction;
 use crate::interfaces::player::{self, DriverInfo, Player};
 use crate::message::{Body, Message};
 use crate::transport::{Incoming, MessageReader, TransportError, write_message};
-use crate::wire::{FrameDecoder, MsgType, PlayerString};
+use crate::wire::{FrameDecoder, HEADER_LEN, Header, MsgType, PlayerString};
 
 pub(super) struct Link {
     pub reader: MessageReader<OwnedReadHalf>,
     pub writer: OwnedWriteHalf,
     pub scratch: BytesMut,
+    pub tap: Option<ConnectionTap>,
 }
 
 /// Room for a typical request's encoding, so sending seldom allocates.
@@ -28,7 +33,41 @@ impl Link {
     pub async fn send(&mut self, message: &Message) -> Result<(), End> {
         write_message(&mut self.writer, message, &mut self.scratch)
             .await
-            .map_err(|e| End::Lost(e.to_string()))
+            .map_err(|e| End::Lost(e.to_string()))?;
+        if let Some(tap) = &self.tap {
+            tap_sent(tap, &self.scratch);
+        }
+        Ok(())
+    }
+
+    /// The next message, shown to the tap first, as received.
+    pub async fn read(&mut self) -> Result<Incoming, TransportError> {
+        let Some(tap) = &self.tap else {
+            return self.reader.read().await;
+        };
+        let frame = self.reader.read_frame().await?;
+        if let Some(frame) = &frame {
+            let event = TapEvent::Frame {
+                direction: Direction::ServerToClient,
+                header: &frame.header,
+                body: &frame.body,
+            };
+            tap(SystemTime::now(), event);
+        }
+        Ok(Incoming::decode(frame))
+    }
+}
+
+/// Shows the tap a message just sent, from its encoding.
+fn tap_sent(tap: &ConnectionTap, encoded: &[u8]) {
+    if let Some(Ok(header)) = Header::decode_slice(encoded) {
+        let body = Bytes::copy_from_slice(&encoded[HEADER_LEN..]);
+        let event = TapEvent::Frame {
+            direction: Direction::ClientToServer,
+            header: &header,
+            body: &body,
+        };
+        tap(SystemTime::now(), event);
     }
 }
 
@@ -54,11 +93,15 @@ impl Robot {
         if !banner.has_3x_layouts() {
             tracing::warn!(%banner, "Player 2.0 lays out many bodies differently from 3.x; data may be misread");
         }
+        if let Some(tap) = &self.tap {
+            tap(SystemTime::now(), TapEvent::Opened(&banner));
+        }
         self.board.publish(|s| s.banner = Some(banner));
         Ok(Link {
             reader,
             writer,
             scratch: BytesMut::with_capacity(SCRATCH_CAPACITY),
+            tap: self.tap.clone(),
         })
     }
 
@@ -73,7 +116,7 @@ impl Robot {
         let timeout = self.options.request_timeout;
         let deadline = Instant::now() + timeout;
         loop {
-            let incoming = tokio::time::timeout_at(deadline, link.reader.read())
+            let incoming = tokio::time::timeout_at(deadline, link.read())
                 .await
                 .map_err(|_| {
                     End::Lost(format!("no reply to {} within {timeout:?}", request.header))

@@ -34,6 +34,7 @@ mod robot_thread;
 mod serve;
 mod session_state;
 mod store;
+mod tap;
 mod typed;
 
 pub use crate::delivery::{DataMode, ReplaceAction, ReplaceRule};
@@ -47,6 +48,7 @@ pub use published::{ConnectionState, DeviceInfo};
 pub use requests::{PendingReply, RequestError};
 pub use responder::Responder;
 pub use store::{DeviceStats, Stamped};
+pub use tap::{ConnectionTap, Tap, TapEvent};
 
 /// Why a client could not connect.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

@@ -69,6 +69,8 @@ pub struct ClientOptions {
     /// stored, or the connection state changed (a server that answered late or came back,
     /// with its device list, or one that went away). A viewer wakes its window with it.
     pub notifier: Option<Notifier>,
+    /// Sees every message of the connection as it crossed the wire (a recorder).
+    pub tap: Option<super::Tap>,
 }
 
 impl Default for ClientOptions {
@@ -84,6 +86,7 @@ impl Default for ClientOptions {
             max_pending_requests: 256,
             stall_timeout: None,
             notifier: None,
+            tap: None,
         }
     }
 }
@@ -101,6 +104,7 @@ impl fmt::Debug for ClientOptions {
             .field("max_pending_requests", &self.max_pending_requests)
             .field("stall_timeout", &self.stall_timeout)
             .field("notifier", &self.notifier.is_some())
+            .field("tap", &self.tap.is_some())
             .finish()
     }
 }

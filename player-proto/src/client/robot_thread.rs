@@ -15,6 +15,7 @@ use super::published::{Board, ConnectionState};
 use super::requests::RequestError;
 use super::session_state::{Outgoing, SessionState};
 use super::store::DataStore;
+use super::tap::{ConnectionTap, TapEvent};
 use crate::message::Message;
 
 /// Why a connection ended.
@@ -23,6 +24,15 @@ pub(super) enum End {
     Lost(String),
     /// Not worth retrying (not a Player server, Player 1.x).
     Fatal(String),
+}
+
+impl End {
+    pub fn why(&self) -> String {
+        match self {
+            End::Shutdown => "client closed".to_string(),
+            End::Lost(w) | End::Fatal(w) => w.clone(),
+        }
+    }
 }
 
 /// The thread body.
@@ -45,7 +55,9 @@ pub(crate) fn run(
             return;
         }
     };
+    let tap = options.tap.as_ref().map(|tap| tap(&host, port));
     let mut robot = Robot {
+        tap,
         host,
         port,
         options,
@@ -68,6 +80,8 @@ pub(super) struct Robot {
     pub commands: UnboundedReceiver<Command>,
     /// A connection was lost and none has completed its handshake since.
     pub reconnecting: bool,
+    /// This connection's tap, from `options.tap`.
+    pub tap: Option<ConnectionTap>,
 }
 
 impl Robot {
@@ -116,6 +130,13 @@ impl Robot {
                     }
                 }
             }
+        }
+    }
+
+    /// Tells the tap that an established connection ended.
+    pub fn tap_closed(&self, end: &End) {
+        if let Some(tap) = &self.tap {
+            tap(std::time::SystemTime::now(), TapEvent::Closed(&end.why()));
         }
     }
 

@@ -36,6 +36,7 @@ impl Robot {
     /// the session worked before that.
     pub(super) async fn serve(&mut self, mut link: Link) -> (End, bool) {
         if let Err(end) = self.handshake(&mut link).await {
+            self.tap_closed(&end);
             return (end, false);
         }
         // Logged before the state changes, so that whoever sees `Connected` finds it logged.
@@ -55,10 +56,8 @@ impl Robot {
                 break end;
             }
         };
-        let why = match &end {
-            End::Shutdown => "client closed".to_string(),
-            End::Lost(w) | End::Fatal(w) => w.clone(),
-        };
+        self.tap_closed(&end);
+        let why = end.why();
         serving.pending.fail_all(&why);
         for waiter in serving.pulls {
             let _ = waiter.send(Err(RequestError::Disconnected(why.clone())));
@@ -74,7 +73,7 @@ impl Robot {
             .min()
             .unwrap_or_else(|| Instant::now() + IDLE_WAKE);
         tokio::select! {
-            incoming = link.reader.read() => {
+            incoming = link.read() => {
                 match serving.liveness.heard(incoming) {
                     Ok(Incoming::Message(message)) => {
                         serving.worked = true;

@@ -39,6 +39,7 @@ pub mod ir;
 pub mod kind;
 pub mod laser;
 pub mod localize;
+pub mod log;
 pub mod map;
 pub mod planner;
 pub mod player;

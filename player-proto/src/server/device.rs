@@ -31,6 +31,13 @@ pub trait Device: Send + 'static {
     /// A command from a client.
     fn on_command(&mut self, _command: &Message) {}
 
+    /// Whether this device takes commands. One that does not (a replayed recording) has each
+    /// command answered with a NACK, which Player never sends for commands, so a client learns
+    /// that its command went nowhere instead of it being silently eaten.
+    fn accepts_commands(&self) -> bool {
+        true
+    }
+
     /// A request from a client; its header says which (subtype) and the body carries the data.
     fn on_request(&mut self, _request: &Message) -> Reply {
         Reply::Nack

@@ -140,6 +140,13 @@ impl Handler<'_> {
             );
             return;
         };
+        if message.header.msg_type == MsgType::Cmd
+            && !slot.device.lock().expect("device").accepts_commands()
+        {
+            tracing::info!(port = self.port, "refused a command: {}", message.header);
+            self.reply(&message, MsgType::Nack, Body::Empty);
+            return;
+        }
         if matches!(message.body, Body::Unknown(_)) {
             tracing::debug!("dropped {}: no structure for that subtype", message.header);
             return;

@@ -39,6 +39,12 @@ impl ViewerBuilder {
         }
     }
 
+    /// Every message of every connection shown to `tap` (`--record`).
+    pub fn record_with(mut self, tap: Option<player_proto::client::Tap>) -> ViewerBuilder {
+        self.robot_options.tap = tap;
+        self
+    }
+
     /// Watch only (`--observe`): read-only clients, no tele-operation.
     pub fn observe(mut self, observe: bool) -> ViewerBuilder {
         self.robot_options.observe = observe;
@@ -77,7 +83,7 @@ impl ViewerBuilder {
         let robots = Arc::new(RobotManager::start_with(
             &self.composition.clients,
             self.wake.clone(),
-            self.robot_options,
+            self.robot_options.clone(),
         ));
         robots.wait_for_handshakes(self.connect_timeout);
         let mut composer = Composer::new(self.composition.clone());

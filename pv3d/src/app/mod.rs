@@ -3,6 +3,7 @@
 
 pub mod builder;
 pub mod status_panel;
+pub mod timeline;
 pub mod view3d;
 pub mod viewer;
 pub mod window;

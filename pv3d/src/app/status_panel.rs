@@ -21,6 +21,8 @@ const RATE_WINDOW: Duration = Duration::from_secs(1);
 pub struct StatusPanel {
     /// (host, port, device) -> (messages at window start, window start, last rate)
     rates: HashMap<(String, u16, DevAddr), (u64, Instant, f64)>,
+    /// Play, pause and scrub, when a server is a replay.
+    timeline: super::timeline::Timeline,
 }
 
 impl StatusPanel {
@@ -28,6 +30,7 @@ impl StatusPanel {
     /// of hundreds of servers costs a screenful of rows per frame, not hundreds. `gone`: the
     /// devices a server no longer lists while plugins wait for them.
     pub fn ui(&mut self, ui: &mut Ui, robots: &RobotManager, gone: &[FoundDevice]) {
+        self.timeline.ui(ui, robots);
         let now = Instant::now();
         let clients: Vec<_> = robots.clients().collect();
         let connected = clients

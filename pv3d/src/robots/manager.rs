@@ -7,7 +7,7 @@ use std::time::Duration;
 
 use framework::config::DeviceRef;
 use framework::device::DeviceAccess;
-use player_proto::client::{Client, ClientOptions, ConnectionState, MultiClient, Notifier};
+use player_proto::client::{Client, ClientOptions, ConnectionState, MultiClient, Notifier, Tap};
 
 use super::device_links::{DeviceLinks, LinkKey};
 use crate::composition::ClientDecl;
@@ -17,10 +17,12 @@ use crate::composition::ClientDecl;
 const STALL_TIMEOUT: Duration = Duration::from_secs(3);
 
 /// How the viewer uses the robots.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Clone, Default)]
 pub struct RobotOptions {
     /// Read-only clients: the viewer watches, never commands or configures a robot.
     pub observe: bool,
+    /// Shown every message of every connection (`pv3d --record`).
+    pub tap: Option<Tap>,
 }
 
 /// Every Player server of a composition: player-proto's [`MultiClient`] (one client per
@@ -53,6 +55,7 @@ impl RobotManager {
                 read_only: robot_options.observe,
                 // A viewer must show a robot whose server hangs, not its last data forever.
                 stall_timeout: Some(STALL_TIMEOUT),
+                tap: robot_options.tap.clone(),
                 ..ClientOptions::default()
             };
             if let Err(e) = clients.add(&server.host, server.port, options) {

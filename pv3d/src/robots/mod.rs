@@ -3,6 +3,7 @@
 mod device_link;
 mod device_links;
 mod manager;
+pub mod recording;
 
 pub use device_link::ClientDevice;
 pub use device_links::LinkKey;

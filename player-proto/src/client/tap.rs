@@ -1,0 +1,33 @@
+//! A tap on a client's traffic: the robot thread hands every message it receives or sends,
+//! exactly as it crossed the wire, to whoever asked (a recorder), without copying a received
+//! body.
+
+use std::sync::Arc;
+use std::time::SystemTime;
+
+use bytes::Bytes;
+
+use crate::capture::Direction;
+use crate::wire::{Banner, Header};
+
+/// What one connection's tap is told.
+#[derive(Debug, Clone, Copy)]
+pub enum TapEvent<'a> {
+    /// A connection was established; the server's banner.
+    Opened(&'a Banner),
+    /// A whole message: its header and exactly `header.size` body bytes.
+    Frame {
+        direction: Direction,
+        header: &'a Header,
+        body: &'a Bytes,
+    },
+    /// The connection ended, and why.
+    Closed(&'a str),
+}
+
+/// The tap of one robot connection, called on its robot thread with the time the message was
+/// whole. Must not block: a slow tap slows the robot.
+pub type ConnectionTap = Arc<dyn Fn(SystemTime, TapEvent<'_>) + Send + Sync>;
+
+/// Called once per robot thread, with its host and port, for that connection's tap.
+pub type Tap = Arc<dyn Fn(&str, u16) -> ConnectionTap + Send + Sync>;

@@ -1,0 +1,45 @@
+//! `playerrecord` — record every message of Player robots losslessly, for robots without a
+//! viewer; summarise a recording; turn captures into one; export to Player's own log format.
+//!
+//! ```text
+//! playerrecord record --out swarm.prec localhost:7000-7255 --seconds 600
+//! playerrecord info swarm.prec
+//! playerrecord export swarm.prec --out swarm.log
+//! playerrecord from-capture captures/laser_push.jsonl --out laser.prec
+//! ```
+
+mod capture;
+mod export;
+mod info;
+mod record;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// Record Player robots losslessly; summarise, convert and export recordings.
+#[derive(Parser, Debug)]
+#[command(version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    Record(record::Args),
+    Info(info::Args),
+    Export(export::Args),
+    FromCapture(capture::Args),
+}
+
+fn main() -> ExitCode {
+    player_tools::logging::init("warn");
+    let result = match Cli::parse().command {
+        Command::Record(args) => record::run(args),
+        Command::Info(args) => info::run(args),
+        Command::Export(args) => export::run(args),
+        Command::FromCapture(args) => capture::run(args),
+    };
+    player_tools::exit::exit_code("playerrecord", result)
+}
