@@ -1,5 +1,5 @@
 //! The standard pv3d components, one folder each: ground (with floorplans, grid, lights),
-//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones and power. Each is built
+//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones, power and map. Each is built
 //! on the `framework` crate alone and can be read without the rest of the application.
 
 use framework::PluginRegistry;
@@ -8,6 +8,7 @@ pub mod camera;
 pub mod fiducial;
 pub mod ground;
 pub mod laser;
+pub mod map;
 pub mod position2d;
 pub mod power;
 pub mod ranger;
@@ -28,5 +29,6 @@ pub fn standard_plugins() -> PluginRegistry {
     registry.register("libpv3d_camera", camera::CameraPlugin::create);
     registry.register("libpv3d_zones", zones::ZonesPlugin::create);
     registry.register("libpv3d_power", power::PowerPlugin::create);
+    registry.register("libpv3d_map", map::MapPlugin::create);
     registry
 }
