@@ -133,3 +133,41 @@ fn a_picture_is_drawn_through_its_filter_chain() {
         assert!(at(x, y)[0] < 15, "({x}, {y}) still black: {:?}", at(x, y));
     }
 }
+
+#[test]
+fn a_grid_zoomed_out_keeps_every_one_cell_wall() {
+    // 1000 × 1000 free cells with a one-cell wall every 97 columns, drawn 200 pixels wide: five
+    // cells to a pixel. Nearest sampling would show one cell of five and lose most walls.
+    let side = 1000u32;
+    let walls: Vec<u32> = (50..side).step_by(97).collect();
+    let cells: Vec<u8> = (0..side * side)
+        .map(|k| if walls.contains(&(k % side)) { 25 } else { 235 })
+        .collect();
+    let pixels = Pixels::new(side, side, PixelFormat::Gray8, cells).unwrap();
+    let quad = ImageQuad::new(
+        pixels,
+        Vec3::new(-5.0, -5.0, 0.0),
+        Vec2::splat(10.0),
+        Sampling::Grid,
+    );
+    let mut scene = Scene::new();
+    let mut node = Object3D::new("map");
+    node.geometry.images.push(quad);
+    scene.add(node);
+    let gl = HeadlessGl::new(SIZE.0, SIZE.1).expect("headless GL (Mesa EGL)");
+    let mut batch = SceneBatch::default();
+    batch.rebuild(&scene, None);
+    let camera = OrbitCamera {
+        distance: 10.0 / (OrbitCamera::default().fov_y / 2.0).tan() / 2.0,
+        ..OrbitCamera::default()
+    };
+    let image = draw_batch(&gl, &batch, &camera, 3.0);
+    image
+        .save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("grid_zoomed_out.png"))
+        .unwrap();
+    let row = SIZE.1 / 2;
+    let dark_runs = (1..SIZE.0)
+        .filter(|&x| image.get_pixel(x, row)[0] < 60 && image.get_pixel(x - 1, row)[0] >= 60)
+        .count();
+    assert_eq!(dark_runs, walls.len(), "every wall shows as a dark column");
+}

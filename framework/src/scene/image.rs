@@ -44,6 +44,9 @@ pub enum Sampling {
     Nearest,
     /// Smooth between pixels: photographs.
     Linear,
+    /// Sharp cells up close; zoomed out, where several cells share a screen pixel, the
+    /// darkest of them shows, so a wall one cell thick never vanishes from a large map.
+    Grid,
 }
 
 /// Why bytes do not make a picture.

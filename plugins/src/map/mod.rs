@@ -80,7 +80,7 @@ impl MapPlugin {
             }
         };
         let (w, h) = grid.size_m();
-        let mut quad = ImageQuad::new(pixels, Vec3::ZERO, Vec2::new(w, h), Sampling::Nearest);
+        let mut quad = ImageQuad::new(pixels, Vec3::ZERO, Vec2::new(w, h), Sampling::Grid);
         quad.filters = self.chain.clone().unwrap_or_default();
         let Some(node) = scene.get_mut(self.node) else {
             return;

@@ -10,6 +10,7 @@ use eframe::glow::{self, HasContext};
 use framework::scene::{FilterChain, Pixels, Sampling};
 
 use super::batch::BatchedImage;
+use super::grid_mipmaps::GridMipmaps;
 use super::kernels::KernelRunner;
 use super::shader::{glsl_header, link_program};
 use super::texture::{self, GpuTexture};
@@ -61,7 +62,7 @@ struct Filtered {
 
 /// What one quad draws with.
 struct QuadDraw {
-    texture: glow::Texture,
+    texture: GpuTexture,
     sampling: Sampling,
 }
 
@@ -74,6 +75,7 @@ pub struct ImageRenderer {
     sources: HashMap<u64, Option<GpuTexture>>,
     filtered: Vec<Filtered>,
     runner: Option<KernelRunner>,
+    mipmaps: Option<GridMipmaps>,
     draws: Vec<QuadDraw>,
 }
 
@@ -105,6 +107,7 @@ impl ImageRenderer {
                 sources: HashMap::new(),
                 filtered: Vec::new(),
                 runner: None,
+                mipmaps: None,
                 draws: Vec::new(),
             })
         }
@@ -120,10 +123,14 @@ impl ImageRenderer {
                 continue;
             };
             let texture = if image.filters.is_empty() {
-                source.texture
+                source
             } else {
-                self.filtered(gl, image, &source)
-                    .map_or(source.texture, |t| t.texture)
+                self.filtered(gl, image, &source).unwrap_or(source)
+            };
+            let texture = if image.sampling == Sampling::Grid {
+                self.with_mipmaps(gl, image, texture)
+            } else {
+                texture
             };
             self.draws.push(QuadDraw {
                 texture,
@@ -190,6 +197,47 @@ impl ImageRenderer {
         outcome.ok().flatten()
     }
 
+    /// `texture` with its darkest-cell levels, made the first time and kept with it.
+    fn with_mipmaps(
+        &mut self,
+        gl: &glow::Context,
+        image: &BatchedImage,
+        texture: GpuTexture,
+    ) -> GpuTexture {
+        if texture.levels > 1 {
+            return texture;
+        }
+        if self.mipmaps.is_none() {
+            match GridMipmaps::new(gl) {
+                Ok(m) => self.mipmaps = Some(m),
+                Err(e) => {
+                    tracing::error!("grids drawn without coarse levels: {e}");
+                    return texture;
+                }
+            }
+        }
+        let Some(mipmaps) = &self.mipmaps else {
+            return texture;
+        };
+        let filled = mipmaps.fill(gl, texture);
+        // Keep the levels with whichever texture this was: the filtered one or the source.
+        let generation = image.pixels.generation();
+        if let Some(f) = self
+            .filtered
+            .iter_mut()
+            .find(|f| f.generation == generation && f.chain == image.filters)
+            && let Ok(Some(t)) = &mut f.outcome
+            && t.texture == filled.texture
+        {
+            *t = filled;
+        } else if let Some(Some(t)) = self.sources.get_mut(&generation)
+            && t.texture == filled.texture
+        {
+            *t = filled;
+        }
+        filled
+    }
+
     fn runner(&mut self, gl: &glow::Context) -> Option<&mut KernelRunner> {
         if self.runner.is_none() {
             match KernelRunner::new(gl) {
@@ -248,8 +296,8 @@ impl ImageRenderer {
             gl.polygon_offset(BEHIND_LINES.0, BEHIND_LINES.1);
             gl.bind_vertex_array(Some(self.vao));
             for (i, draw) in self.draws.iter().enumerate() {
-                gl.bind_texture(glow::TEXTURE_2D, Some(draw.texture));
-                texture::set_sampling(gl, draw.sampling);
+                gl.bind_texture(glow::TEXTURE_2D, Some(draw.texture.texture));
+                texture::set_sampling(gl, draw.sampling, draw.texture.levels);
                 gl.draw_arrays(
                     glow::TRIANGLES,
                     (i * VERTICES_PER_QUAD) as i32,
@@ -272,6 +320,9 @@ impl ImageRenderer {
         }
         if let Some(runner) = &self.runner {
             runner.destroy(gl);
+        }
+        if let Some(mipmaps) = &self.mipmaps {
+            mipmaps.destroy(gl);
         }
     }
 }

@@ -5,6 +5,8 @@
 pub mod batch;
 pub mod camera;
 pub mod gl_renderer;
+pub mod gl_state;
+pub mod grid_mipmaps;
 pub mod image_quads;
 pub mod kernels;
 pub mod screen_detail;

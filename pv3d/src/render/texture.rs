@@ -20,6 +20,12 @@ pub struct GpuTexture {
     pub texture: glow::Texture,
     pub width: u32,
     pub height: u32,
+    /// Mipmap levels filled (1: only the picture itself).
+    pub levels: u32,
+    /// How its texels are stored (`R8`, `RGBA8`) and the matching pixel format (`RED`,
+    /// `RGBA`), for making its coarser levels alike.
+    pub internal_format: u32,
+    pub format: u32,
 }
 
 /// The largest texture side this context takes.
@@ -69,7 +75,7 @@ pub fn upload(gl: &glow::Context, pixels: &Pixels) -> Result<GpuTexture, Texture
             }
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_SWIZZLE_A, glow::ONE as i32);
         }
-        set_sampling(gl, Sampling::Nearest);
+        set_sampling(gl, Sampling::Nearest, 1);
         for wrap in [glow::TEXTURE_WRAP_S, glow::TEXTURE_WRAP_T] {
             gl.tex_parameter_i32(glow::TEXTURE_2D, wrap, glow::CLAMP_TO_EDGE as i32);
         }
@@ -77,6 +83,9 @@ pub fn upload(gl: &glow::Context, pixels: &Pixels) -> Result<GpuTexture, Texture
             texture,
             width,
             height,
+            levels: 1,
+            internal_format: internal,
+            format,
         })
     }
 }
@@ -102,7 +111,7 @@ pub fn render_target(
             glow::UNSIGNED_BYTE,
             glow::PixelUnpackData::Slice(None),
         );
-        set_sampling(gl, Sampling::Nearest);
+        set_sampling(gl, Sampling::Nearest, 1);
         for wrap in [glow::TEXTURE_WRAP_S, glow::TEXTURE_WRAP_T] {
             gl.tex_parameter_i32(glow::TEXTURE_2D, wrap, glow::CLAMP_TO_EDGE as i32);
         }
@@ -110,20 +119,31 @@ pub fn render_target(
             texture,
             width,
             height,
+            levels: 1,
+            internal_format: glow::RGBA8,
+            format: glow::RGBA,
         })
     }
 }
 
-/// Sets how the texture bound to `TEXTURE_2D` is sampled. No mipmaps: a map is drawn from
-/// its own cells, never from averages that would hide a thin wall.
-pub fn set_sampling(gl: &glow::Context, sampling: Sampling) {
-    let filter = match sampling {
-        Sampling::Nearest => glow::NEAREST,
-        Sampling::Linear => glow::LINEAR,
-    } as i32;
+/// Sets how the texture bound to `TEXTURE_2D`, with `levels` mipmap levels filled, is
+/// sampled. Only grids use mipmaps, and only the darkest-cell ones [`super::grid_mipmaps`]
+/// makes: averaged levels would fade a thin wall into the free space around it.
+pub fn set_sampling(gl: &glow::Context, sampling: Sampling, levels: u32) {
+    let (min, mag) = match sampling {
+        Sampling::Nearest => (glow::NEAREST, glow::NEAREST),
+        Sampling::Linear => (glow::LINEAR, glow::LINEAR),
+        Sampling::Grid if levels > 1 => (glow::NEAREST_MIPMAP_NEAREST, glow::NEAREST),
+        Sampling::Grid => (glow::NEAREST, glow::NEAREST),
+    };
     // SAFETY: parameters of the bound texture.
     unsafe {
-        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, filter);
-        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, filter);
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, min as i32);
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, mag as i32);
     }
+}
+
+/// How many mipmap levels a `width` × `height` texture has, down to 1 × 1.
+pub fn level_count(width: u32, height: u32) -> u32 {
+    u32::BITS - width.max(height).max(1).leading_zeros()
 }
