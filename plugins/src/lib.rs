@@ -1,5 +1,5 @@
 //! The standard pv3d components, one folder each: ground (with floorplans, grid, lights),
-//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones, power and map. Each is built
+//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones, power, map and image. Each is built
 //! on the `framework` crate alone and can be read without the rest of the application.
 
 use framework::PluginRegistry;
@@ -7,6 +7,7 @@ use framework::PluginRegistry;
 pub mod camera;
 pub mod fiducial;
 pub mod ground;
+pub mod image;
 pub mod laser;
 pub mod map;
 pub mod position2d;
@@ -30,5 +31,6 @@ pub fn standard_plugins() -> PluginRegistry {
     registry.register("libpv3d_zones", zones::ZonesPlugin::create);
     registry.register("libpv3d_power", power::PowerPlugin::create);
     registry.register("libpv3d_map", map::MapPlugin::create);
+    registry.register("libpv3d_image", image::ImagePlugin::create);
     registry
 }
