@@ -64,14 +64,12 @@ impl MapPlugin {
     }
 
     /// Puts the grid on the scene as it is now.
-    fn show(&mut self, grid: &OccupancyGrid, scene: &mut Scene) {
-        let info = grid.info();
-        let scale = f64::from(info.scale);
-        self.chain =
-            read_filter_chain(&self.config, "filter", |metres| metres / scale).map(obstacle_view);
-        if let Err(e) = &self.chain {
-            tracing::error!("map drawn unfiltered: {e}");
-        }
+    fn show(&mut self, scene: &mut Scene) {
+        let Some(grid) = self.fetch.grid() else {
+            return;
+        };
+        let info = *grid.info();
+        let (w, h) = grid.size_m();
         let pixels = match grid.pixels() {
             Ok(p) => p,
             Err(e) => {
@@ -79,7 +77,12 @@ impl MapPlugin {
                 return;
             }
         };
-        let (w, h) = grid.size_m();
+        let scale = f64::from(info.scale);
+        self.chain =
+            read_filter_chain(&self.config, "filter", |metres| metres / scale).map(obstacle_view);
+        if let Err(e) = &self.chain {
+            tracing::error!("map drawn unfiltered: {e}");
+        }
         let mut quad = ImageQuad::new(pixels, Vec3::ZERO, Vec2::new(w, h), Sampling::Grid);
         quad.filters = self.chain.clone().unwrap_or_default();
         let Some(node) = scene.get_mut(self.node) else {
@@ -131,12 +134,9 @@ impl Plugin for MapPlugin {
             );
         }
         let answered = polled.info_arrived || polled.tiles_answered > 0;
-        if answered
-            && self.fetch.is_complete()
-            && let Some(grid) = self.fetch.grid().cloned()
-        {
-            self.show(&grid, ctx.scene);
-            return true;
+        if answered && self.fetch.is_complete() {
+            self.show(ctx.scene);
+            return self.shown;
         }
         false
     }
