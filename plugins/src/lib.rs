@@ -1,5 +1,5 @@
 //! The standard pv3d components, one folder each: ground (with floorplans, grid, lights),
-//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones and power. Each is built
+//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones, power, map and image. Each is built
 //! on the `framework` crate alone and can be read without the rest of the application.
 
 use framework::{Metadata, PluginRegistry};
@@ -7,7 +7,9 @@ use framework::{Metadata, PluginRegistry};
 pub mod camera;
 pub mod fiducial;
 pub mod ground;
+pub mod image;
 pub mod laser;
+pub mod map;
 pub mod position2d;
 pub mod power;
 pub mod ranger;
@@ -85,6 +87,16 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_power",
         power::PowerPlugin::METADATA,
         power::PowerPlugin::create,
+    );
+    registry.register(
+        "libpv3d_map",
+        map::MapPlugin::METADATA,
+        map::MapPlugin::create,
+    );
+    registry.register(
+        "libpv3d_image",
+        image::ImagePlugin::METADATA,
+        image::ImagePlugin::create,
     );
     registry
 }

@@ -1,7 +1,9 @@
-//! Geometry a node carries: coloured line segments, points, triangles and text labels, in the
-//! node's own frame. Plain data, no OpenGL: the viewer batches it for drawing.
+//! Geometry a node carries: coloured line segments, points, triangles, text labels and
+//! pictures, in the node's own frame. Plain data, no OpenGL: the viewer batches it for drawing.
 
 use glam::Vec3;
+
+use super::image::ImageQuad;
 
 /// An sRGB colour with alpha, 0–255 per channel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -54,6 +56,8 @@ pub struct Geometry {
     /// Lit triangles (robot bodies, OBJ skins), three vertices each.
     pub mesh: Vec<MeshVertex>,
     pub labels: Vec<Label>,
+    /// Pictures lying in the node's x–y plane (maps, floor bitmaps), each its own texture.
+    pub images: Vec<ImageQuad>,
 }
 
 impl Geometry {
@@ -63,6 +67,7 @@ impl Geometry {
         self.triangles.clear();
         self.mesh.clear();
         self.labels.clear();
+        self.images.clear();
     }
 
     pub fn is_empty(&self) -> bool {
@@ -71,6 +76,7 @@ impl Geometry {
             && self.triangles.is_empty()
             && self.mesh.is_empty()
             && self.labels.is_empty()
+            && self.images.is_empty()
     }
 
     pub fn line(&mut self, a: Vec3, b: Vec3, color: Rgba) {

@@ -4,7 +4,10 @@
 //! Plugins own their nodes and rewrite their geometry when new data arrives; the scene counts
 //! changes ([`Scene::generation`]) so the viewer redraws only when something changed.
 
+pub mod filter;
+pub mod filter_config;
 mod geometry;
+pub mod image;
 pub mod polygon;
 pub mod pose;
 
@@ -12,7 +15,9 @@ use std::collections::BTreeMap;
 
 use glam::{Affine3A, Vec3};
 
+pub use filter::{FilterChain, GlslKernel, Kernel};
 pub use geometry::{Geometry, Label, MeshVertex, Rgba, Vertex};
+pub use image::{ImageError, ImageQuad, PixelFormat, Pixels, Sampling};
 
 /// A node's identity, stable for its lifetime.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]

@@ -2,7 +2,7 @@
 //! four GL calls however many robots there are. Buffers are reused from frame to frame.
 
 use bytemuck::{Pod, Zeroable};
-use framework::scene::{Label, Scene, Vertex};
+use framework::scene::{FilterChain, ImageQuad, Label, Pixels, Sampling, Scene, Vertex};
 use glam::{Affine3A, Vec3};
 
 use super::screen_detail::{ScreenDetail, Simplifier};
@@ -24,6 +24,29 @@ pub struct GpuMeshVertex {
     pub color: [u8; 4],
 }
 
+/// A picture placed in world space: its corners (counter-clockwise from row 0, column 0)
+/// with their texture coordinates. The pixels are shared with the scene, not copied.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BatchedImage {
+    pub pixels: Pixels,
+    pub corners: [([f32; 3], [f32; 2]); 4],
+    pub sampling: Sampling,
+    pub filters: FilterChain,
+}
+
+impl BatchedImage {
+    fn placed(quad: &ImageQuad, to_world: &Affine3A) -> BatchedImage {
+        BatchedImage {
+            pixels: quad.pixels.clone(),
+            corners: quad
+                .corners()
+                .map(|(p, uv)| (to_world.transform_point3(p).to_array(), uv.to_array())),
+            sampling: quad.sampling,
+            filters: quad.filters.clone(),
+        }
+    }
+}
+
 /// The scene flattened for drawing.
 #[derive(Debug, Default)]
 pub struct SceneBatch {
@@ -37,6 +60,8 @@ pub struct SceneBatch {
     pub mesh: Vec<GpuMeshVertex>,
     /// Labels with world-space positions, drawn as text over the 3D view.
     pub labels: Vec<Label>,
+    /// Pictures, each drawn with its own texture.
+    pub images: Vec<BatchedImage>,
     /// One object's vertices in world space, before simplification.
     scratch: Vec<GpuVertex>,
     simplifier: Simplifier,
@@ -53,6 +78,7 @@ impl SceneBatch {
         self.translucent.clear();
         self.mesh.clear();
         self.labels.clear();
+        self.images.clear();
         for (id, object) in scene.iter() {
             let g = &object.geometry;
             if g.is_empty() || !scene.is_shown(id) {
@@ -91,6 +117,8 @@ impl SceneBatch {
                 pos: to_world.transform_point3(l.pos),
                 ..l.clone()
             }));
+            self.images
+                .extend(g.images.iter().map(|i| BatchedImage::placed(i, &to_world)));
         }
     }
 
@@ -135,8 +163,9 @@ fn to_world_space(out: &mut Vec<GpuVertex>, vertices: &[Vertex], to_world: &Affi
     }
 }
 
-/// The lowest and highest corner of the solid things in the scene (meshes, lines and points;
-/// not flat fills such as the ground plane, nor objects tagged `grid`), for framing the view.
+/// The lowest and highest corner of the solid things in the scene (meshes, lines, points and
+/// pictures; not flat fills such as the ground plane, nor objects tagged `grid`), for framing
+/// the view.
 pub fn content_bounds(scene: &Scene) -> Option<(Vec3, Vec3)> {
     let mut bounds: Option<(Vec3, Vec3)> = None;
     for (id, object) in scene.iter() {
@@ -150,7 +179,8 @@ pub fn content_bounds(scene: &Scene) -> Option<(Vec3, Vec3)> {
             .iter()
             .chain(&g.points)
             .map(|v| v.pos)
-            .chain(g.mesh.iter().map(|v| v.pos));
+            .chain(g.mesh.iter().map(|v| v.pos))
+            .chain(g.images.iter().flat_map(|i| i.corners().map(|(p, _)| p)));
         for p in points {
             let p = to_world.transform_point3(p);
             bounds = Some(match bounds {

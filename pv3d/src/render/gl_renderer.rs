@@ -8,6 +8,8 @@ use eframe::glow::{self, HasContext};
 use glam::{Mat4, Vec3};
 
 use super::batch::{GpuMeshVertex, GpuVertex, SceneBatch};
+use super::image_quads::ImageRenderer;
+use super::shader::{glsl_header, link_program};
 
 const FLAT_VERTEX: &str = r#"
 layout(location = 0) in vec3 a_pos;
@@ -96,6 +98,7 @@ pub struct SceneRenderer {
     triangles: Buffer,
     translucent: Buffer,
     mesh: Buffer,
+    images: ImageRenderer,
     /// Batch revision last uploaded; `None` forces an upload.
     uploaded: Option<u64>,
     pub point_size: f32,
@@ -105,11 +108,7 @@ pub struct SceneRenderer {
 impl SceneRenderer {
     /// Compiles the shaders (GLSL 330 core, or 300 es on GLES) and creates the buffers.
     pub fn new(gl: &glow::Context) -> Result<SceneRenderer, RendererError> {
-        let header = if gl.version().is_embedded {
-            "#version 300 es\nprecision mediump float;\n"
-        } else {
-            "#version 330 core\n"
-        };
+        let header = glsl_header(gl);
         // SAFETY: plain GL object creation on the current context.
         unsafe {
             let flat = program(gl, header, FLAT_VERTEX, FLAT_FRAGMENT)?;
@@ -122,6 +121,7 @@ impl SceneRenderer {
                 triangles: flat_buffer(gl)?,
                 translucent: flat_buffer(gl)?,
                 mesh: mesh_buffer(gl)?,
+                images: ImageRenderer::new(gl).map_err(RendererError)?,
                 uploaded: None,
                 point_size: POINT_SIZE_PX,
                 lighting: Lighting::default(),
@@ -168,6 +168,7 @@ impl SceneRenderer {
                 batch.mesh.len(),
             );
         }
+        self.images.upload(gl, &batch.images);
         self.uploaded = Some(revision);
     }
 
@@ -225,6 +226,9 @@ impl SceneRenderer {
                 self.point_size,
             );
             draw_buffer(gl, &self.triangles, glow::TRIANGLES);
+            // Pictures lie on the ground among the opaque fills.
+            self.images.draw(gl, &matrix);
+            gl.use_program(Some(self.flat));
             // Translucent fills after everything opaque and without writing depth, so that
             // neither an opaque fill drawn later nor the lines on them are hidden.
             gl.depth_mask(false);
@@ -240,7 +244,8 @@ impl SceneRenderer {
     }
 
     /// Frees the GL objects.
-    pub fn destroy(&self, gl: &glow::Context) {
+    pub fn destroy(&mut self, gl: &glow::Context) {
+        self.images.destroy(gl);
         // SAFETY: objects belong to this context and are not used afterwards.
         unsafe {
             gl.delete_program(self.flat);
@@ -267,36 +272,12 @@ unsafe fn program(
 ) -> Result<glow::Program, RendererError> {
     // SAFETY: the caller holds a current context.
     unsafe {
-        let program = gl.create_program().map_err(RendererError)?;
-        let mut shaders = Vec::new();
-        for (kind, source) in [
-            (glow::VERTEX_SHADER, vertex),
-            (glow::FRAGMENT_SHADER, fragment),
-        ] {
-            let shader = gl.create_shader(kind).map_err(RendererError)?;
-            gl.shader_source(shader, &format!("{header}{source}"));
-            gl.compile_shader(shader);
-            if !gl.get_shader_compile_status(shader) {
-                return Err(RendererError(format!(
-                    "shader: {}",
-                    gl.get_shader_info_log(shader)
-                )));
-            }
-            gl.attach_shader(program, shader);
-            shaders.push(shader);
-        }
-        gl.link_program(program);
-        if !gl.get_program_link_status(program) {
-            return Err(RendererError(format!(
-                "link: {}",
-                gl.get_program_info_log(program)
-            )));
-        }
-        for shader in shaders {
-            gl.detach_shader(program, shader);
-            gl.delete_shader(shader);
-        }
-        Ok(program)
+        link_program(
+            gl,
+            &format!("{header}{vertex}"),
+            &format!("{header}{fragment}"),
+        )
+        .map_err(RendererError)
     }
 }
 

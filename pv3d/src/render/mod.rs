@@ -1,12 +1,19 @@
 //! Drawing: the orbit camera, the scene flattened into vertex batches (with detail finer than
-//! a pixel merged), and our glow renderer. Drawing with no window lives in [`crate::headless`].
+//! a pixel merged), and our glow renderer, with the scene's pictures as textured quads and
+//! their filter chains run as GPU kernels. Drawing with no window lives in [`crate::headless`].
 
 pub mod batch;
 pub mod camera;
 pub mod gl_renderer;
+pub mod gl_state;
+pub mod grid_mipmaps;
+pub mod image_quads;
+pub mod kernels;
 pub mod screen_detail;
+pub mod shader;
+pub mod texture;
 
-pub use batch::SceneBatch;
+pub use batch::{BatchedImage, SceneBatch};
 pub use camera::{OrbitCamera, Projection};
 pub use gl_renderer::{Lighting, POINT_SIZE_PX, SceneRenderer};
 pub use screen_detail::{ScreenDetail, Simplifier};
