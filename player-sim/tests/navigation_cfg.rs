@@ -64,7 +64,7 @@ fn the_navigation_half_reaches_r0_and_serves_the_map() {
     // What is not simulated is said, once per block.
     let note = format!(
         "ignored: amcl options init_pose_var, laser_max_beams, pf_max_samples (not simulated) \
-         at {}:23",
+         at {}:24",
         nav.display()
     );
     assert!(ignored.contains(&note), "{note} not in {ignored:?}");
@@ -73,7 +73,7 @@ fn the_navigation_half_reaches_r0_and_serves_the_map() {
         .unwrap_err()
         .to_string();
     assert!(
-        err.starts_with(&format!("{}:10:", nav.display())) && err.contains("passthrough"),
+        err.starts_with(&format!("{}:11:", nav.display())) && err.contains("passthrough"),
         "{err}"
     );
 }

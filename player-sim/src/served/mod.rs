@@ -3,6 +3,7 @@
 //! `rangertolaser` for a laser, `mapfile` for a map, `passthrough` to reach another server's
 //! devices), or, without one, one port per robot in world order.
 
+mod beside;
 mod defaults;
 mod drivers;
 mod navigation;
@@ -12,6 +13,7 @@ use std::path::Path;
 
 use player_proto::wire::{DevAddr, Interface};
 
+pub use beside::cfgs_beside;
 pub use defaults::{default_devices, shift_ports};
 
 use crate::mapfile::SharedMap;
