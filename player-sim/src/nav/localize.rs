@@ -89,7 +89,12 @@ impl Localizer {
 
     /// The estimated pose of the robot that truly stands at `truth`.
     pub fn estimate(&self, truth: Pose) -> Pose {
-        on_robot(self.offset, truth)
+        if self.offset == Pose::default() {
+            // The truth itself, without the rounding of a composition.
+            truth
+        } else {
+            on_robot(self.offset, truth)
+        }
     }
 
     /// Asks for an update at the next step, as amcl's setup publishes one to a new subscriber.
@@ -293,5 +298,35 @@ mod tests {
             (cloud.mean.px, cloud.mean.py, cloud.mean.pa),
             (2.0, -1.0, 0.0)
         );
+    }
+
+    #[test]
+    fn fakelocalize_is_the_truth_every_step_with_no_uncertainty() {
+        let settings = LocalizeSettings {
+            kind: LocalizerKind::Fake,
+            init_pose: Some(Pose {
+                x: 9.0,
+                ..Pose::default()
+            }),
+            ..amcl()
+        };
+        let truth = Pose {
+            x: 1.0,
+            y: 1.0,
+            a: 0.3,
+        };
+        let mut loc = Localizer::new(settings, truth);
+        for _ in 0..3 {
+            loc.step(truth);
+            assert!(loc.updated);
+        }
+        let data = loc.hypotheses(truth, 4.5);
+        let h = data.best().unwrap();
+        assert_eq!((h.mean.px, h.mean.py, h.mean.pa), (1.0, 1.0, 0.3));
+        assert_eq!(
+            (h.cov, h.alpha, data.pending_time),
+            ([0.0; 6], FAKE_WEIGHT, 4.5)
+        );
+        assert_eq!(loc.particles(truth).particles.len(), 1);
     }
 }
