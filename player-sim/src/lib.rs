@@ -2,6 +2,8 @@
 //!
 //! * [`served`] — which devices each robot exposes on which port (from the .cfg).
 //! * [`mapfile`] — maps read from images as Player's `mapfile` driver reads them.
+//! * [`nav`] — Player's navigation drivers: localization (`amcl`, `fakelocalize`) and the
+//!   `wavefront` planner that drives a robot.
 //! * [`devices`], [`camera_frames`], [`serve`] — the simulation served over the Player protocol.
 //! * [`replay`] — a recording served as the Player servers it was recorded from.
 //! * [`sim`] — the simulation: motion, collisions, sensors by ray casting.
@@ -11,6 +13,7 @@
 pub mod camera_frames;
 pub mod devices;
 pub mod mapfile;
+pub mod nav;
 pub mod replay;
 pub mod serve;
 pub mod served;

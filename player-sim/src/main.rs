@@ -8,7 +8,7 @@ use anyhow::{Context, Result};
 use clap::Parser;
 use player_sim::replay::ReplayOptions;
 use player_sim::serve::{ServeOptions, serve};
-use player_sim::served::{DEFAULT_PORT, default_devices, from_cfgs, shift_ports};
+use player_sim::served::{DEFAULT_PORT, cfgs_beside, default_devices, from_cfgs, shift_ports};
 use player_sim::sim::{Noise, Simulation};
 use player_sim::world::World;
 
@@ -38,9 +38,10 @@ struct Cli {
     looping: bool,
 
     /// The Player .cfg naming each robot's devices and ports; by default the world's name with
-    /// .cfg, if there is one, else one port per robot from --port-base. Give it again for the
-    /// .cfg of a second `player` process (navigation drivers reaching Stage's devices through
-    /// `passthrough`): player-sim serves the ports of both.
+    /// .cfg (and then with -nav.cfg, a navigation half), if there is one, else one port per
+    /// robot from --port-base. Give it again for the .cfg of a second `player` process
+    /// (navigation drivers reaching Stage's devices through `passthrough`): player-sim serves
+    /// the ports of both.
     #[arg(long)]
     cfg: Vec<PathBuf>,
 
@@ -101,7 +102,7 @@ fn run(cli: Cli) -> Result<()> {
     let mut ignored = world.ignored.clone();
     let mut cfgs = cli.cfg.clone();
     if cfgs.is_empty() {
-        cfgs.extend(Some(world_path.with_extension("cfg")).filter(|p| p.exists()));
+        cfgs = cfgs_beside(world_path);
     }
     let mut devices = if cfgs.is_empty() {
         default_devices(&world, cli.port_base.unwrap_or(DEFAULT_PORT))

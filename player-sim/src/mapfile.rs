@@ -91,6 +91,24 @@ impl GridMap {
         })
     }
 
+    /// A map of the given cells (row-major, row 0 the lowest y; Player's values: -1 free,
+    /// 0 unknown, +1 occupied), as a map drawn by hand for a test or a tool.
+    pub fn from_cells(
+        width: u32,
+        height: u32,
+        resolution: f64,
+        origin: (f64, f64),
+        cells: Vec<i8>,
+    ) -> Option<GridMap> {
+        (cells.len() == width as usize * height as usize).then_some(GridMap {
+            width,
+            height,
+            resolution,
+            origin,
+            cells,
+        })
+    }
+
     /// The cell at column `i`, row `j`, or `None` off the map.
     pub fn cell(&self, i: u32, j: u32) -> Option<i8> {
         (i < self.width && j < self.height)

@@ -83,6 +83,8 @@ pub fn serve(
     devices: Vec<ServedDevice>,
     options: ServeOptions,
 ) -> Result<Running, ServerError> {
+    let mut sim = sim;
+    sim.attach_navigation(&devices);
     let sim = Arc::new(Mutex::new(sim));
     let mut configured: Vec<u16> = devices.iter().map(|d| d.port).collect();
     configured.sort_unstable();
@@ -170,9 +172,16 @@ fn step_loop(
                     let addr = *addr;
                     SimDevice::data(&sim, source, id)
                         .into_iter()
-                        .map(move |(subtype, body)| (addr, subtype, body))
+                        .map(move |(subtype, body)| (addr, source, subtype, body))
                 })
-                .map(|(addr, subtype, body)| (addr, subtype, body, sim.time))
+                .map(|(addr, source, subtype, body)| {
+                    let time = if source.stamped_by_wall_clock() {
+                        wall_clock()
+                    } else {
+                        sim.time
+                    };
+                    (addr, subtype, body, time)
+                })
                 .collect()
         };
         for (addr, subtype, body, time) in outgoing {
@@ -186,4 +195,11 @@ fn step_loop(
             }
         }
     }
+}
+
+/// Seconds since the Unix epoch, as Player's server clock reads.
+fn wall_clock() -> f64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0.0, |d| d.as_secs_f64())
 }

@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use player_sim::serve::{Running, ServeOptions, serve};
-use player_sim::served::from_cfg;
+use player_sim::served::{cfgs_beside, from_cfg, from_cfgs};
 use player_sim::sim::Simulation;
 use player_sim::sim::body_at;
 use player_sim::world::{BoxObstacle, Floorplan, Polygon, World, placed};
@@ -21,7 +21,8 @@ pub enum WorldError {
     Serve(#[from] player_proto::server::ServerError),
 }
 
-/// Serves a Stage world (with the `.cfg` beside it) on free ports. Every Player client of the
+/// Serves a Stage world (with the `.cfg` beside it, and its navigation half `<world>-nav.cfg`
+/// when there is one) on free ports. Every Player client of the
 /// composition whose port the world configures is pointed at the port it got; a composition
 /// that names no server gets one for every served port, so masks alone show every robot. A
 /// ground plugin without a bitmap gets the world's floorplan.
@@ -32,7 +33,13 @@ pub fn serve_world(
 ) -> Result<Running, WorldError> {
     let world = World::load(world_file)?;
     let mut ignored = Vec::new();
-    let devices = from_cfg(&world_file.with_extension("cfg"), &world, &mut ignored)?;
+    let devices = match cfgs_beside(world_file).as_slice() {
+        [] => from_cfg(&world_file.with_extension("cfg"), &world, &mut ignored)?,
+        cfgs => {
+            let paths: Vec<&Path> = cfgs.iter().map(|p| p.as_path()).collect();
+            from_cfgs(&paths, &world, &mut ignored)?
+        }
+    };
     for note in ignored {
         tracing::info!("{}: {note}", world_file.display());
     }

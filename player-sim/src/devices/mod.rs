@@ -3,7 +3,9 @@
 
 mod blobfinder;
 mod gripper;
+mod localize;
 mod map;
+mod planner;
 
 use std::sync::{Arc, Mutex};
 
@@ -194,6 +196,9 @@ impl SimDevice {
                 }
             }
             Source::Map(map) => map::answer(&map.0, request),
+            Source::Localize(driver) => localize::answer(&mut sim, &driver, request),
+            Source::Estimate(_) => Reply::Nack,
+            Source::Planner(driver) => planner::answer(&mut sim, &driver, request),
             Source::Blobfinder { .. } => Reply::Nack,
             Source::Gripper { robot, gripper } => {
                 if asks(request, Gripper::REQ_GET_GEOM) {
@@ -252,6 +257,9 @@ impl SimDevice {
     pub fn data(sim: &Simulation, source: &Source, scan_id: u32) -> Vec<(u8, Body)> {
         vec![match *source {
             Source::Simulation | Source::Map(_) => return Vec::new(),
+            Source::Localize(ref driver) => return localize::hypotheses(sim, driver),
+            Source::Estimate(ref driver) => return localize::estimate(sim, driver),
+            Source::Planner(ref driver) => return planner::data(sim, driver),
             Source::Blobfinder { robot, finder } => {
                 data_of(Blobfinder::DATA_BLOBS, blobfinder::data(sim, robot, finder))
             }
@@ -342,7 +350,18 @@ impl Device for SimDevice {
         &self.served.driver
     }
 
+    fn on_subscribe(&mut self) -> bool {
+        if let Source::Localize(driver) = &self.served.source {
+            localize::subscribed(&mut self.sim.lock().expect("simulation"), driver);
+        }
+        true
+    }
+
     fn on_command(&mut self, command: &Message) {
+        if let Source::Planner(driver) = &self.served.source {
+            planner::command(&mut self.sim.lock().expect("simulation"), driver, command);
+            return;
+        }
         if let Source::Gripper { robot, gripper } = self.served.source
             && let Some(told) = gripper::command(command)
         {

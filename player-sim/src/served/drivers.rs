@@ -1,6 +1,6 @@
 //! The drivers of a .cfg besides `stage`: converters of a Stage device (`rangertolaser`,
-//! `cameracompress`), `passthrough` of a device another .cfg provides, `mapfile`, and the
-//! navigation drivers, which are read and reported as not served yet.
+//! `cameracompress`), `passthrough` of a device another .cfg provides, and `mapfile`. The
+//! navigation drivers (`amcl`, `fakelocalize`, `wavefront`) are read in `navigation`.
 
 use std::sync::Arc;
 
@@ -10,13 +10,6 @@ use super::{DriverBlock, ServedDevice, Source};
 use crate::mapfile::{GridMap, MapFileSettings, SharedMap};
 use crate::worldfile::{Property, WorldFileError};
 
-/// Player's navigation drivers and the interface each serves; player-sim serves them later.
-const NOT_SERVED_YET: &[(&str, &str)] = &[
-    ("amcl", "localize"),
-    ("fakelocalize", "localize"),
-    ("wavefront", "planner"),
-];
-
 /// The drivers player-sim serves devices of (besides `stage`).
 const SERVED: &[&str] = &[
     "rangertolaser",
@@ -24,6 +17,9 @@ const SERVED: &[&str] = &[
     "cameracompress",
     "passthrough",
     "mapfile",
+    "amcl",
+    "fakelocalize",
+    "wavefront",
 ];
 
 /// "ignored: …" for a driver player-sim does not serve at all, so that its lines are read
@@ -33,12 +29,7 @@ pub(super) fn not_served(driver: &DriverBlock) -> Option<String> {
     if name == "stage" || SERVED.contains(&name) {
         return None;
     }
-    Some(match NOT_SERVED_YET.iter().find(|(n, _)| *n == name) {
-        Some((_, serves)) => driver.ignored(&format!(
-            "driver {name:?} ({serves} and its devices are not served yet)"
-        )),
-        None => driver.ignored(&format!("driver {name:?}")),
-    })
+    Some(driver.ignored(&format!("driver {name:?}")))
 }
 
 /// The source of a device the block provides, or `None` when it is ignored.
@@ -129,7 +120,7 @@ fn jpeg_quality(driver: &DriverBlock) -> Result<u8, WorldFileError> {
     }
 }
 
-fn at(p: &Property, message: impl Into<String>) -> WorldFileError {
+pub(super) fn at(p: &Property, message: impl Into<String>) -> WorldFileError {
     WorldFileError::at(&p.pos.file, p.pos.line, p.pos.col, message)
 }
 

@@ -3,17 +3,21 @@
 //! `rangertolaser` for a laser, `mapfile` for a map, `passthrough` to reach another server's
 //! devices), or, without one, one port per robot in world order.
 
+mod beside;
 mod defaults;
 mod drivers;
+mod navigation;
 mod stage;
 
 use std::path::Path;
 
 use player_proto::wire::{DevAddr, Interface};
 
+pub use beside::cfgs_beside;
 pub use defaults::{default_devices, shift_ports};
 
 use crate::mapfile::SharedMap;
+use crate::nav::{LocalizeSettings, NavDriver, PlannerSpec};
 use crate::world::World;
 use crate::worldfile::{Block, Item, Value, WorldFileError, parse_text};
 
@@ -59,6 +63,20 @@ pub enum Source {
     },
     /// A map image read by Player's `mapfile` driver.
     Map(SharedMap),
+    /// The hypotheses of a localization driver (`amcl`, `fakelocalize`).
+    Localize(NavDriver<LocalizeSettings>),
+    /// A localization driver's estimate served as a `position2d` (amcl's second device).
+    Estimate(NavDriver<LocalizeSettings>),
+    /// A `wavefront` planner.
+    Planner(NavDriver<PlannerSpec>),
+}
+
+impl Source {
+    /// Player's navigation drivers stamp their hypotheses and planner state with the server's
+    /// clock (the wall clock), not the simulation's as Stage's devices do.
+    pub fn stamped_by_wall_clock(&self) -> bool {
+        matches!(self, Source::Localize(_) | Source::Planner(_))
+    }
 }
 
 /// A device to serve.
@@ -109,6 +127,12 @@ fn parse_addr(text: &str) -> Option<(u16, Interface, u16)> {
     Some((port, addr.interf, addr.index))
 }
 
+/// The key of a keyed address (`"odometry:::position2d:0"` → `odometry`).
+fn addr_key(text: &str) -> Option<&str> {
+    let parts: Vec<&str> = text.trim().split(':').collect();
+    (parts.len() == 5).then_some(parts[0])
+}
+
 fn strings(value: Option<&Value>) -> Vec<String> {
     match value {
         Some(Value::List(items)) => items
@@ -139,8 +163,9 @@ pub fn from_cfgs(
     ignored: &mut Vec<String>,
 ) -> Result<Vec<ServedDevice>, WorldFileError> {
     let mut served = Vec::new();
+    let mut next_id = 0;
     for path in paths {
-        read_cfg(path, world, &mut served, ignored)?;
+        read_cfg(path, world, &mut served, ignored, &mut next_id)?;
     }
     Ok(served)
 }
@@ -152,6 +177,8 @@ pub(crate) struct DriverBlock<'a> {
     pub requires: Vec<String>,
     /// The .cfg's folder: Player reads file names relative to it.
     pub folder: &'a Path,
+    /// Tells this block apart from every other block of the .cfg files read together.
+    pub id: usize,
 }
 
 impl DriverBlock<'_> {
@@ -174,6 +201,26 @@ impl DriverBlock<'_> {
             .iter()
             .find(|d| (d.port, d.interf, d.index) == required)
     }
+
+    /// The `requires` entry of interface `interf` with key `key` (any key when `None`), as
+    /// Player's drivers look them up: the text, and the device it names if one is provided.
+    pub fn required_as<'s>(
+        &self,
+        served: &'s [ServedDevice],
+        interf: Interface,
+        key: Option<&str>,
+    ) -> Option<(&str, Option<&'s ServedDevice>)> {
+        self.requires.iter().find_map(|text| {
+            let (port, i, index) = parse_addr(text)?;
+            if i != interf || key.is_some_and(|k| addr_key(text) != Some(k)) {
+                return None;
+            }
+            let device = served
+                .iter()
+                .find(|d| (d.port, d.interf, d.index) == (port, i, index));
+            Some((text.as_str(), device))
+        })
+    }
 }
 
 fn read_cfg(
@@ -181,6 +228,7 @@ fn read_cfg(
     world: &World,
     served: &mut Vec<ServedDevice>,
     ignored: &mut Vec<String>,
+    next_id: &mut usize,
 ) -> Result<(), WorldFileError> {
     let name = path.display().to_string();
     let text = std::fs::read_to_string(path)
@@ -204,7 +252,9 @@ fn read_cfg(
                 .to_string(),
             requires: strings(block.get("requires").map(|p| &p.value)),
             folder,
+            id: *next_id,
         };
+        *next_id += 1;
         if let Some(note) = drivers::not_served(&driver) {
             if !ignored.contains(&note) {
                 ignored.push(note);
@@ -222,6 +272,9 @@ fn read_cfg(
                 .ok_or_else(|| driver.error(format!("bad device address {text:?}")))?;
             let source = match driver.name.as_str() {
                 "stage" => stage::source(&driver, world, text, interf, &mut counts, ignored)?,
+                "amcl" | "fakelocalize" | "wavefront" => {
+                    navigation::source(&driver, world, served, interf, ignored)?
+                }
                 _ => drivers::source(&driver, served, interf, ignored)?,
             };
             let Some(source) = source else { continue };

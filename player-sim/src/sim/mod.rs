@@ -24,6 +24,7 @@ pub use sensors::{
 };
 pub use wander::WanderState;
 
+use crate::nav::Navigation;
 use crate::world::{Controller, Drive, Pose, World};
 
 /// What a robot is told to do.
@@ -62,6 +63,8 @@ pub struct Simulation {
     pub noise: Noise,
     /// For each obstacle, the (robot, gripper) holding it.
     pub carried_by: Vec<Option<(usize, usize)>>,
+    /// The navigation drivers (localizers, planners) the served `.cfg` files run.
+    pub nav: Navigation,
 }
 
 const STOP: Command = Command::Velocity {
@@ -92,6 +95,7 @@ impl Simulation {
             steps: 0,
             noise: Noise::default(),
             carried_by,
+            nav: Navigation::default(),
         }
     }
 
@@ -174,6 +178,7 @@ impl Simulation {
                 self.wander(i, ranger);
             }
         }
+        self.steer_planners();
         for i in 0..self.robots.len() {
             let (vx, vy, va) = self.velocity_for(i);
             let vy = if self.world.robots[i].drive == Drive::Omni {
@@ -198,6 +203,7 @@ impl Simulation {
                 self.robots[i].velocity = (vx, vy, va);
             }
         }
+        self.update_localizers();
         self.carry();
         for robot in 0..self.robots.len() {
             for gripper in 0..self.robots[robot].grippers.len() {
