@@ -8,6 +8,7 @@ pub mod camera;
 pub mod fiducial;
 pub mod ground;
 pub mod laser;
+pub mod localize;
 pub mod position2d;
 pub mod power;
 pub mod ranger;
@@ -85,6 +86,11 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_power",
         power::PowerPlugin::METADATA,
         power::PowerPlugin::create,
+    );
+    registry.register(
+        "libpv3d_localize",
+        localize::LocalizePlugin::METADATA,
+        localize::LocalizePlugin::create,
     );
     registry
 }
