@@ -9,6 +9,7 @@ pub mod fiducial;
 pub mod ground;
 pub mod laser;
 pub mod localize;
+pub mod planner;
 pub mod position2d;
 pub mod power;
 pub mod ranger;
@@ -91,6 +92,11 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_localize",
         localize::LocalizePlugin::METADATA,
         localize::LocalizePlugin::create,
+    );
+    registry.register(
+        "libpv3d_planner",
+        planner::PlannerPlugin::METADATA,
+        planner::PlannerPlugin::create,
     );
     registry
 }
