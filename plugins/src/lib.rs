@@ -4,6 +4,7 @@
 
 use framework::{Metadata, PluginRegistry};
 
+pub mod bumper;
 pub mod camera;
 pub mod fiducial;
 pub mod ground;
@@ -97,6 +98,11 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_planner",
         planner::PlannerPlugin::METADATA,
         planner::PlannerPlugin::create,
+    );
+    registry.register(
+        "libpv3d_bumper",
+        bumper::BumperPlugin::METADATA,
+        bumper::BumperPlugin::create,
     );
     registry
 }
