@@ -8,6 +8,7 @@ pub mod bumper;
 pub mod camera;
 pub mod fiducial;
 pub mod ground;
+pub mod ir;
 pub mod laser;
 pub mod localize;
 pub mod planner;
@@ -104,5 +105,6 @@ pub fn standard_plugins() -> PluginRegistry {
         bumper::BumperPlugin::METADATA,
         bumper::BumperPlugin::create,
     );
+    registry.register("libpv3d_ir", ir::IrPlugin::METADATA, ir::IrPlugin::create);
     registry
 }
