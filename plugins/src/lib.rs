@@ -7,6 +7,7 @@ use framework::{Metadata, PluginRegistry};
 pub mod bumper;
 pub mod camera;
 pub mod fiducial;
+pub mod gripper;
 pub mod ground;
 pub mod ir;
 pub mod laser;
@@ -106,5 +107,10 @@ pub fn standard_plugins() -> PluginRegistry {
         bumper::BumperPlugin::create,
     );
     registry.register("libpv3d_ir", ir::IrPlugin::METADATA, ir::IrPlugin::create);
+    registry.register(
+        "libpv3d_gripper",
+        gripper::GripperPlugin::METADATA,
+        gripper::GripperPlugin::create,
+    );
     registry
 }
