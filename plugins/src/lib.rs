@@ -13,6 +13,7 @@ pub mod ir;
 pub mod laser;
 pub mod localize;
 pub mod planner;
+pub mod pointcloud3d;
 pub mod position2d;
 pub mod power;
 pub mod ranger;
@@ -111,6 +112,11 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_gripper",
         gripper::GripperPlugin::METADATA,
         gripper::GripperPlugin::create,
+    );
+    registry.register(
+        "libpv3d_pointcloud3d",
+        pointcloud3d::PointCloudPlugin::METADATA,
+        pointcloud3d::PointCloudPlugin::create,
     );
     registry
 }
