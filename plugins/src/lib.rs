@@ -4,6 +4,7 @@
 
 use framework::{Metadata, PluginRegistry};
 
+pub mod blobfinder;
 pub mod bumper;
 pub mod camera;
 pub mod fiducial;
@@ -117,6 +118,11 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_pointcloud3d",
         pointcloud3d::PointCloudPlugin::METADATA,
         pointcloud3d::PointCloudPlugin::create,
+    );
+    registry.register(
+        "libpv3d_blobfinder",
+        blobfinder::BlobfinderPlugin::METADATA,
+        blobfinder::BlobfinderPlugin::create,
     );
     registry
 }
