@@ -17,6 +17,7 @@ pub mod planner;
 pub mod pointcloud3d;
 pub mod position2d;
 pub mod power;
+pub mod ptz;
 pub mod ranger;
 pub mod sonar;
 pub mod zones;
@@ -123,6 +124,11 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_blobfinder",
         blobfinder::BlobfinderPlugin::METADATA,
         blobfinder::BlobfinderPlugin::create,
+    );
+    registry.register(
+        "libpv3d_ptz",
+        ptz::PtzPlugin::METADATA,
+        ptz::PtzPlugin::create,
     );
     registry
 }
