@@ -5,7 +5,6 @@ mod support;
 
 use framework::PluginConfig;
 use framework::config::{DeviceRef, Param};
-use framework::plugin::Plugin;
 use glam::Vec3;
 use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::ir::{Ir, IrData, IrPose};

@@ -54,7 +54,11 @@ impl BlobfinderPlugin {
     /// The blobs last received (for tests and the panel).
     fn summary(&self) -> String {
         match &self.blobs {
-            Some(d) => format!("{} blobs in {} × {} px", d.blobs.len(), d.width, d.height),
+            Some(d) => {
+                let n = d.blobs.len();
+                let noun = if n == 1 { "blob" } else { "blobs" };
+                format!("{n} {noun} in {} × {} px", d.width, d.height)
+            }
             None => "no blobs yet".into(),
         }
     }
@@ -125,6 +129,9 @@ impl Plugin for BlobfinderPlugin {
             )))
             .open(&mut open)
             .resizable(false)
+            // Beside the view's right edge, clear of the item tree on the left.
+            .pivot(egui::Align2::RIGHT_TOP)
+            .default_pos(egui_ctx.content_rect().right_top() + egui::vec2(-12.0, 12.0))
             .show(egui_ctx, |ui| {
                 ui.label(self.summary());
                 self.canvas(ui);

@@ -128,6 +128,9 @@ impl Plugin for PtzPlugin {
             )))
             .open(&mut open)
             .resizable(false)
+            // At the view's bottom right, clear of the item tree and the camera windows.
+            .pivot(egui::Align2::RIGHT_BOTTOM)
+            .default_pos(egui_ctx.content_rect().right_bottom() + egui::vec2(-12.0, -12.0))
             .show(egui_ctx, |ui| self.controls(ui, ctx));
         self.show_window = open;
     }
