@@ -1,6 +1,8 @@
 //! The standard pv3d components, one folder each: ground (with floorplans, grid, lights),
-//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones and power. Each is built
-//! on the `framework` crate alone and can be read without the rest of the application.
+//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones and power; for
+//! navigation and the rest of a real robot, localize, planner, bumper, ir, gripper,
+//! blobfinder, ptz and pointcloud3d. Each is built on the `framework` crate alone and can be
+//! read without the rest of the application.
 
 use framework::{Metadata, PluginRegistry};
 
