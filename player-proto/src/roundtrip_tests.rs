@@ -121,7 +121,13 @@ proptest! {
         prop_assert_eq!(frames.buffered(), 0);
 
         let decoded = Message::decode(frame.header, frame.body).unwrap();
-        prop_assert_eq!(decoded.body.kind(), original.body.kind());
+        if original.body.encoded_len() == 0 {
+            // A body with no fields (the gripper's commands) is only its header on the wire:
+            // it reads back as empty, and the header's subtype still names it.
+            prop_assert_eq!(&decoded.body, &Body::Empty);
+        } else {
+            prop_assert_eq!(decoded.body.kind(), original.body.kind());
+        }
         prop_assert_eq!(decoded.to_bytes(), bytes);
     }
 

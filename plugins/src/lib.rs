@@ -1,17 +1,27 @@
 //! The standard pv3d components, one folder each: ground (with floorplans, grid, lights),
-//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones, power, map and image. Each is built
-//! on the `framework` crate alone and can be read without the rest of the application.
+//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones, power, map and
+//! image; for navigation and the rest of a real robot, localize, planner, bumper, ir, gripper,
+//! blobfinder, ptz and pointcloud3d. Each is built on the `framework` crate alone and can be
+//! read without the rest of the application.
 
 use framework::{Metadata, PluginRegistry};
 
+pub mod blobfinder;
+pub mod bumper;
 pub mod camera;
 pub mod fiducial;
+pub mod gripper;
 pub mod ground;
 pub mod image;
+pub mod ir;
 pub mod laser;
+pub mod localize;
 pub mod map;
+pub mod planner;
+pub mod pointcloud3d;
 pub mod position2d;
 pub mod power;
+pub mod ptz;
 pub mod ranger;
 pub mod sonar;
 pub mod zones;
@@ -97,6 +107,42 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_image",
         image::ImagePlugin::METADATA,
         image::ImagePlugin::create,
+    );
+    registry.register(
+        "libpv3d_localize",
+        localize::LocalizePlugin::METADATA,
+        localize::LocalizePlugin::create,
+    );
+    registry.register(
+        "libpv3d_planner",
+        planner::PlannerPlugin::METADATA,
+        planner::PlannerPlugin::create,
+    );
+    registry.register(
+        "libpv3d_bumper",
+        bumper::BumperPlugin::METADATA,
+        bumper::BumperPlugin::create,
+    );
+    registry.register("libpv3d_ir", ir::IrPlugin::METADATA, ir::IrPlugin::create);
+    registry.register(
+        "libpv3d_gripper",
+        gripper::GripperPlugin::METADATA,
+        gripper::GripperPlugin::create,
+    );
+    registry.register(
+        "libpv3d_pointcloud3d",
+        pointcloud3d::PointCloudPlugin::METADATA,
+        pointcloud3d::PointCloudPlugin::create,
+    );
+    registry.register(
+        "libpv3d_blobfinder",
+        blobfinder::BlobfinderPlugin::METADATA,
+        blobfinder::BlobfinderPlugin::create,
+    );
+    registry.register(
+        "libpv3d_ptz",
+        ptz::PtzPlugin::METADATA,
+        ptz::PtzPlugin::create,
     );
     registry
 }

@@ -1,5 +1,6 @@
 //! The `gripper` interface (code 3). OPEN, CLOSE, STOP, STORE and RETRIEVE (commands 1–5) have
-//! no body.
+//! no body: they are typed here with [`GripperSignal`], an empty structure, so that a client
+//! sends them by name like any other command.
 
 use super::common::{BBox3d, Pose3d};
 
@@ -39,10 +40,21 @@ xdr_struct! {
     }
 }
 
+xdr_struct! {
+    /// The body of the gripper's commands, which carry nothing: the subtype is the order.
+    #[derive(Copy)]
+    pub struct GripperSignal {}
+}
+
 interface_messages! {
     /// Messages of the `gripper` interface.
     pub enum Gripper for GRIPPER {
         Data 1 as DATA_STATE => State(GripperData),
+        Command 1 as CMD_OPEN => Open(GripperSignal),
+        Command 2 as CMD_CLOSE => Close(GripperSignal),
+        Command 3 as CMD_STOP => Stop(GripperSignal),
+        Command 4 as CMD_STORE => Store(GripperSignal),
+        Command 5 as CMD_RETRIEVE => Retrieve(GripperSignal),
         Request 1 as REQ_GET_GEOM => Geometry(GripperGeometry),
     }
 }

@@ -123,8 +123,8 @@ mod tests {
     use super::*;
     use crate::interfaces::laser::{self, Laser, LaserGeometry, LaserScan};
     use crate::interfaces::{
-        bumper, camera, fiducial, ir, localize, map, planner, player, position2d, ptz, ranger,
-        sonar,
+        bumper, camera, fiducial, gripper, ir, localize, map, planner, player, position2d, ptz,
+        ranger, sonar,
     };
     use crate::wire::{DevAddr, MsgType};
     use bytes::Bytes;
@@ -136,6 +136,14 @@ mod tests {
             (laser::REQ_GET_CONFIG, Laser::REQ_GET_CONFIG.subtype()),
             (laser::REQ_GET_ID, Laser::REQ_GET_ID.subtype()),
             (bumper::REQ_GET_GEOM, bumper::Bumper::REQ_GET_GEOM.subtype()),
+            (gripper::CMD_OPEN, gripper::Gripper::CMD_OPEN.subtype()),
+            (gripper::CMD_CLOSE, gripper::Gripper::CMD_CLOSE.subtype()),
+            (gripper::CMD_STOP, gripper::Gripper::CMD_STOP.subtype()),
+            (gripper::CMD_STORE, gripper::Gripper::CMD_STORE.subtype()),
+            (
+                gripper::CMD_RETRIEVE,
+                gripper::Gripper::CMD_RETRIEVE.subtype(),
+            ),
             (
                 camera::REQ_GET_SOURCE,
                 camera::Camera::REQ_GET_SOURCE.subtype(),
