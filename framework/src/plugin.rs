@@ -9,6 +9,7 @@ use glam::Vec3;
 pub use crate::action::{Action, ObjectRef};
 use crate::config::PluginConfig;
 use crate::device::DeviceAccess;
+use crate::query::{Query, Reply};
 pub use crate::registry::{Component, Constructor, Metadata, PluginRegistry};
 use crate::scene::{NodeId, Scene};
 
@@ -178,6 +179,14 @@ pub trait Plugin: Send {
 
     /// Runs one of the [`Plugin::actions_on`] actions the person chose for `target`.
     fn run_action(&mut self, _action: &str, _target: &ObjectRef, _ctx: &mut PluginContext<'_>) {}
+
+    /// Answers a query addressed to this plugin (by its id or library name): `None` when it
+    /// is not one this plugin knows, so the viewer passes it on to the next addressee; a
+    /// reply with error 0 when done; an error (< 0) saying what was wrong. See
+    /// [`crate::query`].
+    fn answer(&mut self, _query: &Query, _ctx: &mut PluginContext<'_>) -> Option<Reply> {
+        None
+    }
 
     /// Controls drawn over the 3D view while this plugin is the active event handler (a
     /// robot's joystick), so they work without opening its item-tree entry.

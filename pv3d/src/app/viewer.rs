@@ -11,6 +11,7 @@ mod input_chain;
 mod item_tree;
 mod lifecycle;
 mod popups;
+mod queries;
 
 pub(crate) use device_presence::{GONE, GONE_COLOR};
 
