@@ -9,8 +9,12 @@
 //! `color` (#3c8cdc), `mode` (`velocity` or `position`; velocity), `followDistance` (0.8 m:
 //! how far short of an object "Go to" and "Follow" stop), `skinFile` (an OBJ model drawn
 //! in place of the box, fitted to the robot's size; see [`framework::skin`]).
+//!
+//! Queries it answers (`answers.rs`): "go to" `<point x y/>`, "follow" `tag="person"`,
+//! "stop", "where are you".
 
 mod actions;
+mod answers;
 mod body;
 mod driving;
 mod goal;
@@ -348,6 +352,14 @@ impl Plugin for Position2dPlugin {
             }
             _ => Handled::No,
         }
+    }
+
+    fn answer(
+        &mut self,
+        query: &framework::query::Query,
+        ctx: &mut PluginContext<'_>,
+    ) -> Option<framework::query::Reply> {
+        self.answer_query(query, ctx)
     }
 
     fn can_be_active(&self) -> bool {

@@ -1,0 +1,119 @@
+//! A robot answers queries: "where are you", "go to", "follow" a tag, "stop" — and drives
+//! as it would after a click.
+
+mod support;
+
+use framework::PluginConfig;
+use framework::config::DeviceRef;
+use framework::device::RecordingDevice;
+use framework::query::{BAD_ARGUMENTS, FAILED, Query, Target, XmlElement};
+use framework::scene::Object3D;
+use glam::Vec3;
+use player_proto::interfaces::common::Pose2d;
+use player_proto::interfaces::position2d::{Position2d, Position2dData};
+use player_proto::message::{Body, Message};
+use player_proto::{DevAddr, MsgType};
+use support::harness;
+
+fn config() -> PluginConfig {
+    PluginConfig {
+        library: "libpv3d_position2d".into(),
+        id: "robot1".into(),
+        device: Some(DeviceRef {
+            host: "localhost".into(),
+            port: 6665,
+            addr: "position2d:0".parse().unwrap(),
+            driver: "stage".into(),
+        }),
+        ..PluginConfig::default()
+    }
+}
+
+fn odometry(device: &RecordingDevice, x: f64, y: f64) {
+    let addr: DevAddr = "position2d:0".parse().unwrap();
+    let state = Position2dData {
+        pos: Pose2d::new(x, y, 0.0),
+        vel: Pose2d::default(),
+        stall: 0,
+    };
+    device.push(Message::typed(
+        addr,
+        MsgType::Data,
+        Position2d::State(state),
+    ));
+}
+
+fn last_velocity(device: &RecordingDevice) -> Option<(f64, f64)> {
+    device
+        .commands
+        .lock()
+        .unwrap()
+        .iter()
+        .rev()
+        .find_map(|b| match b {
+            Body::Position2d(Position2d::Velocity(v)) => Some((v.vel.px, v.vel.pa)),
+            _ => None,
+        })
+}
+
+fn ask(name: &str) -> Query {
+    Query::new(Target::Named("robot1".into()), name)
+}
+
+#[test]
+fn a_robot_says_where_it_is_and_goes_where_it_is_told() {
+    let mut w = harness();
+    let mut robot = w.make(config()).unwrap();
+    odometry(&w.device, 1.0, 2.0);
+    robot.run(&mut w.ctx());
+
+    let here = robot.answer(&ask("where are you"), &mut w.ctx()).unwrap();
+    assert!(here.is_done());
+    assert_eq!(
+        (here.body.number("x"), here.body.number("y")),
+        (Ok(1.0), Ok(2.0))
+    );
+
+    let go = ask("go to").with_child(XmlElement::new("point").with_attr("x", 4).with_attr("y", 2));
+    let reply = robot.answer(&go, &mut w.ctx()).unwrap();
+    assert!(reply.is_done(), "{reply:?}");
+    assert_eq!(reply.body.child("goal").unwrap().number("x"), Ok(4.0));
+    robot.run(&mut w.ctx());
+    let (speed, _) = last_velocity(&w.device).expect("a velocity command");
+    assert!(speed > 0.0, "drives towards the goal: {speed}");
+
+    let stop = robot.answer(&ask("stop"), &mut w.ctx()).unwrap();
+    assert!(stop.is_done() && stop.body.child("goal").is_none());
+    assert_eq!(last_velocity(&w.device), Some((0.0, 0.0)));
+
+    let bad = robot
+        .answer(&ask("go to").with_attr("x", 1), &mut w.ctx())
+        .unwrap();
+    assert_eq!(bad.error, BAD_ARGUMENTS);
+    assert!(
+        robot.answer(&ask("sing"), &mut w.ctx()).is_none(),
+        "not a robot's query"
+    );
+}
+
+#[test]
+fn a_robot_follows_the_nearest_object_with_a_tag() {
+    let mut w = harness();
+    let mut robot = w.make(config()).unwrap();
+    odometry(&w.device, 0.0, 0.0);
+    robot.run(&mut w.ctx());
+    let follow = ask("follow").with_attr("tag", "person");
+    let nobody = robot.answer(&follow, &mut w.ctx()).unwrap();
+    assert_eq!(nobody.error, FAILED);
+    assert!(nobody.body.text.contains("person"), "{:?}", nobody.body);
+
+    for (name, x) in [("person far", 9.0), ("person near", 3.0)] {
+        let mut person = Object3D::new(name);
+        person.tags = vec!["person".into()];
+        person.transform = glam::Affine3A::from_translation(Vec3::new(x, 0.0, 0.0));
+        w.scene.add(person);
+    }
+    let reply = robot.answer(&follow, &mut w.ctx()).unwrap();
+    assert!(reply.is_done());
+    assert_eq!(reply.body.attr("name"), Some("person near"));
+}
