@@ -10,6 +10,7 @@ pub mod ground;
 pub mod image;
 pub mod laser;
 pub mod map;
+pub mod people;
 pub mod position2d;
 pub mod power;
 pub mod ranger;
@@ -52,6 +53,11 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_laser",
         laser::LaserPlugin::METADATA,
         laser::LaserPlugin::create,
+    );
+    registry.register(
+        "libpv3d_people",
+        people::PeoplePlugin::METADATA,
+        people::PeoplePlugin::create,
     );
     registry.register(
         "libpv3d_position2d",
