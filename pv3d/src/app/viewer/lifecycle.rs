@@ -13,8 +13,9 @@ use crate::composition::{PluginInstance, config_from_instance};
 impl Viewer {
     /// Makes and adds a plugin for each instance; an id already in use gets a suffix. A
     /// plugin that fails is reported in [`Viewer::errors`] and the others carry on.
-    pub fn add_plugins(&mut self, instances: Vec<PluginInstance>, devices: DeviceLookup<'_>) {
+    pub fn add_plugins(&mut self, mut instances: Vec<PluginInstance>, devices: DeviceLookup<'_>) {
         let first_error = self.errors.len();
+        self.take_reactions(&mut instances);
         for mut instance in instances {
             self.make_id_unique(&mut instance);
             let config = config_from_instance(&instance);
@@ -78,6 +79,7 @@ impl Viewer {
             }
             plugin.run(&mut ctx);
         }
+        self.react();
     }
 
     /// Cleans plugin `index` and takes it out. The active handler keeps pointing at the plugin

@@ -23,7 +23,7 @@ impl Viewer {
         result
     }
 
-    fn route_query(&mut self, query: &Query) -> Result<Reply, QueryError> {
+    pub(super) fn route_query(&mut self, query: &Query) -> Result<Reply, QueryError> {
         if query.to.matches(WORLD, WORLD)
             && let Some(reply) = answer_world(query, &self.scene)
             && (reply.is_done() || query.to != framework::query::Target::Everyone)
