@@ -117,3 +117,37 @@ fn a_robot_follows_the_nearest_object_with_a_tag() {
     assert!(reply.is_done());
     assert_eq!(reply.body.attr("name"), Some("person near"));
 }
+
+#[test]
+fn a_robots_condition_is_on_its_node_as_tags() {
+    let mut w = harness();
+    let mut robot = w.make(config()).unwrap();
+    let tags = |w: &support::Harness, robot: &dyn framework::Plugin| {
+        w.scene.get(robot.node().unwrap()).unwrap().tags.clone()
+    };
+    let addr: DevAddr = "position2d:0".parse().unwrap();
+    let stalled = Position2dData {
+        stall: 1,
+        ..Position2dData::default()
+    };
+    w.device.push(Message::typed(
+        addr,
+        MsgType::Data,
+        Position2d::State(stalled),
+    ));
+    robot.run(&mut w.ctx());
+    assert!(tags(&w, robot.as_ref()).contains(&"stalled".to_string()));
+    let reply = robot.answer(&ask("where are you"), &mut w.ctx()).unwrap();
+    assert_eq!(reply.body.attr("stalled"), Some("true"));
+
+    odometry(&w.device, 0.0, 0.0);
+    robot.run(&mut w.ctx());
+    assert!(!tags(&w, robot.as_ref()).contains(&"stalled".to_string()));
+    assert!(!tags(&w, robot.as_ref()).contains(&"stale".to_string()));
+    w.now += plugins::position2d::STALE_AFTER * 2;
+    robot.run(&mut w.ctx());
+    assert!(
+        tags(&w, robot.as_ref()).contains(&"stale".to_string()),
+        "no data for a while"
+    );
+}

@@ -66,6 +66,11 @@ impl Plugin for Walker {
         self.x += 0.5;
         if let Some(o) = ctx.scene.get_mut(self.node) {
             o.transform = Affine3A::from_translation(Vec3::new(self.x, 0.0, 0.0));
+            // Tired from x = 0 until x = 1: a condition, as a robot's `stalled`.
+            o.tags.retain(|t| t != "tired");
+            if (0.0..1.0).contains(&self.x) {
+                o.tags.push("tired".into());
+            }
         }
     }
     fn clean(&mut self, ctx: &mut PluginContext<'_>) {
@@ -131,6 +136,8 @@ fn viewer() -> Viewer {
                    <say>Clear.</say>
                  </reaction>
                  <reaction on="appear" tag="person"><say>Hello.</say></reaction>
+                 <reaction on="tagged" tag="tired"><say>Tired.</say></reaction>
+                 <reaction on="untagged" tag="tired"><say>Rested.</say></reaction>
                </plugin>"#,
         ),
     ];
@@ -160,14 +167,23 @@ fn a_person_walking_into_a_zone_fires_its_reactions() {
         "{said_at:?}"
     );
     assert_eq!(
-        said.last().map(String::as_str),
-        Some("Clear."),
-        "{said_at:?}"
-    );
-    assert_eq!(
         said.iter().filter(|s| s.starts_with("Someone")).count(),
         1,
         "entered once: {said:?}"
+    );
+    let at = |s: &str| said.iter().position(|x| x == s);
+    assert!(
+        at("Clear.") > at("Someone is in the keep-out area."),
+        "{said:?}"
+    );
+    assert!(
+        at("Tired.").is_some() && at("Tired.") < at("Rested."),
+        "{said:?}"
+    );
+    assert_eq!(
+        said.iter().filter(|s| *s == "Tired.").count(),
+        1,
+        "{said:?}"
     );
     assert_eq!(asked(), ["stop"], "the reaction's query reached robot1");
     assert_eq!(

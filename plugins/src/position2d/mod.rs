@@ -16,6 +16,7 @@
 mod actions;
 mod answers;
 mod body;
+mod condition;
 mod driving;
 mod goal;
 mod teleop;
@@ -28,6 +29,7 @@ use glam::{Vec2, Vec3};
 use player_proto::interfaces::position2d::{Position2d, Position2dData, Position2dGeometry};
 
 pub use body::body_geometry;
+pub use condition::{LINK_DOWN, STALE, STALE_AFTER, STALLED};
 pub use goal::{DriveMode, Goal, stand_off};
 pub use teleop::{ARRIVED, Limits, joystick_velocity, steer_towards, wrap_angle};
 pub use widgets::joystick_id;
@@ -55,6 +57,8 @@ pub struct Position2dPlugin {
     pose: (f32, f32, f32),
     velocity: (f32, f32),
     stalled: bool,
+    /// When the last odometry arrived (data older than `condition::STALE_AFTER` is stale).
+    last_data: Option<Instant>,
     trail: Trail,
     limits: Limits,
     active: bool,
@@ -142,6 +146,7 @@ impl Position2dPlugin {
             pose: (0.0, 0.0, 0.0),
             velocity: (0.0, 0.0),
             stalled: false,
+            last_data: None,
             trail: Trail::new(trail_length),
             limits,
             active: false,
@@ -200,9 +205,10 @@ impl Position2dPlugin {
     }
 
     fn take_state(&mut self, ctx: &mut PluginContext<'_>) {
-        let Some((state, _)) = self.state_taken.newest_of::<Position2dData>(ctx.device) else {
+        let Some((state, sample)) = self.state_taken.newest_of::<Position2dData>(ctx.device) else {
             return;
         };
+        self.last_data = Some(sample.received);
         self.pose = (
             state.pos.px as f32,
             state.pos.py as f32,
@@ -239,6 +245,7 @@ impl Plugin for Position2dPlugin {
     fn run(&mut self, ctx: &mut PluginContext<'_>) {
         self.take_geometry(ctx);
         self.take_state(ctx);
+        self.tag_condition(ctx);
         self.teleoperate(ctx);
     }
 

@@ -12,7 +12,9 @@
 //!
 //! `on` is `appear` or `leave` (an object with one of the `tag`s comes into or goes out of
 //! the scene) or `enter` or `exit` (it goes into or out of the named `zone`, or any zone
-//! without one). `tag` lists tags separated by `|`. The actions run in order: a `<query>`
+//! without one), or `tagged` or `untagged` (it gains or loses one of the `tag`s: device
+//! awareness, as a robot is tagged `stalled`, `stale` or `link down`). `tag` lists tags
+//! separated by `|`. The actions run in order: a `<query>`
 //! (as in [`framework::query`]), a sentence to `<say>`, a `<plugin>` to `<load>`.
 
 use framework::query::{Query, XmlElement};
@@ -31,14 +33,21 @@ pub enum Trigger {
     Leave,
     Enter,
     Exit,
+    /// An object carries one of the tags it did not carry at the last look (new objects
+    /// included): a robot's `stalled`, `stale`, `link down`.
+    Tagged,
+    /// An object still in the scene no longer carries one of the tags.
+    Untagged,
 }
 
 impl Trigger {
-    const ALL: [(&str, Trigger); 4] = [
+    const ALL: [(&str, Trigger); 6] = [
         ("appear", Trigger::Appear),
         ("leave", Trigger::Leave),
         ("enter", Trigger::Enter),
         ("exit", Trigger::Exit),
+        ("tagged", Trigger::Tagged),
+        ("untagged", Trigger::Untagged),
     ];
 
     pub fn name(self) -> &'static str {
@@ -94,7 +103,7 @@ pub fn parse_reaction(element: &Element) -> Result<Reaction, ConfigError> {
     let on_text = element.attr("on").ok_or_else(|| {
         at(
             element,
-            "<reaction> needs on=\"appear|leave|enter|exit\"".into(),
+            "<reaction> needs on=\"appear|leave|enter|exit|tagged|untagged\"".into(),
         )
     })?;
     let on = Trigger::ALL
@@ -104,7 +113,7 @@ pub fn parse_reaction(element: &Element) -> Result<Reaction, ConfigError> {
         .ok_or_else(|| {
             at(
                 element,
-                format!("<reaction on={on_text:?}>: expected appear, leave, enter or exit"),
+                format!("<reaction on={on_text:?}>: expected appear, leave, enter, exit, tagged or untagged"),
             )
         })?;
     let tags = element

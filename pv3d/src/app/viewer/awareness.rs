@@ -34,11 +34,14 @@ pub struct Watcher {
     inside: BTreeSet<(NodeId, String)>,
 }
 
-/// The objects carrying any of `tags`, by node.
-pub fn tagged(scene: &Scene, tags: &BTreeSet<String>) -> BTreeMap<NodeId, Seen> {
+/// The objects carrying any of `tags`, and those `watcher` watched that are still in the
+/// scene (so that losing a tag is seen as that, not as leaving), by node.
+pub fn tagged(scene: &Scene, tags: &BTreeSet<String>, watcher: &Watcher) -> BTreeMap<NodeId, Seen> {
     scene
         .iter()
-        .filter(|(_, o)| o.tags.iter().any(|t| tags.contains(t)))
+        .filter(|(id, o)| {
+            o.tags.iter().any(|t| tags.contains(t)) || watcher.objects.contains_key(id)
+        })
         .map(|(id, o)| {
             let seen = Seen {
                 name: o.name.clone(),
@@ -66,9 +69,28 @@ impl Watcher {
             zone: zone.cloned(),
         };
         let mut events = Vec::new();
+        let changed = |trigger, seen: &Seen, tags: Vec<String>| AwarenessEvent {
+            trigger,
+            object: seen.name.clone(),
+            tags,
+            zone: None,
+        };
         for (id, seen) in &now {
-            if !self.objects.contains_key(id) {
-                events.push(event(Trigger::Appear, seen, None));
+            match self.objects.get(id) {
+                None => {
+                    events.push(event(Trigger::Appear, seen, None));
+                    events.push(changed(Trigger::Tagged, seen, seen.tags.clone()));
+                }
+                Some(before) => {
+                    let gained = difference(&seen.tags, &before.tags);
+                    let lost = difference(&before.tags, &seen.tags);
+                    if !gained.is_empty() {
+                        events.push(changed(Trigger::Tagged, seen, gained));
+                    }
+                    if !lost.is_empty() {
+                        events.push(changed(Trigger::Untagged, seen, lost));
+                    }
+                }
             }
         }
         for (node, zone) in inside.difference(&self.inside) {
@@ -90,4 +112,9 @@ impl Watcher {
         self.inside = inside;
         events
     }
+}
+
+/// The tags in `a` that are not in `b`.
+fn difference(a: &[String], b: &[String]) -> Vec<String> {
+    a.iter().filter(|t| !b.contains(t)).cloned().collect()
 }

@@ -74,7 +74,7 @@ impl Viewer {
         if self.reactions.reactions.is_empty() {
             return;
         }
-        let now = tagged(&self.scene, &self.reactions.tags());
+        let now = tagged(&self.scene, &self.reactions.tags(), &self.reactions.watcher);
         let wants_zones = self.reactions.reactions.iter().any(|r| r.on.is_zone());
         let mut inside = BTreeSet::new();
         if wants_zones {
