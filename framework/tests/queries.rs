@@ -188,3 +188,26 @@ fn the_world_answers_whether_there_is_any_tagged_object() {
     assert_eq!(no_tag.error, BAD_ARGUMENTS);
     assert!(answer_world(&Query::new(Target::Everyone, "stop"), &scene).is_none());
 }
+
+#[test]
+fn every_truncation_and_mangling_of_a_query_is_an_error_or_a_query_never_a_panic() {
+    let text = "<query to=\"robot1\" name=\"go to\">\n  <point x=\"1\" y=\"2\"/>\n  <note>a &amp; b</note>\n</query>";
+    let lines = text.lines().count();
+    for end in 0..text.len() {
+        if let Err(e) = Query::parse(&text[..end]) {
+            assert!(
+                e.line >= 1 && e.line <= lines && e.column >= 1,
+                "{end}: {e}"
+            );
+        }
+    }
+    for (i, _) in text.char_indices() {
+        for replacement in ["<", ">", "&", "\"", "/", "é", ""] {
+            let mangled = format!("{}{replacement}{}", &text[..i], &text[i + 1..]);
+            if let Err(e) = Query::parse(&mangled) {
+                assert!(e.line >= 1 && e.column >= 1, "{mangled:?}: {e}");
+            }
+            let _ = Reply::parse(&mangled);
+        }
+    }
+}
