@@ -151,3 +151,47 @@ fn a_robots_condition_is_on_its_node_as_tags() {
         "no data for a while"
     );
 }
+
+#[test]
+fn a_robot_asks_about_its_goal_and_gives_up_one_in_keep_out() {
+    use framework::query::Reply;
+    let mut w = harness();
+    let mut robot = w.make(config()).unwrap();
+    odometry(&w.device, 0.0, 0.0);
+    robot.run(&mut w.ctx());
+    let go = |x: i32| {
+        ask("go to").with_child(XmlElement::new("point").with_attr("x", x).with_attr("y", 0))
+    };
+    let mut outbox = Vec::new();
+    robot
+        .answer(&go(3), &mut w.ctx().with_outbox(&mut outbox))
+        .unwrap();
+    let names: Vec<&str> = outbox.iter().map(|q| q.name.as_str()).collect();
+    assert_eq!(names, ["is point free", "which zone"]);
+    assert_eq!(outbox[1].point(), Ok((3.0, 0.0)));
+
+    let free = Reply::done(XmlElement::new("cell").with_attr("state", "free"));
+    robot.on_reply(&outbox[0], &Ok(free), &mut w.ctx());
+    let nowhere = Reply::done(XmlElement::new("zones"));
+    robot.on_reply(&outbox[1], &Ok(nowhere), &mut w.ctx());
+    let here = robot.answer(&ask("where are you"), &mut w.ctx()).unwrap();
+    assert!(
+        here.body.child("goal").is_some(),
+        "a free point: still going"
+    );
+
+    let keep_out = Reply::done(
+        XmlElement::new("zones").with_child(XmlElement::new("zone").with_attr("name", "keep out")),
+    );
+    robot.on_reply(&outbox[1], &Ok(keep_out), &mut w.ctx());
+    let here = robot.answer(&ask("where are you"), &mut w.ctx()).unwrap();
+    assert!(here.body.child("goal").is_none(), "given up: {here:?}");
+    assert_eq!(last_velocity(&w.device), Some((0.0, 0.0)));
+
+    // A late answer about an old goal changes nothing.
+    robot.answer(&go(5), &mut w.ctx()).unwrap();
+    let wall = Reply::done(XmlElement::new("cell").with_attr("state", "occupied"));
+    robot.on_reply(&outbox[0], &Ok(wall), &mut w.ctx());
+    let here = robot.answer(&ask("where are you"), &mut w.ctx()).unwrap();
+    assert_eq!(here.body.child("goal").unwrap().number("x"), Ok(5.0));
+}

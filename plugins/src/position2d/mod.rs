@@ -11,7 +11,8 @@
 //! in place of the box, fitted to the robot's size; see [`framework::skin`]).
 //!
 //! Queries it answers (`answers.rs`): "go to" `<point x y/>`, "follow" `tag="person"`,
-//! "stop", "where are you".
+//! "stop", "where are you". Before driving to a point it asks the map and the zones about it
+//! (`goal_check.rs`; `avoidZones`, "keep out" by default).
 
 mod actions;
 mod answers;
@@ -19,6 +20,7 @@ mod body;
 mod condition;
 mod driving;
 mod goal;
+mod goal_check;
 mod teleop;
 mod trail;
 mod widgets;
@@ -38,6 +40,7 @@ use framework::action::{Action, ObjectRef};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, ConnectionState, LastTaken};
 use framework::plugin::{AnchorKey, Handled, InputEvent, Metadata, Plugin, PluginContext, Service};
+use framework::query::{Query, QueryError, Reply};
 use framework::scene::pose::transform_of_2d;
 use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 use framework::skin::Skin;
@@ -57,6 +60,10 @@ pub struct Position2dPlugin {
     pose: (f32, f32, f32),
     velocity: (f32, f32),
     stalled: bool,
+    /// Zones this robot will not be sent into (`avoidZones`).
+    avoid_zones: Vec<String>,
+    /// Why the last goal was given up, for the panel.
+    refused: Option<String>,
     /// When the last odometry arrived (data older than `condition::STALE_AFTER` is stale).
     last_data: Option<Instant>,
     trail: Trail,
@@ -107,6 +114,14 @@ impl Position2dPlugin {
             })?,
         };
         let follow_distance = config.number("followDistance", 0.8, 0.0..=50.0)? as f32;
+        let avoid_zones = config
+            .param("avoidZones")
+            .map_or(goal_check::DEFAULT_AVOID_ZONES, |p| p.text.as_str())
+            .split('|')
+            .map(str::trim)
+            .filter(|z| !z.is_empty())
+            .map(str::to_string)
+            .collect();
         let size = Vec3::new(0.44, 0.38, 0.22);
         let mut object = Object3D::new(config.id.clone());
         object
@@ -147,6 +162,8 @@ impl Position2dPlugin {
             velocity: (0.0, 0.0),
             stalled: false,
             last_data: None,
+            avoid_zones,
+            refused: None,
             trail: Trail::new(trail_length),
             limits,
             active: false,
@@ -260,6 +277,9 @@ impl Plugin for Position2dPlugin {
         if self.stalled {
             ui.colored_label(egui::Color32::from_rgb(230, 90, 80), "STALLED");
         }
+        if let Some(why) = &self.refused {
+            ui.small(format!("last goal given up: {why}"));
+        }
         if let Some(device) = ctx.device {
             let state = device.link_state();
             if state != ConnectionState::Connected {
@@ -361,12 +381,12 @@ impl Plugin for Position2dPlugin {
         }
     }
 
-    fn answer(
-        &mut self,
-        query: &framework::query::Query,
-        ctx: &mut PluginContext<'_>,
-    ) -> Option<framework::query::Reply> {
+    fn answer(&mut self, query: &Query, ctx: &mut PluginContext<'_>) -> Option<Reply> {
         self.answer_query(query, ctx)
+    }
+
+    fn on_reply(&mut self, q: &Query, r: &Result<Reply, QueryError>, ctx: &mut PluginContext<'_>) {
+        self.goal_checked(q, r, ctx);
     }
 
     fn can_be_active(&self) -> bool {

@@ -71,14 +71,19 @@ impl Viewer {
     /// [`Viewer::ui`]: that is what makes "initialized after the window and GL exist" hold.
     pub fn update(&mut self, now: Instant) {
         self.follow_servers();
+        let mut sent = Vec::new();
         for i in 0..self.slots.len() {
             let first_run = !std::mem::replace(&mut self.slots[i].initialized, true);
-            let (plugin, mut ctx) = self.plugin_in_context(i, now);
+            let mut outbox = Vec::new();
+            let (plugin, ctx) = self.plugin_in_context(i, now);
+            let mut ctx = ctx.with_outbox(&mut outbox);
             if first_run {
                 plugin.initialize(&mut ctx);
             }
             plugin.run(&mut ctx);
+            sent.extend(outbox.into_iter().map(|query| (i, query)));
         }
+        self.deliver(sent, now);
         self.react();
     }
 

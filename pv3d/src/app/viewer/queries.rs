@@ -23,6 +23,18 @@ impl Viewer {
         result
     }
 
+    /// Routes the queries plugins sent during this update and hands each sender its reply.
+    pub(super) fn deliver(&mut self, sent: Vec<(usize, Query)>, now: Instant) {
+        for (sender, query) in sent {
+            let result = self.route_query(&query);
+            if let Err(e) = &result {
+                tracing::debug!("{e}");
+            }
+            let (plugin, mut ctx) = self.plugin_in_context(sender, now);
+            plugin.on_reply(&query, &result, &mut ctx);
+        }
+    }
+
     pub(super) fn route_query(&mut self, query: &Query) -> Result<Reply, QueryError> {
         if query.to.matches(WORLD, WORLD)
             && let Some(reply) = answer_world(query, &self.scene)
