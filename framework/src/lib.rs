@@ -10,6 +10,8 @@
 //!   here: a plugin describes geometry, `pv3d` renders it).
 //! * [`config`] — plugin parameters with defaults and errors that say where.
 //! * [`device`] — what a plugin sees of its Player device.
+//! * [`query`] — components asking one another in XML ("go to", "which zone"), and
+//!   the world's own answers ("is there any person").
 //! * [`action`] — what a robot can do with a clicked object (go to, follow).
 //! * [`parent_link`] — hanging a sensor below its robot's node.
 //! * [`skin`] — shared OBJ meshes that replace a robot's box.
@@ -20,6 +22,7 @@ pub mod config;
 pub mod device;
 pub mod parent_link;
 pub mod plugin;
+pub mod query;
 pub mod registry;
 pub mod scene;
 pub mod skin;

@@ -9,6 +9,7 @@ use glam::Vec3;
 pub use crate::action::{Action, ObjectRef};
 use crate::config::PluginConfig;
 use crate::device::DeviceAccess;
+use crate::query::{Query, QueryError, Reply};
 pub use crate::registry::{Component, Constructor, Metadata, PluginRegistry};
 use crate::scene::{NodeId, Scene};
 
@@ -47,6 +48,9 @@ pub struct PluginContext<'a> {
     pub device: Option<&'a dyn DeviceAccess>,
     pub anchors: &'a mut Anchors,
     pub now: Instant,
+    /// Queries this plugin sends ([`PluginContext::send`]); `None` where nobody routes them
+    /// (a test harness, a constructor run alone).
+    pub outbox: Option<&'a mut Vec<Query>>,
 }
 
 impl<'a> PluginContext<'a> {
@@ -59,6 +63,28 @@ impl<'a> PluginContext<'a> {
             device: None,
             anchors,
             now,
+            outbox: None,
+        }
+    }
+
+    /// The same context whose sent queries go into `outbox` (the viewer routes them after
+    /// the call and hands each reply to [`Plugin::on_reply`]).
+    pub fn with_outbox(self, outbox: &'a mut Vec<Query>) -> Self {
+        PluginContext {
+            outbox: Some(outbox),
+            ..self
+        }
+    }
+
+    /// Sends a query to other components; the reply comes later through
+    /// [`Plugin::on_reply`]. Returns false where nobody routes queries (the query is dropped).
+    pub fn send(&mut self, query: Query) -> bool {
+        match self.outbox.as_deref_mut() {
+            Some(outbox) => {
+                outbox.push(query);
+                true
+            }
+            None => false,
         }
     }
 
@@ -178,6 +204,24 @@ pub trait Plugin: Send {
 
     /// Runs one of the [`Plugin::actions_on`] actions the person chose for `target`.
     fn run_action(&mut self, _action: &str, _target: &ObjectRef, _ctx: &mut PluginContext<'_>) {}
+
+    /// Answers a query addressed to this plugin (by its id or library name): `None` when it
+    /// is not one this plugin knows, so the viewer passes it on to the next addressee; a
+    /// reply with error 0 when done; an error (< 0) saying what was wrong. See
+    /// [`crate::query`].
+    fn answer(&mut self, _query: &Query, _ctx: &mut PluginContext<'_>) -> Option<Reply> {
+        None
+    }
+
+    /// The outcome of a query this plugin sent with [`PluginContext::send`]: the reply with
+    /// error 0, or why there was none.
+    fn on_reply(
+        &mut self,
+        _query: &Query,
+        _result: &Result<Reply, QueryError>,
+        _ctx: &mut PluginContext<'_>,
+    ) {
+    }
 
     /// Controls drawn over the 3D view while this plugin is the active event handler (a
     /// robot's joystick), so they work without opening its item-tree entry.

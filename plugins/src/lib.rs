@@ -17,6 +17,7 @@ pub mod ir;
 pub mod laser;
 pub mod localize;
 pub mod map;
+pub mod people;
 pub mod planner;
 pub mod pointcloud3d;
 pub mod position2d;
@@ -62,6 +63,11 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_laser",
         laser::LaserPlugin::METADATA,
         laser::LaserPlugin::create,
+    );
+    registry.register(
+        "libpv3d_people",
+        people::PeoplePlugin::METADATA,
+        people::PeoplePlugin::create,
     );
     registry.register(
         "libpv3d_position2d",

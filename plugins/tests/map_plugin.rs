@@ -215,3 +215,34 @@ fn a_bad_filter_is_a_configuration_error() {
     // A body that is not a map structure is not mistaken for one.
     assert!(Map::REQ_GET_DATA.body_of(&Body::Empty).is_none());
 }
+
+#[test]
+fn the_map_answers_whether_a_point_is_free() {
+    use framework::query::{BAD_ARGUMENTS, FAILED, Query, Target};
+    let mut h = harness();
+    answering_info(&h, info(50, 40));
+    let mut plugin = h.make(config(vec![])).unwrap();
+    let ask = |x: f32, y: f32| {
+        Query::new(Target::Named("map".into()), "is point free")
+            .with_attr("x", x)
+            .with_attr("y", y)
+    };
+    let early = plugin.answer(&ask(0.0, 0.0), &mut h.ctx()).unwrap();
+    assert_eq!(early.error, FAILED, "no grid yet");
+    load(&mut h, &mut plugin, None);
+    let state = |h: &mut Harness, plugin: &mut Box<dyn Plugin>, x, y| {
+        let reply = plugin.answer(&ask(x, y), &mut h.ctx()).unwrap();
+        assert!(reply.is_done(), "{reply:?}");
+        reply.body.attr("state").unwrap().to_string()
+    };
+    // Column 7 is the wall, rows 0 and 1 unknown, at 0.1 m from (-5, -3).
+    assert_eq!(state(&mut h, &mut plugin, -4.25, -2.0), "occupied");
+    assert_eq!(state(&mut h, &mut plugin, -4.0, -2.0), "free");
+    assert_eq!(state(&mut h, &mut plugin, -4.0, -2.95), "unknown");
+    assert_eq!(state(&mut h, &mut plugin, 10.0, 0.0), "outside");
+    let half = Query::new(Target::Named("map".into()), "is point free").with_attr("x", 1);
+    assert_eq!(
+        plugin.answer(&half, &mut h.ctx()).unwrap().error,
+        BAD_ARGUMENTS
+    );
+}

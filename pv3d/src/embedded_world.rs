@@ -45,7 +45,15 @@ pub fn serve_world(
     }
     let floorplan = world.floorplan.clone();
     let blocks = (world.floor_blocks.clone(), world.floor_height);
-    let obstacles: Vec<Obstacle> = world.obstacles.iter().flat_map(obstacle_walls).collect();
+    // People's legs move: drawn once, where they stood at the start, they would mislead.
+    let legs: Vec<usize> = world.people.iter().flat_map(|p| p.legs).collect();
+    let obstacles: Vec<Obstacle> = world
+        .obstacles
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| !legs.contains(i))
+        .flat_map(|(_, o)| obstacle_walls(o))
+        .collect();
     let options = ServeOptions {
         free_ports: true,
         ..options

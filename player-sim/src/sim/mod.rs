@@ -10,6 +10,7 @@ mod nearby;
 mod noise;
 mod sensors;
 mod shapes;
+mod walking;
 mod wander;
 
 pub use blobfinder::{Blob, blobs};
@@ -22,6 +23,7 @@ pub use sensors::{
     FiducialHit, RangerReturns, body_at, fiducials, on_robot, ranger_returns, ranger_scan,
     ranger_scan_exhaustive,
 };
+pub use walking::WalkerState;
 pub use wander::WanderState;
 
 use crate::nav::Navigation;
@@ -65,6 +67,8 @@ pub struct Simulation {
     pub carried_by: Vec<Option<(usize, usize)>>,
     /// The navigation drivers (localizers, planners) the served `.cfg` files run.
     pub nav: Navigation,
+    /// One per `world.people`: where each walking person is.
+    pub walkers: Vec<WalkerState>,
 }
 
 const STOP: Command = Command::Velocity {
@@ -88,7 +92,12 @@ impl Simulation {
             })
             .collect();
         let carried_by = vec![None; world.obstacles.len()];
-        Simulation {
+        let walkers = world
+            .people
+            .iter()
+            .map(|p| WalkerState::at(p.start))
+            .collect();
+        let mut sim = Simulation {
             world,
             robots,
             time: 0.0,
@@ -96,7 +105,12 @@ impl Simulation {
             noise: Noise::default(),
             carried_by,
             nav: Navigation::default(),
+            walkers,
+        };
+        for i in 0..sim.walkers.len() {
+            sim.place_legs(i);
         }
+        sim
     }
 
     /// Does robot `robot` hold obstacle `obstacle` (so that it neither bumps into nor sees it)?
@@ -179,6 +193,7 @@ impl Simulation {
             }
         }
         self.steer_planners();
+        self.walk_people();
         for i in 0..self.robots.len() {
             let (vx, vy, va) = self.velocity_for(i);
             let vy = if self.world.robots[i].drive == Drive::Omni {

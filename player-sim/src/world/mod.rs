@@ -12,6 +12,7 @@ mod controller;
 mod floorplan;
 mod gripper;
 mod models;
+mod person;
 mod properties;
 mod raster;
 mod robot;
@@ -24,6 +25,7 @@ pub use blocks::{Polygon, placed};
 pub use controller::Controller;
 pub use gripper::GripperSpec;
 pub use models::{Model, Types, read_with_includes};
+pub use person::{PersonSpec, STANCE_WIDTH, Walk};
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
 use properties::{
@@ -175,6 +177,8 @@ pub struct World {
     pub floor_ranger_return: f64,
     pub robots: Vec<RobotSpec>,
     pub obstacles: Vec<BoxObstacle>,
+    /// Walking people (`person`); their legs are among `obstacles`.
+    pub people: Vec<PersonSpec>,
     /// "ignored: <what> at file:line", once each.
     pub ignored: Vec<String>,
     /// Floorplan polygons read but not drawn yet (while loading: the grid they go into is
@@ -325,6 +329,7 @@ impl World {
                 let robot = self.robot(model)?;
                 self.robots.push(robot);
             }
+            "person" => self.person(model)?,
             "model" if model.get("bitmap").is_some() => {
                 self.floorplan(model, base)?;
             }

@@ -18,6 +18,8 @@ pub const BUILTIN: &[&str] = &[
     "gripper",
     "actuator",
     "blinkenlight",
+    // player-sim's own: a walking person (see `person.rs`).
+    "person",
 ];
 
 /// Parts of a model that are not models themselves; `define`s may build on them too (Stage's

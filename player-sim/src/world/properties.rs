@@ -35,6 +35,10 @@ pub(super) const READ: &[&str] = &[
     "paddle_size",
     "paddle_state",
     "autosnatch",
+    "path",
+    "wander",
+    "speed",
+    "leg_size",
 ];
 
 pub(super) fn err(pos: &Pos, message: impl Into<String>) -> WorldFileError {

@@ -166,6 +166,22 @@ impl OccupancyGrid {
         )
     }
 
+    /// The grey of the cell under world point (x, y), or `None` outside the map: the map's
+    /// origin is cell (0, 0)'s corner, turned by its heading.
+    pub fn grey_at(&self, x: f32, y: f32) -> Option<u8> {
+        let origin = &self.info.origin;
+        let (dx, dy) = (x - origin.px as f32, y - origin.py as f32);
+        let (sin, cos) = (-origin.pa as f32).sin_cos();
+        let (u, v) = (dx * cos - dy * sin, dx * sin + dy * cos);
+        let (col, row) = ((u / self.info.scale).floor(), (v / self.info.scale).floor());
+        let inside = |c: f32, limit: u32| c >= 0.0 && c < limit as f32;
+        if !inside(col, self.info.width) || !inside(row, self.info.height) {
+            return None;
+        }
+        let index = row as usize * self.info.width as usize + col as usize;
+        self.greys.get(index).copied()
+    }
+
     /// The map's extent on the ground, m.
     pub fn size_m(&self) -> (f32, f32) {
         (

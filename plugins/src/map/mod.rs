@@ -15,6 +15,7 @@
 //! `dilate` and `erode` speak of the obstacles: occupied cells are dark, so growing them is
 //! a grey-level erosion, which is what the plugin asks the renderer for.
 
+mod answers;
 pub mod fetch;
 pub mod grid;
 
@@ -199,6 +200,14 @@ impl Plugin for MapPlugin {
         if name == RELOAD.name {
             self.fetch = MapFetch::start(ctx.device);
         }
+    }
+
+    fn answer(
+        &mut self,
+        query: &framework::query::Query,
+        _ctx: &mut PluginContext<'_>,
+    ) -> Option<framework::query::Reply> {
+        self.answer_query(query)
     }
 
     fn node(&self) -> Option<NodeId> {

@@ -80,7 +80,9 @@ impl Position2dPlugin {
         self.joystick = None;
         self.dragging = None;
         self.sent_waypoint = None;
+        self.refused = None;
         self.redraw_trail(ctx.scene);
+        self.check_goal(ctx);
     }
 
     /// One step of tele-operation.

@@ -9,11 +9,18 @@
 //! `color` (#3c8cdc), `mode` (`velocity` or `position`; velocity), `followDistance` (0.8 m:
 //! how far short of an object "Go to" and "Follow" stop), `skinFile` (an OBJ model drawn
 //! in place of the box, fitted to the robot's size; see [`framework::skin`]).
+//!
+//! Queries it answers (`answers.rs`): "go to" `<point x y/>`, "follow" `tag="person"`,
+//! "stop", "where are you". Before driving to a point it asks the map and the zones about it
+//! (`goal_check.rs`; `avoidZones`, "keep out" by default).
 
 mod actions;
+mod answers;
 mod body;
+mod condition;
 mod driving;
 mod goal;
+mod goal_check;
 mod teleop;
 mod trail;
 mod widgets;
@@ -24,6 +31,7 @@ use glam::{Vec2, Vec3};
 use player_proto::interfaces::position2d::{Position2d, Position2dData, Position2dGeometry};
 
 pub use body::body_geometry;
+pub use condition::{LINK_DOWN, STALE, STALE_AFTER, STALLED};
 pub use goal::{DriveMode, Goal, stand_off};
 pub use teleop::{ARRIVED, Limits, joystick_velocity, steer_towards, wrap_angle};
 pub use widgets::joystick_id;
@@ -32,6 +40,7 @@ use framework::action::{Action, ObjectRef};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, ConnectionState, LastTaken};
 use framework::plugin::{AnchorKey, Handled, InputEvent, Metadata, Plugin, PluginContext, Service};
+use framework::query::{Query, QueryError, Reply};
 use framework::scene::pose::transform_of_2d;
 use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 use framework::skin::Skin;
@@ -51,6 +60,12 @@ pub struct Position2dPlugin {
     pose: (f32, f32, f32),
     velocity: (f32, f32),
     stalled: bool,
+    /// Zones this robot will not be sent into (`avoidZones`).
+    avoid_zones: Vec<String>,
+    /// Why the last goal was given up, for the panel.
+    refused: Option<String>,
+    /// When the last odometry arrived (data older than `condition::STALE_AFTER` is stale).
+    last_data: Option<Instant>,
     trail: Trail,
     limits: Limits,
     active: bool,
@@ -99,6 +114,14 @@ impl Position2dPlugin {
             })?,
         };
         let follow_distance = config.number("followDistance", 0.8, 0.0..=50.0)? as f32;
+        let avoid_zones = config
+            .param("avoidZones")
+            .map_or(goal_check::DEFAULT_AVOID_ZONES, |p| p.text.as_str())
+            .split('|')
+            .map(str::trim)
+            .filter(|z| !z.is_empty())
+            .map(str::to_string)
+            .collect();
         let size = Vec3::new(0.44, 0.38, 0.22);
         let mut object = Object3D::new(config.id.clone());
         object
@@ -138,6 +161,9 @@ impl Position2dPlugin {
             pose: (0.0, 0.0, 0.0),
             velocity: (0.0, 0.0),
             stalled: false,
+            last_data: None,
+            avoid_zones,
+            refused: None,
             trail: Trail::new(trail_length),
             limits,
             active: false,
@@ -196,9 +222,10 @@ impl Position2dPlugin {
     }
 
     fn take_state(&mut self, ctx: &mut PluginContext<'_>) {
-        let Some((state, _)) = self.state_taken.newest_of::<Position2dData>(ctx.device) else {
+        let Some((state, sample)) = self.state_taken.newest_of::<Position2dData>(ctx.device) else {
             return;
         };
+        self.last_data = Some(sample.received);
         self.pose = (
             state.pos.px as f32,
             state.pos.py as f32,
@@ -235,6 +262,7 @@ impl Plugin for Position2dPlugin {
     fn run(&mut self, ctx: &mut PluginContext<'_>) {
         self.take_geometry(ctx);
         self.take_state(ctx);
+        self.tag_condition(ctx);
         self.teleoperate(ctx);
     }
 
@@ -248,6 +276,9 @@ impl Plugin for Position2dPlugin {
         self.skin.ui(ui);
         if self.stalled {
             ui.colored_label(egui::Color32::from_rgb(230, 90, 80), "STALLED");
+        }
+        if let Some(why) = &self.refused {
+            ui.small(format!("last goal given up: {why}"));
         }
         if let Some(device) = ctx.device {
             let state = device.link_state();
@@ -348,6 +379,14 @@ impl Plugin for Position2dPlugin {
             }
             _ => Handled::No,
         }
+    }
+
+    fn answer(&mut self, query: &Query, ctx: &mut PluginContext<'_>) -> Option<Reply> {
+        self.answer_query(query, ctx)
+    }
+
+    fn on_reply(&mut self, q: &Query, r: &Result<Reply, QueryError>, ctx: &mut PluginContext<'_>) {
+        self.goal_checked(q, r, ctx);
     }
 
     fn can_be_active(&self) -> bool {

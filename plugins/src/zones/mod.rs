@@ -4,7 +4,9 @@
 //! `<zone name="dock" color="#40c0ff">x y  x y  x y …</zone>` (metres, world frame, three
 //! corners or more, convex or not). Each zone is a tagged object (`zone`, `zone:dock`); when a
 //! robot enters or leaves one, the plugin says so in its panel and in the log — the paper's
-//! awareness events.
+//! awareness events. It answers the query "which zone" (see `answers.rs`).
+
+mod answers;
 
 use std::collections::{HashSet, VecDeque};
 
@@ -12,6 +14,7 @@ use glam::{Vec2, Vec3};
 
 use framework::config::{ConfigValueError, Param, PluginConfig};
 use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::query::{Query, Reply};
 use framework::scene::{NodeId, Object3D, Rgba, Scene};
 
 use framework::scene::polygon::{contains, parse_corners, triangulate};
@@ -175,6 +178,10 @@ impl Plugin for ZonesPlugin {
             self.events.push_back(event);
         }
         self.inside = now_inside;
+    }
+
+    fn answer(&mut self, query: &Query, ctx: &mut PluginContext<'_>) -> Option<Reply> {
+        self.answer_query(query, ctx)
     }
 
     fn clean(&mut self, ctx: &mut PluginContext<'_>) {

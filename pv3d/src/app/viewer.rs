@@ -6,11 +6,14 @@
 //! from the robot, and let go) to send it there; click a tagged object (a fiducial marker) for
 //! the robot's popup of actions on it; right-click any object, robots included, for the same.
 
+mod awareness;
 mod device_presence;
 mod input_chain;
 mod item_tree;
 mod lifecycle;
 mod popups;
+mod queries;
+mod reactions;
 
 pub(crate) use device_presence::{GONE, GONE_COLOR};
 
@@ -67,6 +70,8 @@ pub struct Viewer {
     popup: Option<popups::Popup>,
     /// Where the pointer was at the last click in the view: popups open there.
     popup_at: egui::Pos2,
+    /// The composition's `<reaction>`s and what they have seen.
+    reactions: reactions::Reactions,
 }
 
 /// The composition a session came from and the file its state is saved to.
@@ -99,6 +104,7 @@ impl Viewer {
             save_message: None,
             popup: None,
             popup_at: egui::pos2(300.0, 200.0),
+            reactions: Default::default(),
         };
         viewer.add_plugins(instances, devices);
         viewer

@@ -19,6 +19,7 @@ mod model;
 mod parent_node;
 mod parsers;
 mod plugin_config;
+mod reaction;
 mod relocate;
 mod xml_tree;
 
@@ -32,4 +33,8 @@ pub use instantiate::{
 pub use model::{ClientDecl, Composition, DEFAULT_PORT, ExtensionElement, MaskHandler};
 pub use parsers::{ParserRegistry, extension_plugin};
 pub use plugin_config::{config_from_instance, write_back};
+pub use reaction::{
+    REACTIONS_LIBRARY, Reaction, ReactionAction, Trigger, parse_reaction, parse_reactions,
+    plain_element,
+};
 pub use xml_tree::{Attribute, Element, Node, parse_str};

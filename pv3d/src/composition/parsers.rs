@@ -6,7 +6,11 @@ use super::xml_tree::Element;
 
 /// The extension elements built into pv3d, and the plugin that all of a composition's
 /// elements of that name become (one plugin for all `<zone>`s).
-const BUILT_IN: &[(&str, &str)] = &[("zone", "libpv3d_zones")];
+const BUILT_IN: &[(&str, &str)] = &[
+    ("zone", "libpv3d_zones"),
+    // Not a plugin: the viewer runs the reactions gathered under this name.
+    ("reaction", super::reaction::REACTIONS_LIBRARY),
+];
 
 /// The plugin library an extension element becomes, if it becomes one.
 pub fn extension_plugin(element: &str) -> Option<&'static str> {
@@ -23,7 +27,8 @@ pub struct ParserRegistry {
 }
 
 impl ParserRegistry {
-    /// The extensions built into pv3d: `<zone>` (named ground zones and who is in them).
+    /// The extensions built into pv3d: `<zone>` (named ground zones and who is in them) and
+    /// `<reaction>` (what happens on an awareness event).
     pub fn standard() -> ParserRegistry {
         ParserRegistry {
             known: BUILT_IN.iter().map(|(name, _)| *name).collect(),

@@ -13,8 +13,9 @@ use crate::composition::{PluginInstance, config_from_instance};
 impl Viewer {
     /// Makes and adds a plugin for each instance; an id already in use gets a suffix. A
     /// plugin that fails is reported in [`Viewer::errors`] and the others carry on.
-    pub fn add_plugins(&mut self, instances: Vec<PluginInstance>, devices: DeviceLookup<'_>) {
+    pub fn add_plugins(&mut self, mut instances: Vec<PluginInstance>, devices: DeviceLookup<'_>) {
         let first_error = self.errors.len();
+        self.take_reactions(&mut instances);
         for mut instance in instances {
             self.make_id_unique(&mut instance);
             let config = config_from_instance(&instance);
@@ -70,14 +71,20 @@ impl Viewer {
     /// [`Viewer::ui`]: that is what makes "initialized after the window and GL exist" hold.
     pub fn update(&mut self, now: Instant) {
         self.follow_servers();
+        let mut sent = Vec::new();
         for i in 0..self.slots.len() {
             let first_run = !std::mem::replace(&mut self.slots[i].initialized, true);
-            let (plugin, mut ctx) = self.plugin_in_context(i, now);
+            let mut outbox = Vec::new();
+            let (plugin, ctx) = self.plugin_in_context(i, now);
+            let mut ctx = ctx.with_outbox(&mut outbox);
             if first_run {
                 plugin.initialize(&mut ctx);
             }
             plugin.run(&mut ctx);
+            sent.extend(outbox.into_iter().map(|query| (i, query)));
         }
+        self.deliver(sent, now);
+        self.react();
     }
 
     /// Cleans plugin `index` and takes it out. The active handler keeps pointing at the plugin
