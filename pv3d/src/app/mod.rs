@@ -2,6 +2,7 @@
 //! 3D view widget, and running the UI in a window. (Offscreen: [`crate::headless`].)
 
 pub mod builder;
+pub mod command_line;
 pub mod status_panel;
 pub mod timeline;
 pub mod view3d;

@@ -6,6 +6,7 @@
 //! from the robot, and let go) to send it there; click a tagged object (a fiducial marker) for
 //! the robot's popup of actions on it; right-click any object, robots included, for the same.
 
+mod commanding;
 mod device_presence;
 mod input_chain;
 mod item_tree;
@@ -67,6 +68,13 @@ pub struct Viewer {
     popup: Option<popups::Popup>,
     /// Where the pointer was at the last click in the view: popups open there.
     popup_at: egui::Pos2,
+    /// The grammar sentences are parsed with (the command line, `--script`, speech).
+    grammar: crate::commands::Grammar,
+    command_line: super::command_line::CommandLine,
+    /// The `--script` being run, if any.
+    script: Option<crate::commands::Script>,
+    /// Every sentence's reply or error, oldest first.
+    replies: Vec<Result<String, String>>,
 }
 
 /// The composition a session came from and the file its state is saved to.
@@ -99,6 +107,10 @@ impl Viewer {
             save_message: None,
             popup: None,
             popup_at: egui::pos2(300.0, 200.0),
+            grammar: crate::commands::Grammar::standard(),
+            command_line: Default::default(),
+            script: None,
+            replies: Vec::new(),
         };
         viewer.add_plugins(instances, devices);
         viewer
@@ -134,6 +146,12 @@ impl Viewer {
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| self.item_tree(ui));
             });
+        egui::Panel::bottom("command-line").show(ui, |ui| {
+            if let Some(sentence) = self.command_line.ui(ui) {
+                // The outcome is shown on the line itself.
+                let _ = self.command(&sentence);
+            }
+        });
         if let Some(robots) = self.robots.clone() {
             egui::Panel::bottom("robot-status")
                 .resizable(true)

@@ -70,6 +70,7 @@ impl Viewer {
     /// [`Viewer::ui`]: that is what makes "initialized after the window and GL exist" hold.
     pub fn update(&mut self, now: Instant) {
         self.follow_servers();
+        self.follow_script(now);
         for i in 0..self.slots.len() {
             let first_run = !std::mem::replace(&mut self.slots[i].initialized, true);
             let (plugin, mut ctx) = self.plugin_in_context(i, now);
