@@ -19,6 +19,11 @@ fn in_charging(pose: (f64, f64, f64)) -> bool {
 
 /// Writes a two-robot world, its cfg and a composition with the zone, in a folder of its own.
 fn commands_world(name: &str) -> (PathBuf, PathBuf) {
+    commands_world_with(name, "")
+}
+
+/// The same, with more .cfg lines (speech devices).
+fn commands_world_with(name: &str, cfg_lines: &str) -> (PathBuf, PathBuf) {
     let dir = std::env::temp_dir().join(format!("pv3d-{name}-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let robots_inc = repo_root().join("stage-worlds/robots.inc");
@@ -36,7 +41,9 @@ fn commands_world(name: &str) -> (PathBuf, PathBuf) {
         dir.join("commands.cfg"),
         "driver ( name \"stage\" provides [ \"6665:simulation:0\" ] plugin \"stageplugin\" worldfile \"commands.world\" )\n\
          driver ( name \"stage\" provides [ \"6665:position2d:0\" ] model \"r0\" )\n\
-         driver ( name \"stage\" provides [ \"6666:position2d:0\" ] model \"r1\" )\n",
+         driver ( name \"stage\" provides [ \"6666:position2d:0\" ] model \"r1\" )\n"
+            .to_string()
+            + cfg_lines,
     )
     .unwrap();
     let (x0, x1, y0, y1) = CHARGING;
@@ -67,7 +74,10 @@ fn commands_world(name: &str) -> (PathBuf, PathBuf) {
 /// The viewer against the served world, once both robots are drawn; and their names, r0's
 /// first (robot bodies are named by their plugin ids).
 fn ready(name: &str) -> (Viewer, Running, Vec<String>) {
-    let (world, composition_file) = commands_world(name);
+    ready_with(commands_world(name))
+}
+
+fn ready_with((world, composition_file): (PathBuf, PathBuf)) -> (Viewer, Running, Vec<String>) {
     let mut composition = load(&[composition_file.to_str().unwrap()]);
     let running = serve(world.to_str().unwrap(), &mut composition, 4.0);
     let mut viewer = tests::viewer_for(&composition);
@@ -186,4 +196,42 @@ fn a_bad_script_is_refused_naming_its_line() {
         .map(|l| (l.sentence.as_str(), l.line))
         .collect();
     assert_eq!(order, vec![("a stop", 2), ("b stop", 1)]);
+}
+
+#[test]
+fn sentences_heard_through_player_are_carried_out_and_the_replies_said() {
+    let files = commands_world_with(
+        "speech",
+        "driver ( name \"sentences\" provides [ \"6665:speech_recognition:0\" ] file \"heard.txt\" )\n\
+         driver ( name \"festival\" provides [ \"6665:speech:0\" ] log \"said.txt\" )\n",
+    );
+    let dir = files.0.parent().unwrap().to_path_buf();
+    let said = dir.join("said.txt");
+    let _ = std::fs::remove_file(&said);
+    // Simulated seconds: the viewer is connected well before.
+    std::fs::write(
+        dir.join("heard.txt"),
+        "3 all robots go to charging\n6 robot9 stop\n",
+    )
+    .unwrap();
+    let (mut viewer, running, _) = ready_with(files);
+    run_until(
+        &mut viewer,
+        "r0 in charging",
+        Duration::from_secs(30),
+        |_| in_charging(sim_pose(&running, 0)),
+    );
+    run_until(
+        &mut viewer,
+        "both replies said",
+        Duration::from_secs(20),
+        |_| std::fs::read_to_string(&said).is_ok_and(|t| t.lines().count() == 2),
+    );
+    let text = std::fs::read_to_string(&said).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "all robots: going to zone charging");
+    assert!(
+        lines[1].starts_with("robot9 stop: no robot named robot9"),
+        "{text}"
+    );
 }

@@ -12,6 +12,7 @@ mod input_chain;
 mod item_tree;
 mod lifecycle;
 mod popups;
+mod speech;
 
 pub(crate) use device_presence::{GONE, GONE_COLOR};
 
@@ -75,6 +76,8 @@ pub struct Viewer {
     script: Option<crate::commands::Script>,
     /// Every sentence's reply or error, oldest first.
     replies: Vec<Result<String, String>>,
+    /// The servers' speech_recognition and speech devices, once seen.
+    speech: speech::SpeechLinks,
 }
 
 /// The composition a session came from and the file its state is saved to.
@@ -111,6 +114,7 @@ impl Viewer {
             command_line: Default::default(),
             script: None,
             replies: Vec::new(),
+            speech: Default::default(),
         };
         viewer.add_plugins(instances, devices);
         viewer

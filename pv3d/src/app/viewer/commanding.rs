@@ -26,6 +26,10 @@ impl Viewer {
             Ok(reply) => tracing::info!("command {:?}: {reply}", sentence.trim()),
             Err(e) => tracing::warn!("command refused: {e}"),
         }
+        match &outcome {
+            Ok(reply) => self.say(reply),
+            Err(e) => self.say(e),
+        }
         self.command_line.show(outcome.clone());
         self.replies.push(outcome.clone());
         outcome
