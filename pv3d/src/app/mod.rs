@@ -11,5 +11,5 @@ pub mod window;
 
 pub use builder::{ViewerBuilder, ViewerParts};
 pub use view3d::{View3d, ViewInput};
-pub use viewer::Viewer;
+pub use viewer::{EditError, Viewer};
 pub use window::{RedrawPolicy, ScreenshotRequest, UiWaker, WindowOptions, run_window};

@@ -8,6 +8,8 @@
 
 mod commanding;
 mod device_presence;
+mod editor;
+mod editor_ui;
 mod input_chain;
 mod item_tree;
 mod lifecycle;
@@ -15,6 +17,7 @@ mod popups;
 mod speech;
 
 pub(crate) use device_presence::{GONE, GONE_COLOR};
+pub use editor::EditError;
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -78,6 +81,9 @@ pub struct Viewer {
     replies: Vec<Result<String, String>>,
     /// The servers' speech_recognition and speech devices, once seen.
     speech: speech::SpeechLinks,
+    /// Components switched off in the editor (or saved so), kept to be enabled again.
+    disabled: Vec<editor::DisabledPlugin>,
+    editor: editor_ui::EditorState,
 }
 
 /// The composition a session came from and the file its state is saved to.
@@ -115,6 +121,8 @@ impl Viewer {
             script: None,
             replies: Vec::new(),
             speech: Default::default(),
+            disabled: Vec::new(),
+            editor: Default::default(),
         };
         viewer.add_plugins(instances, devices);
         viewer
@@ -269,6 +277,11 @@ impl Viewer {
             })
             .collect();
         saved.extend(self.gone.iter().map(|g| g.instance.clone()));
+        saved.extend(self.disabled.iter().map(|d| {
+            let mut instance = d.instance.clone();
+            instance.element.set_attr(editor::ENABLED_ATTR, "false");
+            instance
+        }));
         if let Some(composer) = &self.composer {
             saved.extend(composer.waiting().iter().cloned());
         }

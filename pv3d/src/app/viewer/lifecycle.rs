@@ -30,6 +30,15 @@ impl Viewer {
             };
             let (create, metadata) = (component.constructor, component.metadata);
             let device = config.device.as_ref().and_then(devices);
+            if instance.element.attr(super::editor::ENABLED_ATTR) == Some("false") {
+                self.disabled.push(super::editor::DisabledPlugin {
+                    instance,
+                    metadata,
+                    device,
+                    at: self.slots.len(),
+                });
+                continue;
+            }
             let mut ctx = PluginContext::new(&mut self.scene, &mut self.anchors, Instant::now())
                 .with_device(device.as_deref());
             match create(config, &mut ctx) {
