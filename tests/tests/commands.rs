@@ -106,11 +106,15 @@ fn a_robot_told_to_go_to_a_zone_arrives_and_all_robots_stop() {
 
     let reply = viewer.command(&format!("{r0} go to charging")).unwrap();
     assert_eq!(reply, format!("{r0}: going to zone charging"));
+    // A zone is driven to its centre, not stopped short of like an object.
     run_until(
         &mut viewer,
-        "r0 in charging",
+        "r0 at charging's centre",
         Duration::from_secs(20),
-        |_| in_charging(sim_pose(&running, 0)),
+        |_| {
+            let (x, y, _) = sim_pose(&running, 0);
+            (x - 3.0).hypot(y - 2.0) < 0.4
+        },
     );
     assert!(!in_charging(sim_pose(&running, 1)), "r1 was not told");
 

@@ -37,6 +37,9 @@ pub trait CommandTarget {
     fn drivable_robots(&self) -> Vec<String>;
     /// Runs one of a robot's actions on `target`; false if the robot is not there.
     fn robot_action(&mut self, robot: &str, action: &str, target: &ObjectRef) -> bool;
+    /// Sends a robot to a point on the ground, as a click there does when it is selected;
+    /// false if the robot is not there.
+    fn robot_to_point(&mut self, robot: &str, point: Vec3) -> bool;
     /// Stops one robot; false if it is not there.
     fn stop_robot(&mut self, robot: &str) -> bool;
     fn observing(&self) -> bool;
@@ -80,7 +83,14 @@ pub fn execute(target: &mut dyn CommandTarget, command: &Command) -> Result<Stri
     }
     for robot in &robots {
         let reference = object_ref(target.scene(), object, robot)?;
-        if !target.robot_action(robot, action, &reference) {
+        // A place is gone to itself; an object is gone up to (its "Go to" stops short).
+        let place = matches!(object, Object::Zone(_) | Object::Point(_));
+        let sent = if place && command.verb == Verb::GoTo {
+            target.robot_to_point(robot, reference.position)
+        } else {
+            target.robot_action(robot, action, &reference)
+        };
+        if !sent {
             return Err(ExecuteError::NoSuchRobot(robot.clone()));
         }
     }

@@ -106,6 +106,23 @@ impl CommandTarget for Viewer {
         true
     }
 
+    fn robot_to_point(&mut self, robot: &str, point: glam::Vec3) -> bool {
+        let Some(index) = self.robot_slot(robot) else {
+            return false;
+        };
+        // A robot takes ground clicks while it is the active handler: one that is not is
+        // made so for this click only, without changing which robot the person selected.
+        let borrowed = self.active != Some(index);
+        if borrowed {
+            self.send(index, &InputEvent::Activated(true));
+        }
+        self.send(index, &InputEvent::GroundClicked(point));
+        if borrowed {
+            self.send(index, &InputEvent::Activated(false));
+        }
+        true
+    }
+
     fn stop_robot(&mut self, robot: &str) -> bool {
         let Some(index) = self.robot_slot(robot) else {
             return false;
