@@ -158,12 +158,6 @@ impl Viewer {
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| self.item_tree(ui));
             });
-        egui::Panel::bottom("command-line").show(ui, |ui| {
-            if let Some(sentence) = self.command_line.ui(ui) {
-                // The outcome is shown on the line itself.
-                let _ = self.command(&sentence);
-            }
-        });
         if let Some(robots) = self.robots.clone() {
             egui::Panel::bottom("robot-status")
                 .resizable(true)
@@ -203,6 +197,10 @@ impl Viewer {
                     _ => {}
                 }
                 self.active_controls(ui.ctx(), view_rect);
+                if let Some(sentence) = self.command_line.over_view(ui.ctx(), view_rect) {
+                    // The outcome is shown on the line itself.
+                    let _ = self.command(&sentence);
+                }
             });
         let at = self.popup_at;
         self.show_popup(ui.ctx(), at);
