@@ -126,3 +126,65 @@ fn a_parameter_edit_re_creates_the_plugin_and_a_bad_value_is_refused() {
     );
     assert!(viewer.errors.is_empty(), "{:?}", viewer.errors);
 }
+
+#[test]
+fn the_edited_composition_is_written_back_and_loads_as_edited() {
+    use pv3d::app::ViewerBuilder;
+    use pv3d::composition::{Composition, ParserRegistry, emit_document};
+
+    let dir = tempfile::tempdir().unwrap();
+    let original = dir.path().join("room.xml");
+    std::fs::write(
+        &original,
+        format!(
+            "<pv3d>\n  {ZONES}\n  <plugin library=\"libpv3d_lights\" id=\"lights\"/>\n</pv3d>\n"
+        ),
+    )
+    .unwrap();
+    let composition = Composition::load(&original, &ParserRegistry::standard()).unwrap();
+    let mut viewer = ViewerBuilder::new(composition.clone()).build();
+    viewer.set_component_param(0, "color", "#00ff00").unwrap();
+    viewer.disable_component(0).unwrap();
+    viewer.add_component("libpv3d_zones", None).unwrap();
+    viewer.move_component(1, true).unwrap();
+
+    let written = dir.path().join("edited.xml");
+    std::fs::write(
+        &written,
+        emit_document(&composition, &viewer.save(), &written),
+    )
+    .unwrap();
+    let text = std::fs::read_to_string(&written).unwrap();
+    let reloaded = Composition::load(&written, &ParserRegistry::standard())
+        .unwrap_or_else(|e| panic!("{e}\n{text}"));
+    let again = ViewerBuilder::new(reloaded).build();
+    assert!(again.errors.is_empty(), "{:?}", again.errors);
+    assert_eq!(
+        again.disabled_titles(),
+        vec!["libpv3d_zones zones"],
+        "{text}"
+    );
+    assert_eq!(again.plugin_count(), 2);
+    assert!(!has_dock(&again), "the zones stayed disabled");
+    assert!(text.contains("#00ff00"), "{text}");
+}
+
+#[test]
+fn a_component_added_to_a_robot_takes_the_robots_device() {
+    let robot = instance(
+        r#"<plugin library="libpv3d_position2d" id="r0"><playerDeviceMask interface="position2d" index="0"/></plugin>"#,
+    );
+    let mut viewer = Viewer::new(vec![robot], plugins::standard_plugins(), &|_| None);
+    assert!(viewer.errors.is_empty(), "{:?}", viewer.errors);
+    let at = viewer.add_component("libpv3d_position2d", Some(0)).unwrap();
+    let saved = viewer.save();
+    let mask = saved[at]
+        .element
+        .child("playerDeviceMask")
+        .expect("the robot's mask");
+    assert_eq!(mask.attr("interface"), Some("position2d"));
+    assert_eq!(
+        viewer.add_component("libpv3d_zones", Some(9)),
+        Err(EditError::NoSuchComponent(9))
+    );
+}

@@ -274,12 +274,13 @@ impl Viewer {
                 instance
             })
             .collect();
-        saved.extend(self.gone.iter().map(|g| g.instance.clone()));
-        saved.extend(self.disabled.iter().map(|d| {
-            let mut instance = d.instance.clone();
+        // A disabled plugin keeps its place in the visiting order.
+        for off in &self.disabled {
+            let mut instance = off.instance.clone();
             instance.element.set_attr(editor::ENABLED_ATTR, "false");
-            instance
-        }));
+            saved.insert(off.at.min(saved.len()), instance);
+        }
+        saved.extend(self.gone.iter().map(|g| g.instance.clone()));
         if let Some(composer) = &self.composer {
             saved.extend(composer.waiting().iter().cloned());
         }

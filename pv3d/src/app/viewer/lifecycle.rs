@@ -61,6 +61,7 @@ impl Viewer {
         let taken = |id: &str| {
             self.slots.iter().any(|s| s.instance.id() == id)
                 || self.gone.iter().any(|g| g.instance.id() == id)
+                || self.disabled.iter().any(|d| d.instance.id() == id)
         };
         let id = instance.id().to_string();
         if id.is_empty() || !taken(&id) {
