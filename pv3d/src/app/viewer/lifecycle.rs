@@ -81,7 +81,7 @@ impl Viewer {
     pub fn update(&mut self, now: Instant) {
         self.follow_servers();
         self.follow_script(now);
-        self.follow_speech();
+        self.follow_speech(now);
         for i in 0..self.slots.len() {
             let first_run = !std::mem::replace(&mut self.slots[i].initialized, true);
             let (plugin, mut ctx) = self.plugin_in_context(i, now);

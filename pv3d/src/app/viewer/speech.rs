@@ -3,6 +3,7 @@
 //! servers offer them. The devices are found among the servers' devices as they appear.
 
 use std::sync::Arc;
+use std::time::{Duration, Instant};
 
 use framework::config::DeviceRef;
 use framework::device::{DeviceAccess, LastTaken};
@@ -13,18 +14,30 @@ use player_proto::wire::{DevAddr, Interface, PlayerString};
 
 use super::Viewer;
 
+/// How often the servers' device lists are looked through for speech devices: often enough
+/// to notice one soon, rarely enough to cost nothing with hundreds of servers.
+const SCAN_INTERVAL: Duration = Duration::from_secs(1);
+
 /// The speech devices linked so far.
 #[derive(Default)]
 pub(super) struct SpeechLinks {
     /// Recognisers, with the sentence taken last from each.
     ears: Vec<(DevAddr, Arc<dyn DeviceAccess>, LastTaken)>,
     voices: Vec<(DevAddr, Arc<dyn DeviceAccess>)>,
+    last_scan: Option<Instant>,
 }
 
 impl Viewer {
     /// Links speech devices that appeared, then carries out what they heard since last time.
-    pub(super) fn follow_speech(&mut self) {
-        self.link_speech_devices();
+    pub(super) fn follow_speech(&mut self, now: Instant) {
+        let due = self
+            .speech
+            .last_scan
+            .is_none_or(|at| now.saturating_duration_since(at) >= SCAN_INTERVAL);
+        if due {
+            self.speech.last_scan = Some(now);
+            self.link_speech_devices();
+        }
         let mut heard = Vec::new();
         for (_, device, last) in &mut self.speech.ears {
             let kind = SpeechRecognition::DATA_STRING.kind();
