@@ -6,6 +6,7 @@
 //!   `wavefront` planner that drives a robot.
 //! * [`devices`], [`camera_frames`], [`serve`] — the simulation served over the Player protocol.
 //! * [`replay`] — a recording served as the Player servers it was recorded from.
+//! * [`speech`] — speech heard from a file or standard input, and said into a log and WAV files.
 //! * [`sim`] — the simulation: motion, collisions, sensors by ray casting.
 //! * [`world`] — the world a file describes: floorplan, robots and their sensors, obstacles.
 //! * [`worldfile`] — the syntax of Stage world files and Player config files.
@@ -18,5 +19,6 @@ pub mod replay;
 pub mod serve;
 pub mod served;
 pub mod sim;
+pub mod speech;
 pub mod world;
 pub mod worldfile;

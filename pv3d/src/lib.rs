@@ -7,6 +7,7 @@
 //! * [`app`] — building the viewer from a composition, and its window.
 
 pub mod app;
+pub mod commands;
 pub mod composition;
 pub mod demo;
 pub mod embedded_world;

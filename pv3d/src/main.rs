@@ -9,6 +9,7 @@ use player_sim::serve::ServeOptions;
 use pv3d::app::{
     RedrawPolicy, ScreenshotRequest, UiWaker, ViewerBuilder, WindowOptions, run_window,
 };
+use pv3d::commands::{Grammar, Script};
 use pv3d::composition::{Composition, ParserRegistry, emit_document};
 use pv3d::embedded_world::serve_world;
 use pv3d::headless::{ScreenshotRun, write_screenshot};
@@ -91,6 +92,15 @@ struct Cli {
     #[arg(long)]
     observe: bool,
 
+    /// Say these sentences to the viewer, one `<seconds> <sentence>` a line ("3 robot1 go to
+    /// charging"), seconds counted from when the viewer starts running.
+    #[arg(long, value_name = "FILE")]
+    script: Option<PathBuf>,
+
+    /// Parse sentences with this grammar instead of the built-in configs/commands.grammar.xml.
+    #[arg(long, value_name = "FILE.xml")]
+    grammar: Option<PathBuf>,
+
     /// The view to start in: the map-like top view or the perspective one (T switches).
     #[arg(long, value_enum, default_value_t = StartView::Top)]
     view: StartView,
@@ -158,6 +168,10 @@ fn main() -> Result<()> {
         );
     }
 
+    // Read before anything starts, so that a mistake in them is reported at once.
+    let script = cli.script.as_deref().map(Script::load).transpose()?;
+    let grammar = cli.grammar.as_deref().map(Grammar::load).transpose()?;
+
     let parsers = ParserRegistry::standard();
     let mut composition = Composition::load_files(&cli.files, &parsers)?;
     // Kept alive for as long as the viewer runs.
@@ -197,6 +211,12 @@ fn main() -> Result<()> {
     }
 
     let mut viewer = parts.into_viewer();
+    if let Some(grammar) = grammar {
+        viewer.set_grammar(grammar);
+    }
+    if let Some(script) = script {
+        viewer.run_script(script);
+    }
     let interval = Duration::from_secs_f64(cli.redraw_interval);
     let after = Duration::from_secs_f64(cli.after);
     match &cli.screenshot {

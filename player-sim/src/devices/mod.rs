@@ -6,6 +6,7 @@ mod gripper;
 mod localize;
 mod map;
 mod planner;
+mod speech;
 
 use std::sync::{Arc, Mutex};
 
@@ -199,7 +200,9 @@ impl SimDevice {
             Source::Localize(driver) => localize::answer(&mut sim, &driver, request),
             Source::Estimate(_) => Reply::Nack,
             Source::Planner(driver) => planner::answer(&mut sim, &driver, request),
-            Source::Blobfinder { .. } => Reply::Nack,
+            Source::Blobfinder { .. } | Source::SpeechRecognition(_) | Source::Speech(_) => {
+                Reply::Nack
+            }
             Source::Gripper { robot, gripper } => {
                 if asks(request, Gripper::REQ_GET_GEOM) {
                     let geometry = gripper::geometry(&sim, robot, gripper);
@@ -256,7 +259,8 @@ impl SimDevice {
     /// for every other device.
     pub fn data(sim: &Simulation, source: &Source, scan_id: u32) -> Vec<(u8, Body)> {
         vec![match *source {
-            Source::Simulation | Source::Map(_) => return Vec::new(),
+            Source::Simulation | Source::Map(_) | Source::Speech(_) => return Vec::new(),
+            Source::SpeechRecognition(ref input) => return speech::heard(sim, input),
             Source::Localize(ref driver) => return localize::hypotheses(sim, driver),
             Source::Estimate(ref driver) => return localize::estimate(sim, driver),
             Source::Planner(ref driver) => return planner::data(sim, driver),
@@ -358,6 +362,10 @@ impl Device for SimDevice {
     }
 
     fn on_command(&mut self, command: &Message) {
+        if let Source::Speech(output) = &self.served.source {
+            speech::say(output, command);
+            return;
+        }
         if let Source::Planner(driver) = &self.served.source {
             planner::command(&mut self.sim.lock().expect("simulation"), driver, command);
             return;

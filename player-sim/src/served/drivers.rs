@@ -20,6 +20,8 @@ const SERVED: &[&str] = &[
     "amcl",
     "fakelocalize",
     "wavefront",
+    "sentences",
+    "festival",
 ];
 
 /// "ignored: …" for a driver player-sim does not serve at all, so that its lines are read

@@ -7,6 +7,7 @@ mod beside;
 mod defaults;
 mod drivers;
 mod navigation;
+mod speech;
 mod stage;
 
 use std::path::Path;
@@ -69,6 +70,10 @@ pub enum Source {
     Estimate(NavDriver<LocalizeSettings>),
     /// A `wavefront` planner.
     Planner(NavDriver<PlannerSpec>),
+    /// Sentences "heard" from a file or standard input (driver `sentences`).
+    SpeechRecognition(crate::speech::SpeechInput),
+    /// Text to say, logged and spoken (driver `festival`).
+    Speech(crate::speech::SpeechOutput),
 }
 
 impl Source {
@@ -275,6 +280,7 @@ fn read_cfg(
                 "amcl" | "fakelocalize" | "wavefront" => {
                     navigation::source(&driver, world, served, interf, ignored)?
                 }
+                "sentences" | "festival" => speech::source(&driver, interf, ignored)?,
                 _ => drivers::source(&driver, served, interf, ignored)?,
             };
             let Some(source) = source else { continue };

@@ -2,6 +2,7 @@
 //! 3D view widget, and running the UI in a window. (Offscreen: [`crate::headless`].)
 
 pub mod builder;
+pub mod command_line;
 pub mod status_panel;
 pub mod timeline;
 pub mod view3d;
@@ -10,5 +11,5 @@ pub mod window;
 
 pub use builder::{ViewerBuilder, ViewerParts};
 pub use view3d::{View3d, ViewInput};
-pub use viewer::Viewer;
+pub use viewer::{EditError, Viewer};
 pub use window::{RedrawPolicy, ScreenshotRequest, UiWaker, WindowOptions, run_window};

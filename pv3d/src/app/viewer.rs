@@ -7,15 +7,20 @@
 //! the robot's popup of actions on it; right-click any object, robots included, for the same.
 
 mod awareness;
+mod commanding;
 mod device_presence;
+mod editor;
+mod editor_ui;
 mod input_chain;
 mod item_tree;
 mod lifecycle;
 mod popups;
 mod queries;
 mod reactions;
+mod speech;
 
 pub(crate) use device_presence::{GONE, GONE_COLOR};
+pub use editor::EditError;
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -72,6 +77,18 @@ pub struct Viewer {
     popup_at: egui::Pos2,
     /// The composition's `<reaction>`s and what they have seen.
     reactions: reactions::Reactions,
+    /// The grammar sentences are parsed with (the command line, `--script`, speech).
+    grammar: crate::commands::Grammar,
+    command_line: super::command_line::CommandLine,
+    /// The `--script` being run, if any.
+    script: Option<crate::commands::Script>,
+    /// Every sentence's reply or error, oldest first.
+    replies: Vec<Result<String, String>>,
+    /// The servers' speech_recognition and speech devices, once seen.
+    speech: speech::SpeechLinks,
+    /// Components switched off in the editor (or saved so), kept to be enabled again.
+    disabled: Vec<editor::DisabledPlugin>,
+    editor: editor_ui::EditorState,
 }
 
 /// The composition a session came from and the file its state is saved to.
@@ -105,6 +122,13 @@ impl Viewer {
             popup: None,
             popup_at: egui::pos2(300.0, 200.0),
             reactions: Default::default(),
+            grammar: crate::commands::Grammar::standard(),
+            command_line: Default::default(),
+            script: None,
+            replies: Vec::new(),
+            speech: Default::default(),
+            disabled: Vec::new(),
+            editor: Default::default(),
         };
         viewer.add_plugins(instances, devices);
         viewer
@@ -179,6 +203,10 @@ impl Viewer {
                     _ => {}
                 }
                 self.active_controls(ui.ctx(), view_rect);
+                if let Some(sentence) = self.command_line.over_view(ui.ctx(), view_rect) {
+                    // The outcome is shown on the line itself.
+                    let _ = self.command(&sentence);
+                }
             });
         let at = self.popup_at;
         self.show_popup(ui.ctx(), at);
@@ -252,6 +280,12 @@ impl Viewer {
                 instance
             })
             .collect();
+        // A disabled plugin keeps its place in the visiting order.
+        for off in &self.disabled {
+            let mut instance = off.instance.clone();
+            instance.element.set_attr(editor::ENABLED_ATTR, "false");
+            saved.insert(off.at.min(saved.len()), instance);
+        }
         saved.extend(self.gone.iter().map(|g| g.instance.clone()));
         if let Some(composer) = &self.composer {
             saved.extend(composer.waiting().iter().cloned());

@@ -242,7 +242,7 @@ fn read_mask_handler(element: &Element) -> Result<MaskHandler, ConfigError> {
 }
 
 fn checked_plugin(element: &Element) -> Result<Element, ConfigError> {
-    check_attributes(element, &["library", "id"])?;
+    check_attributes(element, &["library", "id", "enabled"])?;
     if element.attr("library").is_none_or(|l| l.trim().is_empty()) {
         return Err(ConfigError::at(
             element.pos.clone(),

@@ -25,6 +25,9 @@ impl Viewer {
         }
         let mut activate = None;
         let mut used = None;
+        let mut edit = None;
+        // The plugins are borrowed while their entries are drawn; the editor's fields too.
+        let mut editor = std::mem::take(&mut self.editor);
         for i in 0..self.slots.len() {
             let active = self.active == Some(i);
             let about = self.slots[i].metadata;
@@ -57,11 +60,23 @@ impl Viewer {
                     if selectable && !active && ui.button("Select").clicked() {
                         activate = Some(i);
                     }
+                    let config = plugin.save();
+                    if let Some(e) = editor.component_controls(ui, i, &config) {
+                        edit = Some(e);
+                    }
                 })
                 .header_response
                 .on_hover_text(about.description);
         }
+        self.editor = editor;
         self.gone_entries(ui);
+        if let Some(e) = self.editor_footer(ui) {
+            edit = Some(e);
+        }
+        if let Some(e) = edit {
+            self.apply_edit(e);
+            return;
+        }
         if let Some(i) = activate {
             self.set_active(Some(i));
         }

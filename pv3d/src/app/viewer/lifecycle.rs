@@ -31,6 +31,15 @@ impl Viewer {
             };
             let (create, metadata) = (component.constructor, component.metadata);
             let device = config.device.as_ref().and_then(devices);
+            if instance.element.attr(super::editor::ENABLED_ATTR) == Some("false") {
+                self.disabled.push(super::editor::DisabledPlugin {
+                    instance,
+                    metadata,
+                    device,
+                    at: self.slots.len(),
+                });
+                continue;
+            }
             let mut ctx = PluginContext::new(&mut self.scene, &mut self.anchors, Instant::now())
                 .with_device(device.as_deref());
             match create(config, &mut ctx) {
@@ -53,6 +62,7 @@ impl Viewer {
         let taken = |id: &str| {
             self.slots.iter().any(|s| s.instance.id() == id)
                 || self.gone.iter().any(|g| g.instance.id() == id)
+                || self.disabled.iter().any(|d| d.instance.id() == id)
         };
         let id = instance.id().to_string();
         if id.is_empty() || !taken(&id) {
@@ -71,6 +81,8 @@ impl Viewer {
     /// [`Viewer::ui`]: that is what makes "initialized after the window and GL exist" hold.
     pub fn update(&mut self, now: Instant) {
         self.follow_servers();
+        self.follow_script(now);
+        self.follow_speech(now);
         let mut sent = Vec::new();
         for i in 0..self.slots.len() {
             let first_run = !std::mem::replace(&mut self.slots[i].initialized, true);
