@@ -12,8 +12,10 @@ pub mod kernels;
 pub mod screen_detail;
 pub mod shader;
 pub mod texture;
+pub mod virtual_views;
 
-pub use batch::{BatchedImage, SceneBatch};
+pub use batch::{BatchedImage, BatchedView, SceneBatch};
 pub use camera::{OrbitCamera, Projection};
 pub use gl_renderer::{Lighting, POINT_SIZE_PX, SceneRenderer};
 pub use screen_detail::{ScreenDetail, Simplifier};
+pub use virtual_views::{ViewTargets, view_projection};
