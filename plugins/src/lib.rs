@@ -14,6 +14,7 @@ pub mod position2d;
 pub mod power;
 pub mod ranger;
 pub mod sonar;
+pub mod virtual_camera;
 pub mod zones;
 
 /// Who wrote the standard components, and where to reach them: one place for all of them.
@@ -97,6 +98,11 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_image",
         image::ImagePlugin::METADATA,
         image::ImagePlugin::create,
+    );
+    registry.register(
+        "libpv3d_virtual_camera",
+        virtual_camera::VirtualCameraPlugin::METADATA,
+        virtual_camera::VirtualCameraPlugin::create,
     );
     registry
 }
