@@ -7,9 +7,12 @@
 //! the world; `0 0 0.4 0`), `pitch` (degrees down, 0), `fov` (vertical, degrees, 60), `width`
 //! and `height` (pixels, 320 × 240), `parentNode` (the robot it rides on, for a camera made in
 //! a robot's device handler, as a laser's; none = fixed in the world),
-//! `frustumLength` (m, 1; 0 hides it), `color` (the frustum's, `#ffd040`), `showWindow` (1).
+//! `frustumLength` (m, 1; 0 hides it), `color` (the frustum's, `#ffd040`), `showWindow` (1),
+//! `servePort` (none: serve each picture as Player device `camera:0` on this port of
+//! 127.0.0.1, see [`serve`]).
 
 pub mod frustum;
+pub mod serve;
 
 use std::sync::Arc;
 
@@ -21,6 +24,7 @@ use image::RgbaImage;
 
 use crate::camera::window::{CameraWindow, Picture};
 use framework::parent_link::ParentLink;
+use serve::CameraServer;
 
 /// Where the camera sits by default: on a robot's top, looking ahead.
 const DEFAULT_POSE: [f64; 4] = [0.0, 0.0, 0.4, 0.0];
@@ -44,6 +48,7 @@ pub struct VirtualCameraPlugin {
     window: CameraWindow,
     show_window: bool,
     size: (u32, u32),
+    server: Option<CameraServer>,
 }
 
 impl VirtualCameraPlugin {
@@ -66,6 +71,7 @@ impl VirtualCameraPlugin {
         let colour = config.color("color", DEFAULT_COLOUR)?;
         let show_window = config.bool("showWindow", true)?;
         let parent = ParentLink::from_config(&config);
+        let server = start_server(&config)?;
 
         // Pitch turns about the camera's y; positive looks down.
         let rotation = Quat::from_euler(
@@ -76,12 +82,7 @@ impl VirtualCameraPlugin {
         );
         let translation = Vec3::new(pose[0] as f32, pose[1] as f32, pose[2] as f32);
         let view = VirtualView::new(Affine3A::IDENTITY, (fov as f32).to_radians(), width, height)
-            .map_err(|e| ConfigValueError {
-            origin: config.origin.clone(),
-            library: config.library.clone(),
-            param: "fov".into(),
-            message: e.to_string(),
-        })?;
+            .map_err(|e| config_error(&config, "fov", e.to_string()))?;
         let output = view.output.clone();
         let mut object = Object3D::new(title(&config));
         object.tags.push("camera".into());
@@ -102,6 +103,7 @@ impl VirtualCameraPlugin {
             window: CameraWindow::default(),
             show_window,
             size: (width, height),
+            server,
         }))
     }
 
@@ -118,6 +120,41 @@ impl VirtualCameraPlugin {
     /// The node carrying the camera (and its frustum).
     pub fn node_id(&self) -> NodeId {
         self.node
+    }
+}
+
+/// The Player server `servePort` asks for, if any; a port that is taken or not a port is a
+/// configuration error naming the parameter.
+fn start_server(config: &PluginConfig) -> Result<Option<CameraServer>, ConfigValueError> {
+    let Some(param) = config.param("servePort") else {
+        return Ok(None);
+    };
+    let port = config.number("servePort", 0.0, 1.0..=f64::from(u16::MAX))?;
+    if port.fract() != 0.0 {
+        return Err(config_error(
+            config,
+            "servePort",
+            format!("{port} is not a whole port number"),
+        ));
+    }
+    match CameraServer::start(port as u16) {
+        Ok(server) => {
+            tracing::info!(port = server.port(), "virtual camera served as camera:0");
+            Ok(Some(server))
+        }
+        Err(e) => Err(ConfigValueError {
+            origin: param.origin.clone(),
+            ..config_error(config, "servePort", e.to_string())
+        }),
+    }
+}
+
+fn config_error(config: &PluginConfig, param: &str, message: String) -> ConfigValueError {
+    ConfigValueError {
+        origin: config.origin.clone(),
+        library: config.library.clone(),
+        param: param.into(),
+        message,
     }
 }
 
@@ -171,6 +208,9 @@ impl Plugin for VirtualCameraPlugin {
             return;
         }
         self.shown_generation = Some(pixels.generation());
+        if let Some(server) = &self.server {
+            server.publish(&pixels);
+        }
         self.image = top_row_first(&pixels).map(Arc::new);
         self.frames += 1;
     }
@@ -180,6 +220,9 @@ impl Plugin for VirtualCameraPlugin {
             "{} × {} pixels, {} frames rendered",
             self.size.0, self.size.1, self.frames
         ));
+        if let Some(server) = &self.server {
+            ui.label(format!("served as camera:0 on port {}", server.port()));
+        }
         ui.checkbox(&mut self.show_window, "show image window");
     }
 
