@@ -9,9 +9,13 @@
 //! a robot's device handler, as a laser's; none = fixed in the world),
 //! `frustumLength` (m, 1; 0 hides it), `color` (the frustum's, `#ffd040`), `showWindow` (1),
 //! `servePort` (none: serve each picture as Player device `camera:0` on this port of
-//! 127.0.0.1, see [`serve`]).
+//! 127.0.0.1, see [`serve`]), `project` (`none`; `ground`: the picture laid on the ground along
+//! the frustum, within `projectDistance` m (5) at `projectResolution` pixels (256);
+//! `billboard`: the picture `billboardWidth` m wide (1) floating `billboardHeight` m (0.8)
+//! above the camera — see [`projection`]).
 
 pub mod frustum;
+pub mod projection;
 pub mod serve;
 
 use std::sync::Arc;
@@ -24,6 +28,7 @@ use image::RgbaImage;
 
 use crate::camera::window::{CameraWindow, Picture};
 use framework::parent_link::ParentLink;
+use projection::Placement;
 use serve::CameraServer;
 
 /// Where the camera sits by default: on a robot's top, looking ahead.
@@ -35,6 +40,21 @@ const DEFAULT_HEIGHT: f64 = 240.0;
 const MAX_SIDE: f64 = 4096.0;
 const DEFAULT_FRUSTUM_M: f64 = 1.0;
 const DEFAULT_COLOUR: Rgba = Rgba::rgb(255, 208, 64);
+const DEFAULT_PROJECT_DISTANCE_M: f64 = 5.0;
+const DEFAULT_PROJECT_RESOLUTION: f64 = 256.0;
+const MAX_PROJECT_RESOLUTION: f64 = 2048.0;
+const DEFAULT_BILLBOARD_WIDTH_M: f64 = 1.0;
+const DEFAULT_BILLBOARD_HEIGHT_M: f64 = 0.8;
+
+/// Where the picture goes back into the world, and how.
+struct Projection {
+    placement: Placement,
+    /// The node holding the picture: fixed in the world (ground) or on the camera (billboard).
+    node: Option<NodeId>,
+    distance: f32,
+    resolution: u32,
+    billboard_width: f32,
+}
 
 pub struct VirtualCameraPlugin {
     config: PluginConfig,
@@ -49,6 +69,7 @@ pub struct VirtualCameraPlugin {
     show_window: bool,
     size: (u32, u32),
     server: Option<CameraServer>,
+    projection: Projection,
 }
 
 impl VirtualCameraPlugin {
@@ -72,6 +93,28 @@ impl VirtualCameraPlugin {
         let show_window = config.bool("showWindow", true)?;
         let parent = ParentLink::from_config(&config);
         let server = start_server(&config)?;
+        let placement_text = config.text("project").unwrap_or("none");
+        let placement = Placement::parse(placement_text).ok_or_else(|| {
+            config_error(
+                &config,
+                "project",
+                format!("expected none, ground or billboard, found {placement_text:?}"),
+            )
+        })?;
+        let distance =
+            config.number("projectDistance", DEFAULT_PROJECT_DISTANCE_M, 0.1..=1000.0)? as f32;
+        let resolution = config.number(
+            "projectResolution",
+            DEFAULT_PROJECT_RESOLUTION,
+            1.0..=MAX_PROJECT_RESOLUTION,
+        )? as u32;
+        let billboard_width =
+            config.number("billboardWidth", DEFAULT_BILLBOARD_WIDTH_M, 0.01..=100.0)? as f32;
+        let billboard_height = config.number(
+            "billboardHeight",
+            DEFAULT_BILLBOARD_HEIGHT_M,
+            -100.0..=100.0,
+        )? as f32;
 
         // Pitch turns about the camera's y; positive looks down.
         let rotation = Quat::from_euler(
@@ -92,6 +135,19 @@ impl VirtualCameraPlugin {
         }
         object.geometry.views.push(view);
         let node = ctx.scene.add(object);
+        let projection_node = match placement {
+            Placement::None => None,
+            Placement::Ground => Some(
+                ctx.scene
+                    .add(Object3D::new(format!("{} on the ground", title(&config)))),
+            ),
+            Placement::Billboard => {
+                let mut board = Object3D::new(format!("{} billboard", title(&config)));
+                board.parent = Some(node);
+                board.transform = Affine3A::from_translation(Vec3::Z * billboard_height);
+                Some(ctx.scene.add(board))
+            }
+        };
         Ok(Box::new(VirtualCameraPlugin {
             config,
             node,
@@ -104,6 +160,13 @@ impl VirtualCameraPlugin {
             show_window,
             size: (width, height),
             server,
+            projection: Projection {
+                placement,
+                node: projection_node,
+                distance,
+                resolution,
+                billboard_width,
+            },
         }))
     }
 
@@ -155,6 +218,48 @@ fn config_error(config: &PluginConfig, param: &str, message: String) -> ConfigVa
         library: config.library.clone(),
         param: param.into(),
         message,
+    }
+}
+
+impl VirtualCameraPlugin {
+    /// Puts the new picture back into the world where `project` asked.
+    fn project(&self, pixels: &Pixels, ctx: &mut PluginContext<'_>) {
+        let Some(node) = self.projection.node else {
+            return;
+        };
+        let quad = match self.projection.placement {
+            Placement::None => return,
+            Placement::Ground => {
+                let Some(view) = ctx
+                    .scene
+                    .get(self.node)
+                    .and_then(|o| o.geometry.views.first().cloned())
+                else {
+                    return;
+                };
+                let camera_to_world = ctx.scene.world_transform(self.node) * view.pose;
+                projection::onto_ground(
+                    &view,
+                    camera_to_world,
+                    pixels,
+                    self.projection.distance,
+                    self.projection.resolution,
+                )
+            }
+            Placement::Billboard => {
+                let (quad, pose) = projection::billboard(pixels, self.projection.billboard_width);
+                if let Some(board) = ctx.scene.get_mut(node) {
+                    // Keep the height the board was made at; turn it to face up, top ahead.
+                    board.transform =
+                        Affine3A::from_translation(board.transform.translation.into()) * pose;
+                }
+                Some(quad)
+            }
+        };
+        if let Some(object) = ctx.scene.get_mut(node) {
+            object.geometry.images.clear();
+            object.geometry.images.extend(quad);
+        }
     }
 }
 
@@ -213,6 +318,7 @@ impl Plugin for VirtualCameraPlugin {
         }
         self.image = top_row_first(&pixels).map(Arc::new);
         self.frames += 1;
+        self.project(&pixels, ctx);
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, _ctx: &mut PluginContext<'_>) {
@@ -244,5 +350,8 @@ impl Plugin for VirtualCameraPlugin {
 
     fn clean(&mut self, ctx: &mut PluginContext<'_>) {
         ctx.scene.remove(self.node);
+        if let Some(node) = self.projection.node {
+            ctx.scene.remove(node);
+        }
     }
 }
