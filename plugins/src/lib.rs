@@ -6,6 +6,7 @@ use framework::{Metadata, PluginRegistry};
 
 pub mod camera;
 pub mod fiducial;
+pub mod formula;
 pub mod ground;
 pub mod image;
 pub mod laser;
