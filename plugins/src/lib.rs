@@ -101,6 +101,11 @@ pub fn standard_plugins() -> PluginRegistry {
         image::ImagePlugin::create,
     );
     registry.register(
+        "libpv3d_formula",
+        formula::label::FormulaPlugin::METADATA,
+        formula::label::FormulaPlugin::create,
+    );
+    registry.register(
         "libpv3d_virtual_camera",
         virtual_camera::VirtualCameraPlugin::METADATA,
         virtual_camera::VirtualCameraPlugin::create,
