@@ -50,7 +50,7 @@ pub fn onto_ground(
     let (lo, hi) = footprint_bounds(view, camera_to_world, max_distance)?;
     let extent = hi - lo;
     let metres_per_pixel = extent.max_element() / resolution as f32;
-    if !(metres_per_pixel > 0.0) {
+    if metres_per_pixel.is_nan() || metres_per_pixel <= 0.0 {
         return None;
     }
     let columns = ((extent.x / metres_per_pixel).ceil() as u32).clamp(1, resolution);
