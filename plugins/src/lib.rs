@@ -1,6 +1,7 @@
 //! The standard pv3d components, one folder each: ground (with floorplans, grid, lights),
-//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones, power, map and image. Each is built
-//! on the `framework` crate alone and can be read without the rest of the application.
+//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones, power, map,
+//! image, virtual camera and formula. Each is built on the `framework` crate alone and can be
+//! read without the rest of the application.
 
 use framework::{Metadata, PluginRegistry};
 
