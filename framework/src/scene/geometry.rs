@@ -3,6 +3,7 @@
 
 use glam::Vec3;
 
+use super::filtered_picture::FilteredPicture;
 use super::image::ImageQuad;
 use super::virtual_view::VirtualView;
 
@@ -61,6 +62,8 @@ pub struct Geometry {
     pub images: Vec<ImageQuad>,
     /// Cameras the viewer renders the scene through, off screen (see [`VirtualView`]).
     pub views: Vec<VirtualView>,
+    /// Pictures to be filtered and handed back, not drawn (see [`FilteredPicture`]).
+    pub filtered: Vec<FilteredPicture>,
 }
 
 impl Geometry {
@@ -72,6 +75,7 @@ impl Geometry {
         self.labels.clear();
         self.images.clear();
         self.views.clear();
+        self.filtered.clear();
     }
 
     pub fn is_empty(&self) -> bool {
@@ -82,6 +86,7 @@ impl Geometry {
             && self.labels.is_empty()
             && self.images.is_empty()
             && self.views.is_empty()
+            && self.filtered.is_empty()
     }
 
     pub fn line(&mut self, a: Vec3, b: Vec3, color: Rgba) {

@@ -6,6 +6,7 @@
 
 pub mod filter;
 pub mod filter_config;
+pub mod filtered_picture;
 mod geometry;
 pub mod image;
 pub mod polygon;
@@ -17,6 +18,7 @@ use std::collections::BTreeMap;
 use glam::{Affine3A, Vec3};
 
 pub use filter::{FilterChain, GlslKernel, Kernel};
+pub use filtered_picture::FilteredPicture;
 pub use geometry::{Geometry, Label, MeshVertex, Rgba, Vertex};
 pub use image::{ImageError, ImageQuad, PixelFormat, Pixels, Sampling};
 pub use virtual_view::{ViewError, ViewOutput, VirtualView};

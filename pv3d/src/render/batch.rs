@@ -3,7 +3,7 @@
 
 use bytemuck::{Pod, Zeroable};
 use framework::scene::{
-    FilterChain, ImageQuad, Label, Pixels, Sampling, Scene, Vertex, VirtualView,
+    FilterChain, FilteredPicture, ImageQuad, Label, Pixels, Sampling, Scene, Vertex, VirtualView,
 };
 use glam::{Affine3A, Vec3};
 
@@ -73,6 +73,8 @@ pub struct SceneBatch {
     pub images: Vec<BatchedImage>,
     /// Virtual cameras, each rendered off screen before the view.
     pub views: Vec<BatchedView>,
+    /// Pictures to filter and hand back, not to draw.
+    pub filtered: Vec<FilteredPicture>,
     /// One object's vertices in world space, before simplification.
     scratch: Vec<GpuVertex>,
     simplifier: Simplifier,
@@ -91,6 +93,7 @@ impl SceneBatch {
         self.labels.clear();
         self.images.clear();
         self.views.clear();
+        self.filtered.clear();
         for (id, object) in scene.iter() {
             let g = &object.geometry;
             if g.is_empty() || !scene.is_shown(id) {
@@ -135,6 +138,7 @@ impl SceneBatch {
                 view: v.clone(),
                 camera_to_world: to_world * v.pose,
             }));
+            self.filtered.extend(g.filtered.iter().cloned());
         }
     }
 
