@@ -70,8 +70,10 @@ impl FrameFilter {
         self.shown.clone()
     }
 
+    /// The chain in words for the window's title line, in characters egui's font has (it
+    /// lacks the arrow the chain's own description uses).
     pub fn describe(&self) -> String {
-        self.chain.describe()
+        self.chain.describe().replace('→', "then")
     }
 
     pub fn node(&self) -> NodeId {
