@@ -9,6 +9,8 @@ mod support;
 const VIEW_LEFT: u32 = 310;
 const LOWER_HALF: u32 = 400;
 const STATUS_TOP: u32 = 650;
+/// Left of the embedded camera windows, at the same size.
+const WINDOWS_LEFT: u32 = 675;
 
 use support::count;
 
@@ -61,4 +63,33 @@ fn the_formula_stands_next_to_the_robot() {
         })
         .count();
     assert!(white > 60, "the white formula: {white}");
+}
+
+#[test]
+fn a_filtered_camera_window_shows_edges() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("camera-filtered.png");
+    let image = support::screenshot(
+        &[
+            "--world",
+            "stage-worlds/multirobot.world",
+            "configs/camera-filtered.pv3d.xml",
+        ],
+        "2",
+        "1000x700",
+        &png,
+    );
+    // The camera windows stand at the right of the view; through Sobel edges a camera frame is
+    // black but for thin white outlines, where the raw frame is grey walls and floor.
+    let in_windows = |p: &(u32, u32, &image::Rgba<u8>)| p.0 > WINDOWS_LEFT;
+    let black = image
+        .enumerate_pixels()
+        .filter(|p| in_windows(p) && p.2.0[..3].iter().all(|&c| c < 12))
+        .count();
+    let white = image
+        .enumerate_pixels()
+        .filter(|p| in_windows(p) && p.2.0[..3].iter().all(|&c| c > 230))
+        .count();
+    assert!(black > 10_000, "black between the edges: {black}");
+    assert!(white > 300, "white edges: {white}");
 }
