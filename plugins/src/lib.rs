@@ -1,8 +1,9 @@
 //! The standard pv3d components, one folder each: ground (with floorplans, grid, lights),
-//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones, power, map and
-//! image; for navigation and the rest of a real robot, localize, planner, bumper, ir, gripper,
-//! blobfinder, ptz and pointcloud3d. Each is built on the `framework` crate alone and can be
-//! read without the rest of the application.
+//! laser, sonar, ranger, position2d (tele-operation), fiducial, camera, zones, power, map,
+//! image, virtual camera and formula; for navigation and the rest of a real robot, localize,
+//! planner, bumper, ir, gripper, blobfinder, ptz and pointcloud3d; and the people detector.
+//! Each is built on the `framework` crate alone and can be read without the rest of the
+//! application.
 
 use framework::{Metadata, PluginRegistry};
 
@@ -10,6 +11,7 @@ pub mod blobfinder;
 pub mod bumper;
 pub mod camera;
 pub mod fiducial;
+pub mod formula;
 pub mod gripper;
 pub mod ground;
 pub mod image;
@@ -25,6 +27,7 @@ pub mod power;
 pub mod ptz;
 pub mod ranger;
 pub mod sonar;
+pub mod virtual_camera;
 pub mod zones;
 
 /// Who wrote the standard components, and where to reach them: one place for all of them.
@@ -149,6 +152,16 @@ pub fn standard_plugins() -> PluginRegistry {
         "libpv3d_ptz",
         ptz::PtzPlugin::METADATA,
         ptz::PtzPlugin::create,
+    );
+    registry.register(
+        "libpv3d_formula",
+        formula::label::FormulaPlugin::METADATA,
+        formula::label::FormulaPlugin::create,
+    );
+    registry.register(
+        "libpv3d_virtual_camera",
+        virtual_camera::VirtualCameraPlugin::METADATA,
+        virtual_camera::VirtualCameraPlugin::create,
     );
     registry
 }

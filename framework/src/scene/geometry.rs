@@ -3,7 +3,9 @@
 
 use glam::Vec3;
 
+use super::filtered_picture::FilteredPicture;
 use super::image::ImageQuad;
+use super::virtual_view::VirtualView;
 
 /// An sRGB colour with alpha, 0–255 per channel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -58,6 +60,10 @@ pub struct Geometry {
     pub labels: Vec<Label>,
     /// Pictures lying in the node's x–y plane (maps, floor bitmaps), each its own texture.
     pub images: Vec<ImageQuad>,
+    /// Cameras the viewer renders the scene through, off screen (see [`VirtualView`]).
+    pub views: Vec<VirtualView>,
+    /// Pictures to be filtered and handed back, not drawn (see [`FilteredPicture`]).
+    pub filtered: Vec<FilteredPicture>,
 }
 
 impl Geometry {
@@ -68,6 +74,8 @@ impl Geometry {
         self.mesh.clear();
         self.labels.clear();
         self.images.clear();
+        self.views.clear();
+        self.filtered.clear();
     }
 
     pub fn is_empty(&self) -> bool {
@@ -77,6 +85,8 @@ impl Geometry {
             && self.mesh.is_empty()
             && self.labels.is_empty()
             && self.images.is_empty()
+            && self.views.is_empty()
+            && self.filtered.is_empty()
     }
 
     pub fn line(&mut self, a: Vec3, b: Vec3, color: Rgba) {

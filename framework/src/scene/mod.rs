@@ -6,18 +6,22 @@
 
 pub mod filter;
 pub mod filter_config;
+pub mod filtered_picture;
 mod geometry;
 pub mod image;
 pub mod polygon;
 pub mod pose;
+pub mod virtual_view;
 
 use std::collections::BTreeMap;
 
 use glam::{Affine3A, Vec3};
 
 pub use filter::{FilterChain, GlslKernel, Kernel};
+pub use filtered_picture::FilteredPicture;
 pub use geometry::{Geometry, Label, MeshVertex, Rgba, Vertex};
 pub use image::{ImageError, ImageQuad, PixelFormat, Pixels, Sampling};
+pub use virtual_view::{ViewError, ViewOutput, VirtualView};
 
 /// A node's identity, stable for its lifetime.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]

@@ -2,24 +2,28 @@
 //! rate and age.
 //!
 //! Parameters (all optional): `showWindow` (1) — whether the window is open; the person can
-//! close and reopen it from the plugin's panel, and the choice is written back on save.
+//! close and reopen it from the plugin's panel, and the choice is written back on save;
+//! `<filter>` kernels (radii in pixels) — the window shows the frame through them ([`filtered`]).
 //! Frames are decoded in [`Plugin::update`] only when a new one arrives ([`frames`]); the
 //! window is drawn by [`Plugin::windows`] through egui, never OpenGL.
 
+pub mod filtered;
 pub mod frames;
 pub mod window;
 
+use filtered::FrameFilter;
 use frames::{CameraFrames, Offered};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::plugin::{Metadata, Plugin, PluginContext};
 use player_proto::interfaces::camera::Camera;
-use window::CameraWindow;
+use window::{CameraWindow, Picture};
 
 pub struct CameraPlugin {
     config: PluginConfig,
     frames: CameraFrames,
     window: CameraWindow,
     show_window: bool,
+    filter: Option<FrameFilter>,
 }
 
 impl CameraPlugin {
@@ -28,14 +32,16 @@ impl CameraPlugin {
 
     pub fn create(
         config: PluginConfig,
-        _ctx: &mut PluginContext<'_>,
+        ctx: &mut PluginContext<'_>,
     ) -> Result<Box<dyn Plugin>, ConfigValueError> {
         let show_window = config.bool("showWindow", true)?;
+        let filter = FrameFilter::from_config(&config, ctx)?;
         Ok(Box::new(CameraPlugin {
             config,
             frames: CameraFrames::default(),
             window: CameraWindow::default(),
             show_window,
+            filter,
         }))
     }
 
@@ -58,10 +64,19 @@ impl Plugin for CameraPlugin {
 
     /// Takes the newest frame. The scene does not change: the image lives in its window.
     fn run(&mut self, ctx: &mut PluginContext<'_>) {
-        if let Some(sample) = ctx.device.and_then(|d| d.latest(Camera::DATA_STATE.kind()))
-            && let Offered::Failed(reason) = self.frames.offer(&sample)
-        {
-            tracing::debug!(plugin = %self.config.id, "camera frame not shown: {reason}");
+        let Some(sample) = ctx.device.and_then(|d| d.latest(Camera::DATA_STATE.kind())) else {
+            return;
+        };
+        match self.frames.offer(&sample) {
+            Offered::Failed(reason) => {
+                tracing::debug!(plugin = %self.config.id, "camera frame not shown: {reason}");
+            }
+            Offered::Decoded => {
+                if let (Some(filter), Some(image)) = (&self.filter, self.frames.image()) {
+                    filter.offer(image, ctx);
+                }
+            }
+            _ => {}
         }
     }
 
@@ -73,6 +88,17 @@ impl Plugin for CameraPlugin {
     fn windows(&mut self, egui_ctx: &egui::Context, ctx: &mut PluginContext<'_>) {
         let id = format!("{}#{}", self.config.id, self.config.origin);
         let title = self.title();
+        if let Some(filter) = &mut self.filter {
+            let filtered = filter.latest();
+            let picture = Picture {
+                image: filtered.as_ref().map(|(_, image)| &**image),
+                version: filtered.as_ref().map_or(0, |(generation, _)| *generation),
+                summary: format!("{} — {}", self.frames.summary(ctx.now), filter.describe()),
+            };
+            self.window
+                .show_picture(egui_ctx, &id, &title, picture, &mut self.show_window);
+            return;
+        }
         self.window.show(
             egui_ctx,
             &id,
@@ -83,5 +109,9 @@ impl Plugin for CameraPlugin {
         );
     }
 
-    fn clean(&mut self, _ctx: &mut PluginContext<'_>) {}
+    fn clean(&mut self, ctx: &mut PluginContext<'_>) {
+        if let Some(filter) = &self.filter {
+            ctx.scene.remove(filter.node());
+        }
+    }
 }

@@ -14,6 +14,14 @@ use crate::camera::frames::CameraFrames;
 /// How often an open window repaints to keep the age current while no frame comes.
 const AGE_TICK: Duration = Duration::from_millis(250);
 
+/// What a window shows: the picture (top row first), a number that changes with it, and a
+/// line about it.
+pub struct Picture<'a> {
+    pub image: Option<&'a RgbaImage>,
+    pub version: u64,
+    pub summary: String,
+}
+
 /// The texture of one camera and which frame it holds.
 #[derive(Default)]
 pub struct CameraWindow {
@@ -22,10 +30,10 @@ pub struct CameraWindow {
 }
 
 impl CameraWindow {
-    /// Hands egui the newest frame if it is not the one already uploaded.
-    fn upload(&mut self, ctx: &egui::Context, name: &str, frames: &CameraFrames) {
-        let Some(image) = frames.image() else { return };
-        if self.texture.is_some() && self.uploaded_version == frames.version() {
+    /// Hands egui the newest picture if it is not the one already uploaded.
+    fn upload(&mut self, ctx: &egui::Context, name: &str, image: Option<&RgbaImage>, version: u64) {
+        let Some(image) = image else { return };
+        if self.texture.is_some() && self.uploaded_version == version {
             return;
         }
         let max_side = ctx.input(|i| i.max_texture_side);
@@ -39,10 +47,11 @@ impl CameraWindow {
             Some(texture) => texture.set(color, options),
             None => self.texture = Some(ctx.load_texture(name, color, options)),
         }
-        self.uploaded_version = frames.version();
+        self.uploaded_version = version;
     }
 
-    /// Shows the window this pass. `open` turns false when the person closes it.
+    /// Shows the window of a Player camera this pass. `open` turns false when the person
+    /// closes it.
     pub fn show(
         &mut self,
         ctx: &egui::Context,
@@ -52,17 +61,34 @@ impl CameraWindow {
         now: Instant,
         open: &mut bool,
     ) {
+        let picture = Picture {
+            image: frames.image().map(|i| &**i),
+            version: frames.version(),
+            summary: frames.summary(now),
+        };
+        self.show_picture(ctx, id, title, picture, open);
+    }
+
+    /// Shows the window of any picture (a virtual camera's, a filtered frame) this pass.
+    pub fn show_picture(
+        &mut self,
+        ctx: &egui::Context,
+        id: &str,
+        title: &str,
+        picture: Picture<'_>,
+        open: &mut bool,
+    ) {
         if !*open {
             return;
         }
-        self.upload(ctx, id, frames);
-        let size = frames
-            .image()
+        self.upload(ctx, id, picture.image, picture.version);
+        let size = picture
+            .image
             .map_or(egui::vec2(320.0, 240.0), |i| {
                 egui::vec2(i.width() as f32, i.height() as f32)
             })
             .clamp(egui::vec2(300.0, 120.0), egui::vec2(1024.0, 768.0));
-        let summary = frames.summary(now);
+        let summary = picture.summary;
         let texture = self.texture.as_ref();
         let contents = |ui: &mut egui::Ui| {
             ui.label(&summary);

@@ -12,7 +12,8 @@ use framework::scene::Scene;
 use glam::{Vec2, Vec3};
 
 use crate::render::{
-    Lighting, OrbitCamera, POINT_SIZE_PX, Projection, SceneBatch, SceneRenderer, ScreenDetail,
+    Lighting, OrbitCamera, POINT_SIZE_PX, PictureFilters, Projection, SceneBatch, SceneRenderer,
+    ScreenDetail, ViewTargets,
 };
 
 /// GL-side state shared with the paint callback (which runs later, during painting).
@@ -24,6 +25,10 @@ struct GpuState {
     revision: u64,
     lighting: Lighting,
     failed: Option<String>,
+    /// Off-screen targets of the scene's virtual cameras.
+    views: ViewTargets,
+    /// Filters the pictures plugins show in their windows.
+    filters: PictureFilters,
 }
 
 /// What the person did in the view this frame, for the event handlers.
@@ -219,6 +224,10 @@ impl View3d {
                 return;
             };
             renderer.upload(gl, &state.batch, state.revision);
+            state.filters.run(gl, &state.batch.filtered);
+            if let Err(e) = state.views.render(gl, renderer, &state.batch.views) {
+                tracing::warn!("virtual cameras not drawn: {e}");
+            }
             let clip = info.clip_rect_in_pixels();
             // SAFETY: egui_glow made this context current and restores its state afterwards.
             unsafe {

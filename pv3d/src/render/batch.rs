@@ -2,7 +2,9 @@
 //! four GL calls however many robots there are. Buffers are reused from frame to frame.
 
 use bytemuck::{Pod, Zeroable};
-use framework::scene::{FilterChain, ImageQuad, Label, Pixels, Sampling, Scene, Vertex};
+use framework::scene::{
+    FilterChain, FilteredPicture, ImageQuad, Label, Pixels, Sampling, Scene, Vertex, VirtualView,
+};
 use glam::{Affine3A, Vec3};
 
 use super::screen_detail::{ScreenDetail, Simplifier};
@@ -47,6 +49,13 @@ impl BatchedImage {
     }
 }
 
+/// A virtual camera with its pose in the world, ready to be rendered through.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BatchedView {
+    pub view: VirtualView,
+    pub camera_to_world: Affine3A,
+}
+
 /// The scene flattened for drawing.
 #[derive(Debug, Default)]
 pub struct SceneBatch {
@@ -62,6 +71,10 @@ pub struct SceneBatch {
     pub labels: Vec<Label>,
     /// Pictures, each drawn with its own texture.
     pub images: Vec<BatchedImage>,
+    /// Virtual cameras, each rendered off screen before the view.
+    pub views: Vec<BatchedView>,
+    /// Pictures to filter and hand back, not to draw.
+    pub filtered: Vec<FilteredPicture>,
     /// One object's vertices in world space, before simplification.
     scratch: Vec<GpuVertex>,
     simplifier: Simplifier,
@@ -79,6 +92,8 @@ impl SceneBatch {
         self.mesh.clear();
         self.labels.clear();
         self.images.clear();
+        self.views.clear();
+        self.filtered.clear();
         for (id, object) in scene.iter() {
             let g = &object.geometry;
             if g.is_empty() || !scene.is_shown(id) {
@@ -119,6 +134,11 @@ impl SceneBatch {
             }));
             self.images
                 .extend(g.images.iter().map(|i| BatchedImage::placed(i, &to_world)));
+            self.views.extend(g.views.iter().map(|v| BatchedView {
+                view: v.clone(),
+                camera_to_world: to_world * v.pose,
+            }));
+            self.filtered.extend(g.filtered.iter().cloned());
         }
     }
 

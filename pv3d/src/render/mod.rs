@@ -4,6 +4,7 @@
 
 pub mod batch;
 pub mod camera;
+pub mod filtered_pictures;
 pub mod gl_renderer;
 pub mod gl_state;
 pub mod grid_mipmaps;
@@ -12,8 +13,11 @@ pub mod kernels;
 pub mod screen_detail;
 pub mod shader;
 pub mod texture;
+pub mod virtual_views;
 
-pub use batch::{BatchedImage, SceneBatch};
+pub use batch::{BatchedImage, BatchedView, SceneBatch};
 pub use camera::{OrbitCamera, Projection};
+pub use filtered_pictures::PictureFilters;
 pub use gl_renderer::{Lighting, POINT_SIZE_PX, SceneRenderer};
 pub use screen_detail::{ScreenDetail, Simplifier};
+pub use virtual_views::{ViewTargets, view_projection};

@@ -1,0 +1,4 @@
+//! LaTeX math in the world: formulas typeset to transparent pictures ([`typeset`]), and
+//! `libpv3d_formula`, a formula label that follows its robot ([`label`]).
+pub mod label;
+pub mod typeset;

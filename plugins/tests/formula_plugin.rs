@@ -1,0 +1,67 @@
+//! The formula plugin: a typeset formula that follows its robot's position (not its heading),
+//! and a formula that does not parse refused with the parameter named.
+
+mod support;
+
+use framework::PluginConfig;
+use framework::config::{DeviceRef, Param};
+use glam::{Affine3A, Quat, Vec3};
+use support::harness;
+
+fn config(text: &str) -> PluginConfig {
+    let mut parent = Param::new("parentNode", "");
+    parent.attributes = vec![("interface".into(), "position2d".into())];
+    PluginConfig {
+        library: "libpv3d_formula".into(),
+        id: "speed".into(),
+        device: Some(DeviceRef {
+            host: "localhost".into(),
+            port: 6665,
+            addr: "position2d:0".parse().unwrap(),
+            driver: "stage".into(),
+        }),
+        params: vec![
+            parent,
+            Param::new("text", text),
+            Param::new("offset", "0.5 0 1"),
+        ],
+        origin: "test.xml:1:1".into(),
+        ..PluginConfig::default()
+    }
+}
+
+#[test]
+fn the_formula_follows_its_robot_and_stays_north_up() {
+    let mut h = harness();
+    let robot = h.robot_at(2.0);
+    let mut plugin = h.make(config(r"$v = \omega r$")).unwrap();
+    plugin.run(&mut h.ctx());
+    let node = plugin.node().unwrap();
+    let picture = &h.scene.get(node).unwrap().geometry.images[0];
+    assert!(picture.size.x > picture.size.y && picture.size.x > 0.1);
+    let at = |h: &framework::testing::Harness| h.scene.world_transform(node);
+    assert!((at(&h).transform_point3(Vec3::ZERO) - Vec3::new(2.5, 0.0, 1.0)).length() < 1e-5);
+
+    // The robot drives to (4, 1) and turns: the formula goes along, unturned.
+    h.scene.get_mut(robot).unwrap().transform =
+        Affine3A::from_rotation_translation(Quat::from_rotation_z(1.0), Vec3::new(4.0, 1.0, 0.0));
+    plugin.run(&mut h.ctx());
+    let moved = at(&h);
+    assert!((moved.transform_point3(Vec3::ZERO) - Vec3::new(4.5, 1.0, 1.0)).length() < 1e-5);
+    assert!((moved.transform_vector3(Vec3::X) - Vec3::X).length() < 1e-5);
+    assert!(
+        !h.run_changes_scene(plugin.as_mut()),
+        "a robot standing still moves nothing"
+    );
+}
+
+#[test]
+fn a_formula_that_does_not_parse_is_refused_by_name() {
+    for text in [r"$\frac{1}{$", "no dollars", "$$"] {
+        let error = harness()
+            .make(config(text))
+            .err()
+            .unwrap_or_else(|| panic!("{text} is refused"));
+        assert!(error.to_string().contains("text"), "{text}: {error}");
+    }
+}
