@@ -14,6 +14,7 @@ mod actions;
 mod body;
 mod driving;
 mod goal;
+mod planner_goal;
 mod teleop;
 mod trail;
 mod widgets;
@@ -329,7 +330,9 @@ impl Plugin for Position2dPlugin {
                 Handled::Yes
             }
             InputEvent::GroundClicked(point) if self.active => {
-                self.set_goal(Goal::Point(point.truncate()), ctx);
+                if !self.goal_to_planner(point.truncate(), ctx) {
+                    self.set_goal(Goal::Point(point.truncate()), ctx);
+                }
                 Handled::Yes
             }
             InputEvent::TargetDragged(point) if self.active => {
