@@ -101,7 +101,8 @@ mod tests {
         assert_eq!(robot_at(&scene, Vec2::new(1.2, 0.9)), Some(near));
         assert_eq!(robot_at(&scene, Vec2::new(2.5, 1.0)), None);
 
-        claim(&mut scene, planner, robot_at(&scene, Vec2::new(1.2, 0.9)));
+        let reported = robot_at(&scene, Vec2::new(1.2, 0.9));
+        claim(&mut scene, planner, reported);
         assert_eq!(planner_of(&scene, near), Some(planner));
         assert_eq!(planner_of(&scene, far), None);
         claim(&mut scene, planner, Some(far));
