@@ -61,7 +61,8 @@ impl PowerPlugin {
         ctx: &mut PluginContext<'_>,
     ) -> Result<Box<dyn Plugin>, ConfigValueError> {
         let thresholds = charge::Thresholds {
-            low_percent: config.number("lowPercent", f64::from(DEFAULT_LOW_PERCENT), 0.0..=100.0)? as f32,
+            low_percent: config.number("lowPercent", f64::from(DEFAULT_LOW_PERCENT), 0.0..=100.0)?
+                as f32,
             low_volts: config.number("lowVolts", 0.0, 0.0..=1000.0)? as f32,
         };
         let height = config.number("height", 0.6, -10.0..=10.0)? as f32;
