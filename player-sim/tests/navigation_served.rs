@@ -31,8 +31,8 @@ fn start() -> (Running, Client) {
     let cfgs = cfgs_beside(&world_file);
     assert_eq!(
         cfgs.len(),
-        2,
-        "navigation.cfg and navigation-nav.cfg: {cfgs:?}"
+        3,
+        "navigation.cfg, navigation-sim.cfg and navigation-nav.cfg: {cfgs:?}"
     );
     let paths: Vec<_> = cfgs.iter().map(|p| p.as_path()).collect();
     let devices = from_cfgs(&paths, &world, &mut Vec::new()).unwrap();

@@ -6,6 +6,7 @@ mod gripper;
 mod localize;
 mod map;
 mod planner;
+mod power;
 mod speech;
 
 use std::sync::{Arc, Mutex};
@@ -20,6 +21,7 @@ use player_proto::interfaces::gripper::Gripper;
 use player_proto::interfaces::kind::BodyKind;
 use player_proto::interfaces::laser::{Laser, LaserConfig, LaserGeometry, LaserScan};
 use player_proto::interfaces::position2d::{Position2d, Position2dData, Position2dGeometry};
+use player_proto::interfaces::power::Power;
 use player_proto::interfaces::ranger::{
     Ranger, RangerConfig, RangerGeometry, RangerIntensities, RangerRanges,
 };
@@ -200,9 +202,10 @@ impl SimDevice {
             Source::Localize(driver) => localize::answer(&mut sim, &driver, request),
             Source::Estimate(_) => Reply::Nack,
             Source::Planner(driver) => planner::answer(&mut sim, &driver, request),
-            Source::Blobfinder { .. } | Source::SpeechRecognition(_) | Source::Speech(_) => {
-                Reply::Nack
-            }
+            Source::Blobfinder { .. }
+            | Source::SpeechRecognition(_)
+            | Source::Speech(_)
+            | Source::Power { .. } => Reply::Nack,
             Source::Gripper { robot, gripper } => {
                 if asks(request, Gripper::REQ_GET_GEOM) {
                     let geometry = gripper::geometry(&sim, robot, gripper);
@@ -270,6 +273,7 @@ impl SimDevice {
             Source::Gripper { robot, gripper } => {
                 data_of(Gripper::DATA_STATE, gripper::data(sim, robot, gripper))
             }
+            Source::Power { robot } => data_of(Power::DATA_STATE, power::data(sim, robot)),
             Source::Position { robot } => {
                 let r = &sim.robots[robot];
                 let (vx, vy, va) = r.velocity;

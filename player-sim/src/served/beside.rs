@@ -1,25 +1,32 @@
-//! The `.cfg` files that run a world when none are named: `<world>.cfg` beside it, and, for a
-//! world run as Player's two-process navigation setup, `<world>-nav.cfg` after it (its
-//! `passthrough` lines reach the devices of the first).
+//! The `.cfg` files that run a world when none are named: `<world>.cfg` beside it; then
+//! `<world>-sim.cfg`, what only player-sim serves (real Player + Stage 4 would refuse it, so it
+//! stays out of the file real Player runs); and, for a world run as Player's two-process
+//! navigation setup, `<world>-nav.cfg` (its `passthrough` lines reach the devices of the first).
 
 use std::path::{Path, PathBuf};
 
+/// The suffix of the file of what only player-sim serves: `navigation-sim.cfg`.
+const SIM_SUFFIX: &str = "-sim";
 /// The suffix of a navigation half's file name: `navigation.world` → `navigation-nav.cfg`.
 const NAV_SUFFIX: &str = "-nav";
 
-/// The `.cfg` files beside `world` that exist, in the order to read them.
+/// The `.cfg` files beside `world` that exist, in the order to read them. The others extend
+/// the Stage half, so without it none is read.
 pub fn cfgs_beside(world: &Path) -> Vec<PathBuf> {
     let stage = world.with_extension("cfg");
-    let nav = world
-        .file_stem()
-        .map(|stem| {
+    if !stage.exists() {
+        return Vec::new();
+    }
+    let beside = |suffix: &str| {
+        world.file_stem().map(|stem| {
             let mut name = stem.to_os_string();
-            name.push(NAV_SUFFIX);
+            name.push(suffix);
             world.with_file_name(name).with_extension("cfg")
         })
-        .filter(|_| stage.exists());
+    };
     std::iter::once(stage)
-        .chain(nav)
+        .chain(beside(SIM_SUFFIX))
+        .chain(beside(NAV_SUFFIX))
         .filter(|p| p.exists())
         .collect()
 }
@@ -39,6 +46,15 @@ mod tests {
         assert_eq!(
             cfgs_beside(&world),
             vec![dir.path().join("w.cfg"), dir.path().join("w-nav.cfg")]
+        );
+        std::fs::write(dir.path().join("w-sim.cfg"), "").unwrap();
+        assert_eq!(
+            cfgs_beside(&world),
+            vec![
+                dir.path().join("w.cfg"),
+                dir.path().join("w-sim.cfg"),
+                dir.path().join("w-nav.cfg")
+            ]
         );
     }
 }

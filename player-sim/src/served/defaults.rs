@@ -82,6 +82,9 @@ pub fn default_devices(world: &World, base: u16) -> Vec<ServedDevice> {
                 Source::Gripper { robot, gripper },
             );
         }
+        if spec.battery.is_some() {
+            add(Interface::POWER, 0, "stage", Source::Power { robot });
+        }
         for camera in 0..spec.cameras.len() {
             add(
                 Interface::CAMERA,

@@ -62,6 +62,10 @@ pub enum Source {
         robot: usize,
         gripper: usize,
     },
+    /// A robot's power pack (the world file's `joules`).
+    Power {
+        robot: usize,
+    },
     /// A map image read by Player's `mapfile` driver.
     Map(SharedMap),
     /// The hypotheses of a localization driver (`amcl`, `fakelocalize`).

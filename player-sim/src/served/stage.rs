@@ -76,6 +76,14 @@ pub(super) fn source(
                 spec.blobfinders.len(),
             )?,
         },
+        // Stage 4's plugin refuses `power` ("doesn't support interface type 2"); Stage 3
+        // served the model's power pack, as player-sim does.
+        Interface::POWER if spec.battery.is_some() => Source::Power { robot },
+        Interface::POWER => {
+            return Err(driver.error(format!(
+                "{text}: {model} has no power pack in the world (give it `joules`)"
+            )));
+        }
         Interface::GRIPPER => Source::Gripper {
             robot,
             gripper: next(&mut counts.grippers, "gripper", spec.grippers.len())?,

@@ -2,6 +2,7 @@
 //! that stop a robot and set its stall flag, and sensors by ray casting. Deterministic: the
 //! same world and commands give the same trajectory.
 
+mod battery;
 mod blobfinder;
 mod camera;
 mod geometry;
@@ -13,6 +14,7 @@ mod shapes;
 mod walking;
 mod wander;
 
+pub use battery::BatteryState;
 pub use blobfinder::{Blob, blobs};
 pub use camera::{Frame, render_camera};
 pub use geometry::GroundBox;
@@ -50,6 +52,8 @@ pub struct RobotState {
     pub wander: WanderState,
     /// One per gripper the robot has.
     pub grippers: Vec<GripperState>,
+    /// Its power pack, if the world gives it one.
+    pub battery: Option<BatteryState>,
 }
 
 /// The simulated world in motion.
@@ -89,6 +93,10 @@ impl Simulation {
                 command: STOP,
                 wander: WanderState::default(),
                 grippers: r.grippers.iter().map(GripperState::new).collect(),
+                battery: r.battery.map(|b| BatteryState {
+                    joules: b.stored,
+                    watts: 0.0,
+                }),
             })
             .collect();
         let carried_by = vec![None; world.obstacles.len()];
@@ -218,6 +226,7 @@ impl Simulation {
                 self.robots[i].velocity = (vx, vy, va);
             }
         }
+        self.drain_batteries(dt);
         self.update_localizers();
         self.carry();
         for robot in 0..self.robots.len() {

@@ -4,6 +4,7 @@
 //! in them). What the simulator does not model is reported once as "ignored: <what> at
 //! file:line".
 
+mod battery;
 mod bitmap;
 mod blobfinder;
 mod blocks;
@@ -19,6 +20,7 @@ mod robot;
 
 use std::path::Path;
 
+pub use battery::BatterySpec;
 pub use bitmap::{Face, OccupancyGrid};
 pub use blobfinder::BlobfinderSpec;
 pub use blocks::{Polygon, placed};
@@ -121,6 +123,8 @@ pub struct RobotSpec {
     pub grippers: Vec<GripperSpec>,
     /// Stage's `ctrl`: what drives the robot besides its clients.
     pub controller: Option<Controller>,
+    /// Its power pack, when the model gives it `joules` (or `kjoules`) as Stage reads them.
+    pub battery: Option<BatterySpec>,
 }
 
 /// A box that stops robots and beams (landmarks, furniture).

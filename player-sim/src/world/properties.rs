@@ -10,6 +10,12 @@ use crate::worldfile::{Pos, Property, WorldFileError};
 pub(super) const READ: &[&str] = &[
     "name",
     "pose",
+    "joules",
+    "joules_capacity",
+    "kjoules",
+    "kjoules_capacity",
+    "watts",
+    "mass",
     "size",
     "color",
     "color_rgba",

@@ -9,7 +9,9 @@ use super::properties::{
     color_of, err, fiducial_of, name_of, number, numbers, opt_number, origin_of, pose_from,
     pose_of, ranger_return_of, size_of, string,
 };
-use super::{CameraSpec, Drive, FiducialSpec, Pose, RangerSpec, RobotSpec, SensorSpec, World};
+use super::{
+    BatterySpec, CameraSpec, Drive, FiducialSpec, Pose, RangerSpec, RobotSpec, SensorSpec, World,
+};
 use crate::worldfile::WorldFileError;
 
 /// Models nested deeper than this under a robot are refused (no real robot is built so).
@@ -54,6 +56,7 @@ impl World {
             blobfinders: Vec::new(),
             grippers: Vec::new(),
             controller: None,
+            battery: BatterySpec::of(model)?,
         };
         if let Some(p) = model.get("gripper_return") {
             self.ignore(

@@ -6,12 +6,15 @@
 //! with Tab, or by clicking its goal flag). While it is active, a click on the ground sends
 //! the planner a goal there, instead of the robot driving straight to it; a drag gives the
 //! goal's heading too (press at the goal, drag the way to face), as the localizer's pose is
-//! given. Selecting the robot itself still drives it directly.
+//! given. Selecting the robot itself and clicking the ground sends the planner the goal too,
+//! when this planner drives that robot ([`handoff`] says how they are paired); a robot with no
+//! planner of its own still drives straight there.
 //!
 //! Parameters: `color` (#f0c828). The plan is in the map's frame, the scene's world frame: it
 //! hangs below no robot.
 
 pub mod draw;
+pub mod handoff;
 pub mod plan;
 
 use glam::Vec3;
@@ -146,6 +149,18 @@ impl Plugin for PlannerPlugin {
                 self.waypoints_reply = Some(Awaited::fetch(ctx.device, Planner::REQ_GET_WAYPOINTS));
             }
             self.state = Some(state);
+            changed = true;
+        }
+        if let Some(state) = self.state {
+            let at = glam::Vec2::new(state.pos.px as f32, state.pos.py as f32);
+            let robot = handoff::robot_at(ctx.scene, at);
+            handoff::claim(ctx.scene, self.node, robot);
+        }
+        if let Some(point) = handoff::take_goal(ctx.scene, self.node) {
+            let keep = self.state.map_or(0.0, |s| s.pos.pa);
+            let goal = Pose2d::new(f64::from(point.x), f64::from(point.y), keep);
+            tracing::info!(plugin = %self.config.id, "goal from the selected robot: {goal:?}");
+            self.send_goal(goal, ctx);
             changed = true;
         }
         if changed {

@@ -21,6 +21,7 @@ mod condition;
 mod driving;
 mod goal;
 mod goal_check;
+mod planner_goal;
 mod teleop;
 mod trail;
 mod widgets;
@@ -360,7 +361,9 @@ impl Plugin for Position2dPlugin {
                 Handled::Yes
             }
             InputEvent::GroundClicked(point) if self.active => {
-                self.set_goal(Goal::Point(point.truncate()), ctx);
+                if !self.goal_to_planner(point.truncate(), ctx) {
+                    self.set_goal(Goal::Point(point.truncate()), ctx);
+                }
                 Handled::Yes
             }
             InputEvent::TargetDragged(point) if self.active => {

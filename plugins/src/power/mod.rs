@@ -21,6 +21,21 @@ use framework::scene::{NodeId, Object3D, Rgba, Scene};
 
 pub use charge::{Charge, Level};
 
+/// `lowPercent` when the composition gives none; the status panel, which sees no plugin's
+/// parameters, warns by it too.
+pub const DEFAULT_LOW_PERCENT: f32 = 20.0;
+
+/// The status panel's note on a reading: the warning when the battery is low by the default
+/// thresholds, else nothing.
+pub fn low_note(data: &PowerData) -> Option<String> {
+    let thresholds = charge::Thresholds {
+        low_percent: DEFAULT_LOW_PERCENT,
+        low_volts: 0.0,
+    };
+    let charge = Charge::read(data, &thresholds);
+    (charge.level != Level::Fine).then(|| charge.warning())
+}
+
 /// The gauge's size when full, m.
 const GAUGE: Vec3 = Vec3::new(0.4, 0.06, 0.06);
 
@@ -46,7 +61,8 @@ impl PowerPlugin {
         ctx: &mut PluginContext<'_>,
     ) -> Result<Box<dyn Plugin>, ConfigValueError> {
         let thresholds = charge::Thresholds {
-            low_percent: config.number("lowPercent", 20.0, 0.0..=100.0)? as f32,
+            low_percent: config.number("lowPercent", f64::from(DEFAULT_LOW_PERCENT), 0.0..=100.0)?
+                as f32,
             low_volts: config.number("lowVolts", 0.0, 0.0..=1000.0)? as f32,
         };
         let height = config.number("height", 0.6, -10.0..=10.0)? as f32;

@@ -1,6 +1,6 @@
 //! The robots' status: each server's connection state, each used device's message rate and
 //! the age of its newest data — so a person sees freshness and lag at a glance — and the
-//! devices whose plugins wait for them to come back.
+//! devices whose plugins wait for them to come back, and a note on a battery running low.
 
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
@@ -8,11 +8,15 @@ use std::time::{Duration, Instant};
 use eframe::egui::{self, Color32, Ui};
 use player_proto::client::{Client, ConnectionState};
 use player_proto::interfaces::kind::MessageKind;
-use player_proto::wire::DevAddr;
+use player_proto::interfaces::power::Power;
+use player_proto::message::Body;
+use player_proto::wire::{DevAddr, Interface};
 
 use super::viewer::{GONE, GONE_COLOR};
 use crate::composition::FoundDevice;
 use crate::robots::RobotManager;
+
+const LOW_BATTERY_COLOR: Color32 = Color32::from_rgb(230, 80, 60);
 
 /// Rates are computed over windows of this length.
 const RATE_WINDOW: Duration = Duration::from_secs(1);
@@ -81,6 +85,7 @@ impl StatusPanel {
         };
         ui.colored_label(color, state_text);
         let mut cells = Vec::new();
+        let mut notes = Vec::new();
         for (_, _, addr) in used.iter().filter(|(h, p, _)| h == host && *p == port) {
             let count = client.stats(*addr).updates;
             let entry = self
@@ -103,6 +108,7 @@ impl StatusPanel {
                 "{}:{} {:.0} Hz, {age}",
                 addr.interf, addr.index, entry.2
             ));
+            notes.extend(battery_note(client, *addr));
         }
         let gone_here: Vec<String> = gone
             .iter()
@@ -114,6 +120,21 @@ impl StatusPanel {
             if !gone_here.is_empty() {
                 ui.colored_label(GONE_COLOR, gone_here.join("   "));
             }
+            if !notes.is_empty() {
+                ui.colored_label(LOW_BATTERY_COLOR, notes.join("   "));
+            }
         });
+    }
+}
+
+/// A power device's "battery low" note, by the power plugin's default threshold.
+fn battery_note(client: &Client, addr: DevAddr) -> Option<String> {
+    if addr.interf != Interface::POWER {
+        return None;
+    }
+    let newest = client.latest(addr, Power::DATA_STATE.subtype())?;
+    match newest.message.body {
+        Body::Power(Power::State(data)) => plugins::power::low_note(&data),
+        _ => None,
     }
 }
