@@ -99,11 +99,43 @@ fn screenshot(composition: &str, name: &str) -> image::RgbaImage {
 
 /// Pixels of a grey in `grey` within the 3D view (right of the item tree, above the status).
 fn count(image: &image::RgbaImage, grey: std::ops::RangeInclusive<u8>) -> usize {
+    let (left, top, right, bottom) = map_area(image);
     image
         .enumerate_pixels()
-        .filter(|(x, y, _)| *x > VIEW_LEFT && *y < VIEW_BOTTOM)
-        .filter(|(_, _, p)| grey.contains(&p[0]) && p[0] == p[1] && p[1] == p[2])
+        .filter(|(x, y, _)| (left..=right).contains(x) && (top..=bottom).contains(y))
+        .filter(|(_, _, p)| is_grey(p, &grey))
         .count()
+}
+
+fn is_grey(p: &image::Rgba<u8>, grey: &std::ops::RangeInclusive<u8>) -> bool {
+    grey.contains(&p[0]) && p[0] == p[1] && p[1] == p[2]
+}
+
+/// The map's part of the view: the box round its free and unknown cells, widened by a few
+/// pixels for the outer walls, so that widgets floating over the view (the command line) are
+/// not counted.
+fn map_area(image: &image::RgbaImage) -> (u32, u32, u32, u32) {
+    const WALL_MARGIN: u32 = 12;
+    let (free, unknown) = (225..=245, 140..=160);
+    let (mut left, mut top, mut right, mut bottom) = (u32::MAX, u32::MAX, 0, 0);
+    for (x, y, p) in image.enumerate_pixels() {
+        if x <= VIEW_LEFT || y >= VIEW_BOTTOM {
+            continue;
+        }
+        // The rows from the free cells alone: a hint's grey text below the map is not map.
+        if is_grey(p, &free) {
+            (top, bottom) = (top.min(y), bottom.max(y));
+        }
+        if is_grey(p, &free) || is_grey(p, &unknown) {
+            (left, right) = (left.min(x), right.max(x));
+        }
+    }
+    (
+        left.saturating_sub(WALL_MARGIN).max(VIEW_LEFT),
+        top.saturating_sub(WALL_MARGIN),
+        right + WALL_MARGIN,
+        (bottom + WALL_MARGIN).min(VIEW_BOTTOM),
+    )
 }
 
 /// Where the 3D view lies in an 800 × 600 screenshot.
