@@ -260,9 +260,21 @@ impl Handler<'_> {
         let key = (interf, index);
         let granted = match req.access {
             OPEN_MODE => {
-                let mut subs = self.session.subscriptions.lock().expect("subscriptions");
-                if subs.contains(&key) || device.on_subscribe() {
-                    subs.insert(key);
+                // The device's hook runs with no session lock held: a device may take its own
+                // locks (a simulation's), which a publishing thread holds while it asks who is
+                // subscribed — holding both here, in the other order, deadlocked the two.
+                let subscribed = self
+                    .session
+                    .subscriptions
+                    .lock()
+                    .expect("subscriptions")
+                    .contains(&key);
+                if subscribed || device.on_subscribe() {
+                    self.session
+                        .subscriptions
+                        .lock()
+                        .expect("subscriptions")
+                        .insert(key);
                     OPEN_MODE
                 } else {
                     ERROR_MODE
