@@ -59,9 +59,13 @@ fn a_recorded_session_holds_every_message_as_it_crossed_the_wire() {
     let mut at: DevAddr = "laser:0".parse().unwrap();
     at.robot = u32::from(port);
     for id in 1..=SCANS {
-        server.publisher().publish(at, 1, scan(id), f64::from(id));
+        let subtype = Laser::DATA_SCAN.subtype();
+        server
+            .publisher()
+            .publish(at, subtype, scan(id), f64::from(id));
     }
-    for _ in 0..SCANS {
+    // The notifier also runs on changes of connection state: count the scans kept.
+    while client.stats(at).messages < u64::from(SCANS) {
         arrivals.recv_timeout(WAIT).expect("every scan arrives");
     }
     client.close();
