@@ -4,6 +4,8 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::composition::{Composition, ParserRegistry};
+
 /// Where the demo's files are: the current directory if it is a checkout, else the checkout
 /// this program was built from.
 pub fn demo_root() -> PathBuf {
@@ -24,8 +26,37 @@ pub fn world_file() -> PathBuf {
     demo_root().join("stage-worlds/multirobot.world")
 }
 
-/// The composition for a world given with `--world` and no composition: every robot's
-/// position2d, lasers, sonars, fiducials and cameras, on the world's floorplan.
-pub fn world_composition_file() -> PathBuf {
-    demo_root().join("configs/stage-world.pv3d.xml")
+/// The composition for a world given with `--world` and no composition: the world's own,
+/// `configs/<world>.pv3d.xml`, when there is one that names no server (it was written for
+/// whatever ports the world is served on: `navigation.world` gets its map, localizer and
+/// planner); otherwise every robot's position2d, lasers, sonars, fiducials and cameras, on the
+/// world's floorplan (`configs/stage-world.pv3d.xml`).
+pub fn world_composition_file(world: &Path) -> PathBuf {
+    let own = world.file_stem().map(|stem| {
+        demo_root()
+            .join("configs")
+            .join(stem)
+            .with_extension("pv3d.xml")
+    });
+    let names_no_server = |path: &PathBuf| {
+        Composition::load_files(std::slice::from_ref(path), &ParserRegistry::standard())
+            .is_ok_and(|c| c.clients.is_empty())
+    };
+    own.filter(names_no_server)
+        .unwrap_or_else(|| demo_root().join("configs/stage-world.pv3d.xml"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_world_with_a_composition_of_its_own_naming_no_server_gets_it() {
+        let chosen = |world: &str| world_composition_file(&demo_root().join(world));
+        assert!(chosen("stage-worlds/navigation.world").ends_with("configs/navigation.pv3d.xml"));
+        // classroom.pv3d.xml names its servers' ports: a world run on free ports needs the
+        // composition that names none.
+        assert!(chosen("stage-worlds/classroom.world").ends_with("configs/stage-world.pv3d.xml"));
+        assert!(chosen("stage-worlds/swarm.world").ends_with("configs/stage-world.pv3d.xml"));
+    }
 }

@@ -29,7 +29,8 @@ struct Cli {
     demo: bool,
 
     /// Simulate this Stage world (and the .cfg beside it) in-process on free ports and show
-    /// it, with configs/stage-world.pv3d.xml unless compositions are given.
+    /// it, with the world's own configs/<world>.pv3d.xml if it names no server, else
+    /// configs/stage-world.pv3d.xml, unless compositions are given.
     #[arg(long, value_name = "WORLD", conflicts_with = "demo")]
     world: Option<PathBuf>,
 
@@ -134,8 +135,8 @@ fn main() -> Result<()> {
             cli.files.push(pv3d::demo::composition_file());
         }
     }
-    if cli.world.is_some() && cli.files.is_empty() {
-        cli.files.push(pv3d::demo::world_composition_file());
+    if let Some(world) = cli.world.as_deref().filter(|_| cli.files.is_empty()) {
+        cli.files.push(pv3d::demo::world_composition_file(world));
     }
     if !(0.0..=1000.0).contains(&cli.speedup) {
         bail!("--speedup must be from 0 (as fast as possible) to 1000");

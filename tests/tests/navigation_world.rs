@@ -28,7 +28,7 @@ fn a_goal_sent_to_the_served_navigation_world_brings_the_robot_there() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let world = root.join("stage-worlds/navigation.world");
     let mut composition = Composition::load_files(
-        &[pv3d::demo::world_composition_file()],
+        &[pv3d::demo::world_composition_file(&world)],
         &ParserRegistry::standard(),
     )
     .unwrap();
