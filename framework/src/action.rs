@@ -85,6 +85,28 @@ impl ObjectRef {
     }
 }
 
+impl ObjectRef {
+    /// The object that took this one's place once it is lost: the nearest to `near`, within
+    /// `within` m, of the same kind (carrying all of its tags that are no identity — `person`,
+    /// `fiducial`). A tracker that loses a walker for a scan numbers them anew when it finds
+    /// them again (`person 2` comes back as `person 3`); a follower should go on following.
+    /// Only tracked objects (with an identity tag) have successors: a robot is one robot.
+    pub fn successor(&self, scene: &Scene, near: Vec3, within: f32) -> Option<ObjectRef> {
+        self.identity_tag()?;
+        let kind: Vec<&String> = self.tags.iter().filter(|t| !t.contains(':')).collect();
+        if kind.is_empty() {
+            return None;
+        }
+        scene
+            .iter()
+            .filter(|(_, o)| kind.iter().all(|k| o.tags.contains(k)))
+            .map(|(id, _)| (id, Vec3::from(scene.world_transform(id).translation)))
+            .filter(|(_, at)| at.distance(near) <= within)
+            .min_by(|a, b| a.1.distance(near).total_cmp(&b.1.distance(near)))
+            .and_then(|(id, _)| ObjectRef::of(scene, id))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use glam::Affine3A;
@@ -97,6 +119,45 @@ mod tests {
         o.tags = vec!["fiducial".into(), format!("id:{id}"), "person".into()];
         o.transform = Affine3A::from_translation(Vec3::new(x, 1.0, 0.0));
         scene.add(o)
+    }
+
+    #[test]
+    fn a_lost_object_is_succeeded_by_the_nearest_of_its_kind_within_reach() {
+        let mut scene = Scene::new();
+        let person = |scene: &mut Scene, name: &str, x: f32| {
+            let mut o = Object3D::new(name);
+            o.tags = vec!["person".into(), format!("id:{name}")];
+            o.transform = Affine3A::from_translation(Vec3::new(x, 0.0, 0.0));
+            scene.add(o)
+        };
+        let lost = person(&mut scene, "p2", 0.0);
+        let followed = ObjectRef::of(&scene, lost).unwrap();
+        scene.remove(lost);
+        person(&mut scene, "p3", 0.7);
+        person(&mut scene, "p4", 3.0);
+        let next = followed.successor(&scene, Vec3::ZERO, 1.5).unwrap();
+        assert_eq!(next.name, "p3");
+        assert!(
+            followed
+                .successor(&scene, Vec3::new(9.0, 0.0, 0.0), 1.5)
+                .is_none()
+        );
+        let nameless = ObjectRef {
+            tags: vec!["id:p2".into()],
+            ..followed
+        };
+        assert!(
+            nameless.successor(&scene, Vec3::ZERO, 1.5).is_none(),
+            "no kind"
+        );
+        let untracked = ObjectRef {
+            tags: vec!["person".into()],
+            ..nameless
+        };
+        assert!(
+            untracked.successor(&scene, Vec3::ZERO, 1.5).is_none(),
+            "no identity"
+        );
     }
 
     #[test]

@@ -195,3 +195,98 @@ fn a_robot_asks_about_its_goal_and_gives_up_one_in_keep_out() {
     let here = robot.answer(&ask("where are you"), &mut w.ctx()).unwrap();
     assert_eq!(here.body.child("goal").unwrap().number("x"), Ok(5.0));
 }
+
+#[test]
+fn a_robot_goes_up_to_or_follows_an_object_named_by_name() {
+    let mut w = harness();
+    let mut robot = w.make(config()).unwrap();
+    odometry(&w.device, 0.0, 0.0);
+    robot.run(&mut w.ctx());
+    let mut other = Object3D::new("robot2");
+    other.tags = vec!["robot".into()];
+    other.transform = glam::Affine3A::from_translation(Vec3::new(4.0, 0.0, 0.0));
+    w.scene.add(other);
+
+    let go = robot
+        .answer(&ask("go to").with_attr("object", "robot2"), &mut w.ctx())
+        .unwrap();
+    assert!(go.is_done(), "{go:?}");
+    assert_eq!(go.body.name, "going to");
+    let here = robot.answer(&ask("where are you"), &mut w.ctx()).unwrap();
+    let goal_x = here.body.child("goal").unwrap().number("x").unwrap();
+    assert!(
+        (goal_x - 3.2).abs() < 1e-3,
+        "stops followDistance (0.8 m) short: {goal_x}"
+    );
+
+    let follow = robot
+        .answer(&ask("follow").with_attr("object", "robot2"), &mut w.ctx())
+        .unwrap();
+    assert_eq!(follow.body.attr("name"), Some("robot2"));
+    let ghost = robot
+        .answer(&ask("follow").with_attr("object", "robot9"), &mut w.ctx())
+        .unwrap();
+    assert_eq!(ghost.error, FAILED);
+    assert!(ghost.body.text.contains("robot9"), "{:?}", ghost.body);
+    let nothing = robot.answer(&ask("follow"), &mut w.ctx()).unwrap();
+    assert_eq!(nothing.error, BAD_ARGUMENTS);
+}
+
+#[test]
+fn a_robot_holds_still_while_the_way_ahead_enters_keep_out() {
+    use framework::query::Reply;
+    let zones = |names: &[&str]| {
+        let mut body = XmlElement::new("zones");
+        for name in names {
+            body.children
+                .push(XmlElement::new("zone").with_attr("name", *name));
+        }
+        Ok(Reply::done(body))
+    };
+    let mut w = harness();
+    let mut robot = w.make(config()).unwrap();
+    odometry(&w.device, 0.0, 0.0);
+    robot.run(&mut w.ctx());
+    let mut person = Object3D::new("person 1");
+    person.tags = vec!["person".into()];
+    person.transform = glam::Affine3A::from_translation(Vec3::new(3.0, 0.0, 0.0));
+    w.scene.add(person);
+    robot
+        .answer(&ask("follow").with_attr("tag", "person"), &mut w.ctx())
+        .unwrap();
+
+    let mut outbox = Vec::new();
+    robot.run(&mut w.ctx().with_outbox(&mut outbox));
+    let (speed, _) = last_velocity(&w.device).expect("driving");
+    assert!(speed > 0.0);
+    let about: Vec<_> = outbox.iter().filter_map(|q| q.body.attr("about")).collect();
+    assert_eq!(about, ["robot", "way ahead"], "{outbox:?}");
+    let ahead = outbox[1].point().unwrap();
+    assert!(
+        (ahead.0 - f64::from(plugins::position2d::LOOKAHEAD)).abs() < 1e-4,
+        "{ahead:?}"
+    );
+    robot.on_reply(&outbox[0], &zones(&[]), &mut w.ctx());
+    robot.on_reply(&outbox[1], &zones(&["keep out"]), &mut w.ctx());
+
+    w.now += std::time::Duration::from_millis(50);
+    robot.run(&mut w.ctx());
+    assert_eq!(
+        last_velocity(&w.device),
+        Some((0.0, 0.0)),
+        "held at the edge"
+    );
+    let here = robot.answer(&ask("where are you"), &mut w.ctx()).unwrap();
+    assert!(here.body.child("following").is_some(), "still following");
+    assert_eq!(
+        here.body.child("waiting").and_then(|z| z.attr("zone")),
+        Some("keep out")
+    );
+
+    // The way leads elsewhere: it drives again.
+    robot.on_reply(&outbox[1], &zones(&[]), &mut w.ctx());
+    w.now += std::time::Duration::from_millis(200);
+    robot.run(&mut w.ctx());
+    let (speed, _) = last_velocity(&w.device).unwrap();
+    assert!(speed > 0.0, "on its way again: {speed}");
+}

@@ -1,4 +1,5 @@
-//! The zones manager answers "which zone" for a point and for a named object.
+//! The zones manager answers "which zone" for a point and for a named object, and "where is"
+//! a zone.
 
 use std::time::Instant;
 
@@ -80,4 +81,35 @@ fn which_zone_contains_a_point_or_an_object() {
     );
 
     assert!(zones.answer(&Query::new(to(), "dance"), &mut ctx).is_none());
+}
+
+#[test]
+fn where_is_a_zone_answers_its_centre_and_names_the_zones_when_unknown() {
+    let mut scene = Scene::new();
+    let mut anchors = Anchors::default();
+    let mut ctx = PluginContext::new(&mut scene, &mut anchors, Instant::now());
+    let create = plugins::standard_plugins()
+        .constructor("libpv3d_zones")
+        .unwrap();
+    let mut zones = create(zones_config(), &mut ctx).unwrap();
+    let to = || Target::Named("libpv3d_zones".into());
+    let stairs = Query::new(to(), "where is").with_attr("zone", "stairs");
+    let reply = zones.answer(&stairs, &mut ctx).unwrap();
+    assert!(reply.is_done(), "{reply:?}");
+    assert_eq!(
+        (reply.body.number("x"), reply.body.number("y")),
+        (Ok(2.0), Ok(2.0))
+    );
+    let attic = Query::new(to(), "where is").with_attr("zone", "attic");
+    let reply = zones.answer(&attic, &mut ctx).unwrap();
+    assert_eq!(reply.error, FAILED);
+    assert!(
+        reply.body.text.contains("attic") && reply.body.text.contains("keep out, stairs"),
+        "{:?}",
+        reply.body
+    );
+    let bare = zones
+        .answer(&Query::new(to(), "where is"), &mut ctx)
+        .unwrap();
+    assert_eq!(bare.error, BAD_ARGUMENTS);
 }

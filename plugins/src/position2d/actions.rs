@@ -8,6 +8,11 @@ use super::goal::{Goal, stand_off};
 use framework::action::{Action, ObjectRef};
 use framework::plugin::PluginContext;
 
+/// The robot's action names: shown in the popup, and how a query's "go to" and "follow" an
+/// object are carried out.
+pub(super) const GO_TO: &str = "Go to";
+pub(super) const FOLLOW: &str = "Follow";
+
 impl Position2dPlugin {
     pub(super) fn offered_actions(&self, target: &ObjectRef) -> Vec<Action> {
         if target.node == self.node || target.tags.is_empty() || self.config.device.is_none() {
@@ -17,11 +22,11 @@ impl Position2dPlugin {
         let d = self.follow_distance;
         vec![
             Action {
-                name: "Go to",
+                name: GO_TO,
                 description: format!("drive next to {what}, stopping {d:.1} m short of it"),
             },
             Action {
-                name: "Follow",
+                name: FOLLOW,
                 description: format!("keep {d:.1} m from {what} wherever it goes, until stopped"),
             },
         ]
@@ -31,11 +36,11 @@ impl Position2dPlugin {
         let robot = Vec2::new(self.pose.0, self.pose.1);
         let object = target.position.truncate();
         match action {
-            "Go to" => match stand_off(robot, object, self.follow_distance) {
+            GO_TO => match stand_off(robot, object, self.follow_distance) {
                 Some(aim) => self.set_goal(Goal::Point(aim), ctx),
                 None => tracing::info!("{} is already next to {}", self.config.id, target.name),
             },
-            "Follow" => self.set_goal(
+            FOLLOW => self.set_goal(
                 Goal::Follow {
                     target: target.clone(),
                     last_seen: object,

@@ -1,10 +1,15 @@
-//! What a robot answers when other components (a reaction, a script, another robot) ask it:
-//! "go to" a point, "follow" a tagged object, "stop", and "where are you". The same goals the
-//! person sets by clicking, so a query and a click drive the robot the same way.
+//! What a robot answers when other components (a reaction, a script, the command line, another
+//! robot) ask it: "go to" a point or an object, "follow" an object, "stop", and "where are
+//! you". The same goals the person sets by clicking, so a query and a click drive the robot
+//! the same way — a point goes to the robot's planner when one drives it.
+//!
+//! An object is named by `object="name"` (a robot, any scene object) or by `tag="person"`
+//! (the one carrying the tag nearest to the robot); a point by `<point x y/>`.
 
 use glam::Vec2;
 
 use super::Position2dPlugin;
+use super::actions::{FOLLOW, GO_TO};
 use super::goal::Goal;
 use framework::action::ObjectRef;
 use framework::plugin::PluginContext;
@@ -23,48 +28,73 @@ impl Position2dPlugin {
                 self.stop(ctx);
                 Reply::done(self.whereabouts())
             }
+            "go to" if names_object(query) => self.act_on_object(GO_TO, query, ctx),
             "go to" => match query.point() {
                 Ok((x, y)) => {
-                    self.set_goal(Goal::Point(Vec2::new(x as f32, y as f32)), ctx);
-                    Reply::done(self.whereabouts())
+                    let point = Vec2::new(x as f32, y as f32);
+                    // A robot with a planner is driven by it, as a click would have it.
+                    let planned = self.goal_to_planner(point, ctx);
+                    if !planned {
+                        self.set_goal(Goal::Point(point), ctx);
+                    }
+                    Reply::done(self.whereabouts().with_attr("planner", planned))
                 }
-                Err(e) => Reply::failed(BAD_ARGUMENTS, format!("go to needs <point x y/>: {e}")),
+                Err(e) => Reply::failed(
+                    BAD_ARGUMENTS,
+                    format!("go to needs <point x y/>, object=\"name\" or tag=\"tag\": {e}"),
+                ),
             },
-            "follow" => self.follow_tagged(query, ctx),
+            "follow" if names_object(query) => self.act_on_object(FOLLOW, query, ctx),
+            "follow" => Reply::failed(
+                BAD_ARGUMENTS,
+                "follow needs object=\"name\" or tag=\"tag\" (tag=\"person\")",
+            ),
             _ => return None,
         })
     }
 
-    /// Follows the object with the `tag` argument nearest to the robot.
-    fn follow_tagged(&mut self, query: &Query, ctx: &mut PluginContext<'_>) -> Reply {
-        let Some(tag) = query.argument("tag").filter(|t| !t.trim().is_empty()) else {
-            return Reply::failed(
-                BAD_ARGUMENTS,
-                "follow needs a tag argument (tag=\"person\")",
-            );
+    /// Runs `action` on the object the query names, replying with what is being done.
+    fn act_on_object(&mut self, action: &str, query: &Query, ctx: &mut PluginContext<'_>) -> Reply {
+        let target = match self.object_named_by(query, ctx) {
+            Ok(target) => target,
+            Err(why) => return Reply::failed(FAILED, format!("{}: {why}", self.config.id)),
         };
+        let doing = if action == FOLLOW {
+            "following"
+        } else {
+            "going to"
+        };
+        let reply = XmlElement::new(doing)
+            .with_attr("name", &target.name)
+            .with_attr("x", target.position.x)
+            .with_attr("y", target.position.y);
+        self.act(action, &target, ctx);
+        Reply::done(reply)
+    }
+
+    /// The object `object="name"` names, or the nearest one carrying `tag="…"`; never the
+    /// robot itself.
+    fn object_named_by(&self, query: &Query, ctx: &PluginContext<'_>) -> Result<ObjectRef, String> {
         let robot = Vec2::new(self.pose.0, self.pose.1);
-        let nearest = ctx
-            .scene
+        let wanted = |o: &framework::scene::Object3D| match query.argument("object") {
+            Some(name) => o.name == name.trim(),
+            None => query.argument("tag").is_some_and(|t| o.has_tag(t.trim())),
+        };
+        ctx.scene
             .iter()
-            .filter(|(id, o)| *id != self.node && o.has_tag(tag.trim()))
+            .filter(|(id, o)| *id != self.node && wanted(o))
             .filter_map(|(id, _)| ObjectRef::of(ctx.scene, id))
             .min_by(|a, b| {
                 let d = |o: &ObjectRef| o.position.truncate().distance(robot);
                 d(a).total_cmp(&d(b))
-            });
-        match nearest {
-            Some(target) => {
-                let last_seen = target.position.truncate();
-                let reply = XmlElement::new("following").with_attr("name", &target.name);
-                self.set_goal(Goal::Follow { target, last_seen }, ctx);
-                Reply::done(reply)
-            }
-            None => Reply::failed(
-                FAILED,
-                format!("{}: nothing tagged {tag:?} to follow", self.config.id),
-            ),
-        }
+            })
+            .ok_or_else(|| match query.argument("object") {
+                Some(name) => format!("nothing called {:?} in the scene", name.trim()),
+                None => format!(
+                    "nothing tagged {:?} in the scene",
+                    query.argument("tag").unwrap_or_default().trim()
+                ),
+            })
     }
 
     fn whereabouts(&self) -> XmlElement {
@@ -84,6 +114,17 @@ impl Position2dPlugin {
                 }
             });
         }
+        if let Some(zone) = self.zone_guard.blocked_by() {
+            at.children
+                .push(XmlElement::new("waiting").with_attr("zone", zone));
+        }
         at
     }
+}
+
+/// Whether the query names an object (by name or tag) rather than a point.
+fn names_object(query: &Query) -> bool {
+    ["object", "tag"]
+        .iter()
+        .any(|a| query.argument(a).is_some_and(|v| !v.trim().is_empty()))
 }

@@ -10,7 +10,7 @@ use player_proto::interfaces::position2d::{Position2d, Position2dCmdPos, Positio
 use player_proto::message::Body;
 
 use super::Position2dPlugin;
-use super::goal::{DriveMode, Goal, heading, stand_off};
+use super::goal::{DriveMode, Goal, REACQUIRE, heading, stand_off};
 use super::teleop::{joystick_velocity, steer_towards};
 use framework::plugin::PluginContext;
 
@@ -66,6 +66,7 @@ impl Position2dPlugin {
     /// Zero velocity, and forget the goal, the dragged target and the joystick.
     pub(super) fn stop(&mut self, ctx: &mut PluginContext<'_>) {
         let had_goal = self.goal.take().is_some();
+        self.zone_guard.clear();
         self.joystick = None;
         self.dragging = None;
         if self.moving || had_goal || self.sent_waypoint.is_some() {
@@ -81,6 +82,7 @@ impl Position2dPlugin {
         self.dragging = None;
         self.sent_waypoint = None;
         self.refused = None;
+        self.zone_guard.clear();
         self.redraw_trail(ctx.scene);
         self.check_goal(ctx);
     }
@@ -122,11 +124,22 @@ impl Position2dPlugin {
         }
         match self.goal.clone() {
             Some(Goal::Point(point)) => self.go_to_point(ctx, point),
-            Some(Goal::Follow { target, last_seen }) => {
+            Some(Goal::Follow {
+                mut target,
+                last_seen,
+            }) => {
                 let robot = Vec2::new(self.pose.0, self.pose.1);
-                let seen = target
-                    .locate(ctx.scene, last_seen.extend(0.0))
+                let near = last_seen.extend(0.0);
+                let mut seen = target
+                    .locate(ctx.scene, near)
                     .map(|(_, at)| Vec3::truncate(at));
+                if seen.is_none()
+                    && let Some(next) = target.successor(ctx.scene, near, REACQUIRE)
+                {
+                    tracing::info!("{}: following {} now", self.config.id, next.name);
+                    seen = Some(next.position.truncate());
+                    target = next;
+                }
                 let object = seen.unwrap_or(last_seen);
                 let moved = object.distance(last_seen) > 0.01;
                 if moved {
@@ -159,8 +172,19 @@ impl Position2dPlugin {
         self.head_for(ctx, point, heading(robot, point, self.pose.2));
     }
 
-    /// Drives towards `aim`, to face `yaw` there (position mode only).
-    fn head_for(&mut self, ctx: &PluginContext<'_>, aim: Vec2, yaw: f32) {
+    /// Drives towards `aim`, to face `yaw` there (position mode only); holds still while the
+    /// way ahead enters a zone the robot avoids.
+    fn head_for(&mut self, ctx: &mut PluginContext<'_>, aim: Vec2, yaw: f32) {
+        let robot = Vec2::new(self.pose.0, self.pose.1);
+        for query in self.zone_guard.look(ctx.now, robot, aim) {
+            ctx.send(query);
+        }
+        if self.zone_guard.blocked_by().is_some() {
+            if self.moving || self.sent_waypoint.is_some() {
+                self.drive(ctx, 0.0, 0.0);
+            }
+            return;
+        }
         match self.mode {
             DriveMode::Velocity => {
                 if let Some((speed, turn)) = steer_towards(self.pose, aim, self.limits) {

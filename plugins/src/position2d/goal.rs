@@ -42,6 +42,10 @@ pub enum Goal {
     Follow { target: ObjectRef, last_seen: Vec2 },
 }
 
+/// How far from where a followed object was last seen another of its kind may be taken for
+/// it when its tracker numbered it anew, m: a walker's stride or two between sightings.
+pub const REACQUIRE: f32 = 1.5;
+
 /// The point to drive to so as to end `distance` short of `object`, coming from `robot`; or
 /// `None` when the robot is already that close (it should hold still).
 pub fn stand_off(robot: Vec2, object: Vec2, distance: f32) -> Option<Vec2> {

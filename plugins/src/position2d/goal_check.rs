@@ -8,11 +8,11 @@ use glam::Vec2;
 
 use super::Position2dPlugin;
 use super::goal::Goal;
+use super::zone_guard::ZONES;
 use framework::plugin::PluginContext;
 use framework::query::{Query, QueryError, Reply, Target, XmlElement};
 
 const MAP: &str = "libpv3d_map";
-const ZONES: &str = "libpv3d_zones";
 /// The zones a robot avoids unless told otherwise.
 pub const DEFAULT_AVOID_ZONES: &str = "keep out";
 /// A reply point this close to the goal is about the goal, m.
@@ -56,7 +56,7 @@ impl Position2dPlugin {
                 .children
                 .iter()
                 .filter_map(|z| z.attr("name"))
-                .find(|zone| self.avoid_zones.iter().any(|a| a == zone))
+                .find(|zone| self.zone_guard.avoids(zone))
                 .map(|zone| format!("it lies in the zone {zone:?}"))
         } else {
             None

@@ -10,9 +10,10 @@
 //! how far short of an object "Go to" and "Follow" stop), `skinFile` (an OBJ model drawn
 //! in place of the box, fitted to the robot's size; see [`framework::skin`]).
 //!
-//! Queries it answers (`answers.rs`): "go to" `<point x y/>`, "follow" `tag="person"`,
-//! "stop", "where are you". Before driving to a point it asks the map and the zones about it
-//! (`goal_check.rs`; `avoidZones`, "keep out" by default).
+//! Queries it answers (`answers.rs`): "go to" `<point x y/>` or an object, "follow" an object
+//! (`object="name"` or `tag="person"`), "stop", "where are you". Before driving to a point it
+//! asks the map and the zones about it (`goal_check.rs`), and while it drives it keeps out of
+//! the zones it avoids (`zone_guard.rs`; `avoidZones`, "keep out" by default).
 
 mod actions;
 mod answers;
@@ -25,6 +26,7 @@ mod planner_goal;
 mod teleop;
 mod trail;
 mod widgets;
+mod zone_guard;
 
 use std::time::Instant;
 
@@ -36,10 +38,11 @@ pub use condition::{LINK_DOWN, STALE, STALE_AFTER, STALLED};
 pub use goal::{DriveMode, Goal, stand_off};
 pub use teleop::{ARRIVED, Limits, joystick_velocity, steer_towards, wrap_angle};
 pub use widgets::joystick_id;
+pub use zone_guard::{LOOKAHEAD, ZoneGuard};
 
 use framework::action::{Action, ObjectRef};
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::device::{Awaited, ConnectionState, LastTaken};
+use framework::device::{Awaited, LastTaken};
 use framework::plugin::{AnchorKey, Handled, InputEvent, Metadata, Plugin, PluginContext, Service};
 use framework::query::{Query, QueryError, Reply};
 use framework::scene::pose::transform_of_2d;
@@ -61,8 +64,8 @@ pub struct Position2dPlugin {
     pose: (f32, f32, f32),
     velocity: (f32, f32),
     stalled: bool,
-    /// Zones this robot will not be sent into (`avoidZones`).
-    avoid_zones: Vec<String>,
+    /// Zones this robot will not be sent into (`avoidZones`), and what it knows of its way.
+    zone_guard: ZoneGuard,
     /// Why the last goal was given up, for the panel.
     refused: Option<String>,
     /// When the last odometry arrived (data older than `condition::STALE_AFTER` is stale).
@@ -115,14 +118,11 @@ impl Position2dPlugin {
             })?,
         };
         let follow_distance = config.number("followDistance", 0.8, 0.0..=50.0)? as f32;
-        let avoid_zones = config
-            .param("avoidZones")
-            .map_or(goal_check::DEFAULT_AVOID_ZONES, |p| p.text.as_str())
-            .split('|')
-            .map(str::trim)
-            .filter(|z| !z.is_empty())
-            .map(str::to_string)
-            .collect();
+        let zone_guard = ZoneGuard::new(
+            config
+                .param("avoidZones")
+                .map_or(goal_check::DEFAULT_AVOID_ZONES, |p| p.text.as_str()),
+        );
         let size = Vec3::new(0.44, 0.38, 0.22);
         let mut object = Object3D::new(config.id.clone());
         object
@@ -163,7 +163,7 @@ impl Position2dPlugin {
             velocity: (0.0, 0.0),
             stalled: false,
             last_data: None,
-            avoid_zones,
+            zone_guard,
             refused: None,
             trail: Trail::new(trail_length),
             limits,
@@ -268,39 +268,7 @@ impl Plugin for Position2dPlugin {
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
-        let (x, y, a) = self.pose;
-        ui.label(format!("pose ({x:.2}, {y:.2}) m, {:.0}°", a.to_degrees()));
-        ui.label(format!(
-            "velocity {:.2} m/s, {:.2} rad/s",
-            self.velocity.0, self.velocity.1
-        ));
-        self.skin.ui(ui);
-        if self.stalled {
-            ui.colored_label(egui::Color32::from_rgb(230, 90, 80), "STALLED");
-        }
-        if let Some(why) = &self.refused {
-            ui.small(format!("last goal given up: {why}"));
-        }
-        if let Some(device) = ctx.device {
-            let state = device.link_state();
-            if state != ConnectionState::Connected {
-                ui.colored_label(egui::Color32::from_rgb(230, 190, 80), format!("{state:?}"));
-            }
-        }
-        if ctx.device.is_some_and(|d| d.read_only()) {
-            ui.small("observing: no tele-operation");
-            return;
-        }
-        ui.add(egui::Slider::new(&mut self.limits.max_speed, 0.0..=2.0).text("max m/s"));
-        ui.add(egui::Slider::new(&mut self.limits.max_turn, 0.0..=3.0).text("max rad/s"));
-        ui.add(egui::Slider::new(&mut self.follow_distance, 0.0..=3.0).text("follow m"));
-        self.mode_ui(ui);
-        self.joystick_ui(ui, "tree");
-        if self.active {
-            ui.small(
-                "click or Ctrl+drag the ground to send the robot there; click a marker for actions",
-            );
-        }
+        self.panel(ui, ctx);
     }
 
     fn active_ui(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
@@ -389,7 +357,9 @@ impl Plugin for Position2dPlugin {
     }
 
     fn on_reply(&mut self, q: &Query, r: &Result<Reply, QueryError>, ctx: &mut PluginContext<'_>) {
-        self.goal_checked(q, r, ctx);
+        if !self.zone_guard.take_reply(q, r) {
+            self.goal_checked(q, r, ctx);
+        }
     }
 
     fn can_be_active(&self) -> bool {

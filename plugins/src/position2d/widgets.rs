@@ -1,9 +1,11 @@
-//! The robot's egui controls: the joystick, the drive-mode switch and the "Go to point…" popup.
+//! The robot's egui controls: its panel in the item tree, the joystick, the drive-mode switch
+//! and the "Go to point…" popup.
 
 use glam::Vec2;
 
 use super::Position2dPlugin;
 use super::goal::{DriveMode, Goal};
+use framework::device::ConnectionState;
 use framework::plugin::PluginContext;
 
 /// The egui id of robot `robot`'s joystick in `place` (`"tree"` or `"view"`), stable so that
@@ -13,6 +15,46 @@ pub fn joystick_id(robot: &str, place: &str) -> egui::Id {
 }
 
 impl Position2dPlugin {
+    /// The item tree's panel: pose, velocity, condition, why it waits, and the controls.
+    pub(super) fn panel(&mut self, ui: &mut egui::Ui, ctx: &mut PluginContext<'_>) {
+        let (x, y, a) = self.pose;
+        ui.label(format!("pose ({x:.2}, {y:.2}) m, {:.0}°", a.to_degrees()));
+        ui.label(format!(
+            "velocity {:.2} m/s, {:.2} rad/s",
+            self.velocity.0, self.velocity.1
+        ));
+        self.skin.ui(ui);
+        if self.stalled {
+            ui.colored_label(egui::Color32::from_rgb(230, 90, 80), "STALLED");
+        }
+        if let Some(why) = &self.refused {
+            ui.small(format!("last goal given up: {why}"));
+        }
+        if let Some(zone) = self.zone_guard.blocked_by() {
+            ui.small(format!("waiting: the way ahead enters {zone:?}"));
+        }
+        if let Some(device) = ctx.device {
+            let state = device.link_state();
+            if state != ConnectionState::Connected {
+                ui.colored_label(egui::Color32::from_rgb(230, 190, 80), format!("{state:?}"));
+            }
+        }
+        if ctx.device.is_some_and(|d| d.read_only()) {
+            ui.small("observing: no tele-operation");
+            return;
+        }
+        ui.add(egui::Slider::new(&mut self.limits.max_speed, 0.0..=2.0).text("max m/s"));
+        ui.add(egui::Slider::new(&mut self.limits.max_turn, 0.0..=3.0).text("max rad/s"));
+        ui.add(egui::Slider::new(&mut self.follow_distance, 0.0..=3.0).text("follow m"));
+        self.mode_ui(ui);
+        self.joystick_ui(ui, "tree");
+        if self.active {
+            ui.small(
+                "click or Ctrl+drag the ground to send the robot there; click a marker for actions",
+            );
+        }
+    }
+
     /// A square pad: drag the knob to drive (velocity commands), let go to stop. `place` tells
     /// the item tree's pad from the one over the view (see [`joystick_id`]).
     pub(super) fn joystick_ui(&mut self, ui: &mut egui::Ui, place: &str) {

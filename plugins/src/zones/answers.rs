@@ -1,6 +1,7 @@
 //! What the zones manager answers: "which zone" contains a point (`<point x y/>`) or a tagged
 //! object (`robot="robot1"`, any object's name), so that zones are places every component
-//! shares — a robot asks before it enters `keep out`, a reaction asks where a person is.
+//! shares — a robot asks before it enters `keep out`, a reaction asks where a person is; and
+//! "where is" a zone (`zone="charging"`): the point a robot sent there goes to.
 
 use glam::Vec2;
 
@@ -21,6 +22,9 @@ impl ZonesPlugin {
     }
 
     pub(super) fn answer_query(&self, query: &Query, ctx: &PluginContext<'_>) -> Option<Reply> {
+        if query.is("where is") {
+            return Some(self.where_is(query));
+        }
         if !query.is("which zone") {
             return None;
         }
@@ -56,5 +60,36 @@ impl ZonesPlugin {
                 .push(XmlElement::new("zone").with_attr("name", name));
         }
         Some(Reply::done(zones))
+    }
+}
+
+impl ZonesPlugin {
+    /// `<point x y zone="…"/>` at the named zone's centre.
+    fn where_is(&self, query: &Query) -> Reply {
+        let Some(name) = query.argument("zone").filter(|z| !z.trim().is_empty()) else {
+            return Reply::failed(BAD_ARGUMENTS, "where is needs zone=\"name\"");
+        };
+        match self.zones.iter().find(|z| z.name == name.trim()) {
+            Some(zone) => {
+                let centre = zone.centre();
+                Reply::done(
+                    XmlElement::new("point")
+                        .with_attr("x", centre.x)
+                        .with_attr("y", centre.y)
+                        .with_attr("zone", &zone.name),
+                )
+            }
+            None => {
+                let known: Vec<&str> = self.zones.iter().map(|z| z.name.as_str()).collect();
+                Reply::failed(
+                    FAILED,
+                    format!(
+                        "no zone called {:?}; zones: {}",
+                        name.trim(),
+                        known.join(", ")
+                    ),
+                )
+            }
+        }
     }
 }

@@ -4,7 +4,7 @@
 //! `<zone name="dock" color="#40c0ff">x y  x y  x y …</zone>` (metres, world frame, three
 //! corners or more, convex or not). Each zone is a tagged object (`zone`, `zone:dock`); when a
 //! robot enters or leaves one, the plugin says so in its panel and in the log — the paper's
-//! awareness events. It answers the query "which zone" (see `answers.rs`).
+//! awareness events. It answers the queries "which zone" and "where is" (see `answers.rs`).
 
 mod answers;
 
@@ -27,6 +27,14 @@ const EVENTS_KEPT: usize = 12;
 struct Zone {
     name: String,
     corners: Vec<Vec2>,
+}
+
+impl Zone {
+    /// Where the zone's name is drawn, and where a robot sent "to the zone" goes: the mean of
+    /// its corners (inside for the convex zones rooms and docks usually are).
+    fn centre(&self) -> Vec2 {
+        self.corners.iter().copied().sum::<Vec2>() / self.corners.len() as f32
+    }
 }
 
 pub struct ZonesPlugin {
@@ -136,7 +144,7 @@ fn zone_object(zone: &Zone, color: Rgba) -> Object3D {
     }
     let outline: Vec<Vec3> = zone.corners.iter().map(|&p| at(p)).collect();
     object.geometry.polygon_outline(&outline, color);
-    let centre = zone.corners.iter().copied().sum::<Vec2>() / zone.corners.len() as f32;
+    let centre = zone.centre();
     object.geometry.label(at(centre), zone.name.clone(), color);
     object
 }
