@@ -1,5 +1,5 @@
 //! What a sentence means once parsed: who, what to do, and to what. Kept small and free of
-//! viewer types so that the executor can later send it as a query instead of plugin calls.
+//! viewer types: the executor turns it into queries.
 
 use glam::Vec2;
 

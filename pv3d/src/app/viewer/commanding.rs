@@ -1,12 +1,8 @@
 //! Sentences to the viewer: the command line, a `--script` and speech all end here, parsed
 //! with the viewer's grammar against what the scene holds now and carried out by
-//! [`crate::commands::executor`]. Each reply (or error) is kept for the command line to show.
+//! [`crate::commands::executor`] as queries routed like any component's. Each reply (or error) is kept for the command line to show.
 
 use std::time::Instant;
-
-use framework::action::ObjectRef;
-use framework::plugin::InputEvent;
-use framework::scene::Scene;
 
 use super::Viewer;
 use crate::commands::executor::{CommandTarget, execute};
@@ -68,25 +64,9 @@ impl Viewer {
             }
         }
     }
-
-    /// The slot of the drivable robot drawn under `name`.
-    fn robot_slot(&self, name: &str) -> Option<usize> {
-        self.slots.iter().position(|slot| {
-            slot.plugin.can_be_active()
-                && slot
-                    .plugin
-                    .node()
-                    .and_then(|n| self.scene.get(n))
-                    .is_some_and(|o| o.has_tag(ROBOT_TAG) && o.name == name)
-        })
-    }
 }
 
 impl CommandTarget for Viewer {
-    fn scene(&self) -> &Scene {
-        &self.scene
-    }
-
     fn drivable_robots(&self) -> Vec<String> {
         self.slots
             .iter()
@@ -97,38 +77,11 @@ impl CommandTarget for Viewer {
             .collect()
     }
 
-    fn robot_action(&mut self, robot: &str, action: &str, target: &ObjectRef) -> bool {
-        let Some(index) = self.robot_slot(robot) else {
-            return false;
-        };
-        let (plugin, mut ctx) = self.plugin_in_context(index, Instant::now());
-        plugin.run_action(action, target, &mut ctx);
-        true
-    }
-
-    fn robot_to_point(&mut self, robot: &str, point: glam::Vec3) -> bool {
-        let Some(index) = self.robot_slot(robot) else {
-            return false;
-        };
-        // A robot takes ground clicks while it is the active handler: one that is not is
-        // made so for this click only, without changing which robot the person selected.
-        let borrowed = self.active != Some(index);
-        if borrowed {
-            self.send(index, &InputEvent::Activated(true));
-        }
-        self.send(index, &InputEvent::GroundClicked(point));
-        if borrowed {
-            self.send(index, &InputEvent::Activated(false));
-        }
-        true
-    }
-
-    fn stop_robot(&mut self, robot: &str) -> bool {
-        let Some(index) = self.robot_slot(robot) else {
-            return false;
-        };
-        self.send(index, &InputEvent::StopAll);
-        true
+    fn ask(
+        &mut self,
+        query: &framework::query::Query,
+    ) -> Result<framework::query::Reply, framework::query::QueryError> {
+        Viewer::ask(self, query)
     }
 
     fn observing(&self) -> bool {
