@@ -10,6 +10,8 @@ packages=(
   libegl1 libegl-mesa0 libgl1-mesa-dri
   # A real window with no display: Xvfb, plus what winit loads at run time.
   xvfb xauth libglx-mesa0 libx11-xcb1 libxcursor1 libxi6 libxkbcommon-x11-0
+  # player-sim's speech device speaks what it is told into WAV files (tested).
+  espeak-ng
 )
 
 missing=()

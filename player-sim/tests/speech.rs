@@ -1,5 +1,6 @@
 //! The speech devices over TCP: `sentences` publishes its file's sentences as
-//! speech-recognition data at their simulated times, `festival` logs what it is told to say;
+//! speech-recognition data at their simulated times, `festival` logs what it is told to say
+//! and speaks it into a WAV file with espeak-ng;
 //! a broken sentences file is refused at its line.
 
 mod support;
@@ -90,6 +91,18 @@ fn sentences_are_heard_in_turn_and_replies_are_logged() {
     let log = dir.path().join("said.txt");
     let said = wait_for("the reply logged", || std::fs::read_to_string(&log).ok());
     assert_eq!(said, "r0: going to zone dock\n");
+
+    // Spoken out loud too: espeak-ng (installed by scripts/setup.sh) wrote a whole WAV file.
+    let wav = dir.path().join("said-1.wav");
+    let bytes = wait_for("the spoken WAV file, complete", || {
+        let bytes = std::fs::read(&wav).ok()?;
+        let riff = u32::from_le_bytes(bytes.get(4..8)?.try_into().ok()?) as usize;
+        (riff + 8 == bytes.len()).then_some(bytes)
+    });
+    assert_eq!(&bytes[0..4], b"RIFF");
+    assert_eq!(&bytes[8..12], b"WAVE");
+    // 16-bit mono at 22 050 Hz: a sentence of a second or more is tens of kilobytes.
+    assert!(bytes.len() > 20_000, "{} bytes", bytes.len());
 }
 
 #[test]

@@ -246,3 +246,45 @@ fn a_bad_reaction_is_an_error_naming_where() {
     );
     assert!(viewer.errors[0].contains("explode"), "{:?}", viewer.errors);
 }
+
+#[test]
+fn a_reaction_commands_in_words_and_loads_only_what_a_device_fits() {
+    let mut registry = plugins::standard_plugins();
+    registry.register("libpv3d_walker", TEST, Walker::create);
+    let instances = vec![
+        instance(r#"<plugin library="libpv3d_walker" id="walker"/>"#),
+        instance(
+            r#"<plugin library="libpv3d_reactions">
+                 <reaction on="appear" tag="person">
+                   <command>all robots stop</command>
+                   <load>
+                     <plugin library="libpv3d_laser" id="watch">
+                       <playerDeviceMask interface="laser"/>
+                     </plugin>
+                   </load>
+                 </reaction>
+               </plugin>"#,
+        ),
+    ];
+    let mut viewer = Viewer::new(instances, registry, &|_| None);
+    assert!(viewer.errors.is_empty(), "{:?}", viewer.errors);
+    let before = viewer.plugin_count();
+    viewer.update(Instant::now());
+    // The sentence went through the grammar and the executor, as a typed one does.
+    assert_eq!(
+        viewer.replies(),
+        [Err(
+            "all robots stop: there is no robot to command".to_string()
+        )]
+    );
+    // No server lists a laser: the watch is reported where it was written, not made blind.
+    assert_eq!(viewer.plugin_count(), before);
+    assert!(
+        viewer
+            .errors
+            .iter()
+            .any(|e| e.starts_with("aware.xml:") && e.contains("no device listed now fits")),
+        "{:?}",
+        viewer.errors
+    );
+}

@@ -13,6 +13,9 @@ use tests::{load, repo_root, run_for, run_until, serve, sim_pose};
 /// The zone "charging": a 2 m square around (3, 2).
 const CHARGING: (f64, f64, f64, f64) = (2.0, 4.0, 1.0, 3.0);
 
+/// What the composition's reaction says when a robot drives into the charging zone.
+const CHARGING_SAID: &str = "A robot is charging.";
+
 fn in_charging(pose: (f64, f64, f64)) -> bool {
     (CHARGING.0..=CHARGING.1).contains(&pose.0) && (CHARGING.2..=CHARGING.3).contains(&pose.1)
 }
@@ -63,6 +66,8 @@ fn commands_world_with(name: &str, cfg_lines: &str) -> (PathBuf, PathBuf) {
   </handlers>
   <addParser element="zone"/>
   <zone name="charging">{x0} {y0}  {x1} {y0}  {x1} {y1}  {x0} {y1}</zone>
+  <addParser element="reaction"/>
+  <reaction on="enter" zone="charging" tag="robot"><say>{CHARGING_SAID}</say></reaction>
 </pv3d>
 "#
         ),
@@ -225,17 +230,25 @@ fn sentences_heard_through_player_are_carried_out_and_the_replies_said() {
         Duration::from_secs(30),
         |_| in_charging(sim_pose(&running, 0)),
     );
+    // Both replies, and the reaction's sentence when a robot arrives: all said through Player.
     run_until(
         &mut viewer,
-        "both replies said",
+        "both replies and the reaction said",
         Duration::from_secs(20),
-        |_| std::fs::read_to_string(&said).is_ok_and(|t| t.lines().count() == 2),
+        |_| {
+            std::fs::read_to_string(&said).is_ok_and(|t| {
+                t.lines().any(|l| l.starts_with("robot9 stop"))
+                    && t.lines().any(|l| l == CHARGING_SAID)
+            })
+        },
     );
     let text = std::fs::read_to_string(&said).unwrap();
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines[0], "all robots: going to zone charging");
+    let replies: Vec<&&str> = lines.iter().filter(|l| **l != CHARGING_SAID).collect();
+    assert_eq!(replies.len(), 2, "{text}");
     assert!(
-        lines[1].starts_with("robot9 stop: no robot named robot9"),
+        replies[1].starts_with("robot9 stop: no robot named robot9"),
         "{text}"
     );
 }

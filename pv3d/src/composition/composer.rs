@@ -108,6 +108,15 @@ impl Composer {
     }
 }
 
+/// Every device the connected servers list now (what a component loaded at run time may
+/// be bound to).
+pub fn listed_devices(robots: &RobotManager) -> Vec<FoundDevice> {
+    connected_lists(robots)
+        .into_iter()
+        .flat_map(|(_, listed)| listed)
+        .collect()
+}
+
 /// Each connected server's devices, as of its last handshake.
 fn connected_lists(robots: &RobotManager) -> Vec<((String, u16), Vec<FoundDevice>)> {
     robots

@@ -23,7 +23,7 @@ mod reaction;
 mod relocate;
 mod xml_tree;
 
-pub use composer::{Composer, DeviceChanges};
+pub use composer::{Composer, DeviceChanges, listed_devices};
 pub use device_mask::{DeviceMask, FoundDevice, MaskError};
 pub use emit::{emit_document, to_xml_string};
 pub use error::{ConfigError, SourcePos};

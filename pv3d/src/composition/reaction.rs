@@ -6,6 +6,7 @@
 //! <reaction on="enter" zone="keep out" tag="person|robot">
 //!   <query to="robot1">stop</query>
 //!   <say>Someone walked into the keep-out area</say>
+//!   <command>robot2 go to charging</command>
 //!   <load><plugin library="libpv3d_grid" id="alarm grid"/></load>
 //! </reaction>
 //! ```
@@ -15,7 +16,9 @@
 //! without one), or `tagged` or `untagged` (it gains or loses one of the `tag`s: device
 //! awareness, as a robot is tagged `stalled`, `stale` or `link down`). `tag` lists tags
 //! separated by `|`. The actions run in order: a `<query>`
-//! (as in [`framework::query`]), a sentence to `<say>`, a `<plugin>` to `<load>`.
+//! (as in [`framework::query`]), a sentence to `<say>`, a `<command>` in words (the command
+//! line's grammar), a `<plugin>` to `<load>` (bound to a device of the robot the event is
+//! about when its mask fits one).
 
 use framework::query::{Query, XmlElement};
 
@@ -68,6 +71,8 @@ impl Trigger {
 pub enum ReactionAction {
     Query(Query),
     Say(String),
+    /// A sentence for the command grammar, as if typed on the command line.
+    Command(String),
     /// A `<plugin>` element to make and add.
     Load(Element),
 }
@@ -141,6 +146,8 @@ pub fn parse_reaction(element: &Element) -> Result<Reaction, ConfigError> {
             ),
             "say" if !child.text().is_empty() => ReactionAction::Say(child.text()),
             "say" => return Err(at(child, "<say> needs a sentence".into())),
+            "command" if !child.text().is_empty() => ReactionAction::Command(child.text()),
+            "command" => return Err(at(child, "<command> needs a sentence".into())),
             "load" => {
                 let plugin = child
                     .elements()
@@ -151,7 +158,7 @@ pub fn parse_reaction(element: &Element) -> Result<Reaction, ConfigError> {
             other => {
                 return Err(at(
                     child,
-                    format!("unknown action <{other}> in <reaction>; expected query, say or load"),
+                    format!("unknown action <{other}> in <reaction>; expected query, say, command or load"),
                 ));
             }
         });
@@ -159,7 +166,7 @@ pub fn parse_reaction(element: &Element) -> Result<Reaction, ConfigError> {
     if actions.is_empty() {
         return Err(at(
             element,
-            "<reaction> does nothing: add <query>, <say> or <load>".into(),
+            "<reaction> does nothing: add <query>, <say>, <command> or <load>".into(),
         ));
     }
     Ok(Reaction {

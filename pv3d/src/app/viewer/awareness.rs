@@ -13,6 +13,8 @@ use crate::composition::Trigger;
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct AwarenessEvent {
     pub trigger: Trigger,
+    /// The object's node (it may be gone: `leave`), and its name.
+    pub node: NodeId,
     pub object: String,
     pub tags: Vec<String>,
     /// The zone entered or left (zone events only).
@@ -62,15 +64,17 @@ impl Watcher {
         now: BTreeMap<NodeId, Seen>,
         inside: BTreeSet<(NodeId, String)>,
     ) -> Vec<AwarenessEvent> {
-        let event = |trigger, seen: &Seen, zone: Option<&String>| AwarenessEvent {
+        let event = |trigger, node: NodeId, seen: &Seen, zone: Option<&String>| AwarenessEvent {
             trigger,
+            node,
             object: seen.name.clone(),
             tags: seen.tags.clone(),
             zone: zone.cloned(),
         };
         let mut events = Vec::new();
-        let changed = |trigger, seen: &Seen, tags: Vec<String>| AwarenessEvent {
+        let changed = |trigger, node: NodeId, seen: &Seen, tags: Vec<String>| AwarenessEvent {
             trigger,
+            node,
             object: seen.name.clone(),
             tags,
             zone: None,
@@ -78,34 +82,34 @@ impl Watcher {
         for (id, seen) in &now {
             match self.objects.get(id) {
                 None => {
-                    events.push(event(Trigger::Appear, seen, None));
-                    events.push(changed(Trigger::Tagged, seen, seen.tags.clone()));
+                    events.push(event(Trigger::Appear, *id, seen, None));
+                    events.push(changed(Trigger::Tagged, *id, seen, seen.tags.clone()));
                 }
                 Some(before) => {
                     let gained = difference(&seen.tags, &before.tags);
                     let lost = difference(&before.tags, &seen.tags);
                     if !gained.is_empty() {
-                        events.push(changed(Trigger::Tagged, seen, gained));
+                        events.push(changed(Trigger::Tagged, *id, seen, gained));
                     }
                     if !lost.is_empty() {
-                        events.push(changed(Trigger::Untagged, seen, lost));
+                        events.push(changed(Trigger::Untagged, *id, seen, lost));
                     }
                 }
             }
         }
         for (node, zone) in inside.difference(&self.inside) {
             if let Some(seen) = now.get(node) {
-                events.push(event(Trigger::Enter, seen, Some(zone)));
+                events.push(event(Trigger::Enter, *node, seen, Some(zone)));
             }
         }
         for (node, zone) in self.inside.difference(&inside) {
             if let Some(seen) = now.get(node).or_else(|| self.objects.get(node)) {
-                events.push(event(Trigger::Exit, seen, Some(zone)));
+                events.push(event(Trigger::Exit, *node, seen, Some(zone)));
             }
         }
         for (id, seen) in &self.objects {
             if !now.contains_key(id) {
-                events.push(event(Trigger::Leave, seen, None));
+                events.push(event(Trigger::Leave, *id, seen, None));
             }
         }
         self.objects = now;

@@ -1,7 +1,7 @@
 //! Running the composition's `<reaction>`s: each update the viewer looks at the tagged
 //! objects, asks the zones manager where they are ("which zone" — the same query any
 //! component may send), and for each awareness event runs the reactions that wait for it:
-//! a query sent, a sentence said, a component loaded.
+//! a query sent, a sentence said, a command carried out, a component loaded.
 
 use std::collections::BTreeSet;
 
@@ -10,7 +10,8 @@ use framework::query::{Query, QueryError, Target, XmlElement};
 use super::Viewer;
 use super::awareness::{AwarenessEvent, Watcher, tagged};
 use crate::composition::{
-    PluginInstance, REACTIONS_LIBRARY, Reaction, ReactionAction, parse_reactions,
+    Element, FoundDevice, PluginInstance, REACTIONS_LIBRARY, Reaction, ReactionAction, bind_named,
+    listed_devices, parse_reactions,
 };
 
 /// Who is asked "which zone".
@@ -124,16 +125,66 @@ impl Viewer {
                 }
                 ReactionAction::Say(sentence) => {
                     tracing::info!("say: {sentence}");
+                    // Out loud through the servers' speech devices, when there are any.
+                    self.say(sentence);
                     self.reactions.said.push(sentence.clone());
                 }
-                ReactionAction::Load(plugin) => {
-                    let instance = PluginInstance {
-                        element: plugin.clone(),
-                        device: None,
-                    };
-                    self.add_plugins(vec![instance], &|_| None);
+                ReactionAction::Command(sentence) => {
+                    // Said and shown by `command` itself, like a typed one.
+                    let _ = self.command(sentence);
                 }
+                ReactionAction::Load(plugin) => self.load(plugin, event),
             }
         }
+    }
+}
+
+impl Viewer {
+    /// A reaction's `<load>`: the plugin is bound, as a composition's would be, to a device
+    /// its `<playerDeviceMask>` fits — first among the devices of the robot the event is
+    /// about (same server, same index: "the camera of the robot that stalled"), then among
+    /// all the servers list. One already running for that device is not loaded twice, and a
+    /// mask that nothing fits is reported, not loaded without its device.
+    fn load(&mut self, plugin: &Element, event: &AwarenessEvent) {
+        let devices = self
+            .robots
+            .as_ref()
+            .map(|robots| listed_devices(robots))
+            .unwrap_or_default();
+        let near = self
+            .owner_of(event.node)
+            .and_then(|slot| self.slots[slot].instance.device.clone());
+        let of_robot = |d: &&FoundDevice| {
+            near.as_ref().is_some_and(|n| {
+                n.host == d.host && n.port == d.port && n.addr.index == d.addr.index
+            })
+        };
+        let mine: Vec<FoundDevice> = devices.iter().filter(of_robot).cloned().collect();
+        let mut instance = bind_named(plugin, &mine);
+        if instance.device.is_none() {
+            instance = bind_named(plugin, &devices);
+        }
+        if instance.waits_for_device() {
+            let e = format!(
+                "{}: <load> for {}: no device listed now fits its playerDeviceMask; not loaded",
+                plugin.pos, event.object
+            );
+            tracing::warn!("{e}");
+            self.errors.push(e);
+            return;
+        }
+        let running = self.slots.iter().any(|slot| {
+            slot.instance.library() == instance.library()
+                && slot.instance.element.attr("id") == instance.element.attr("id")
+                && slot.instance.device == instance.device
+        });
+        if running {
+            tracing::debug!("{}: {} runs already", plugin.pos, instance.id());
+            return;
+        }
+        let robots = self.robots.clone();
+        let lookup =
+            |device: &framework::config::DeviceRef| robots.as_ref().and_then(|r| r.device(device));
+        self.add_plugins(vec![instance], &lookup);
     }
 }
