@@ -225,6 +225,14 @@ fn queries_route_through_the_viewer_and_say_who_did_not_answer() {
         "{err}"
     );
 
+    // Typed or scripted as XML, a query is sent as written.
+    assert_eq!(
+        viewer.command(r#"<query to="robot1">stop</query>"#),
+        Ok(r#"<reply error="0"><stopped/></reply>"#.to_string())
+    );
+    let torn = viewer.command(r#"<query to="robot1">stop"#).unwrap_err();
+    assert!(torn.contains("1:"), "names where: {torn}");
+
     let nobody = Query::new(Target::Named("robot9".into()), "stop");
     assert!(matches!(
         viewer.ask(&nobody),

@@ -1,8 +1,12 @@
 //! Sentences to the viewer: the command line, a `--script` and speech all end here, parsed
 //! with the viewer's grammar against what the scene holds now and carried out by
-//! [`crate::commands::executor`] as queries routed like any component's. Each reply (or error) is kept for the command line to show.
+//! [`crate::commands::executor`] as queries routed like any component's. A line that is
+//! itself a `<query …>` is sent as written, so scripts and the command line can ask any
+//! component anything. Each reply (or error) is kept for the command line to show.
 
 use std::time::Instant;
+
+use framework::query::Query;
 
 use super::Viewer;
 use crate::commands::executor::{CommandTarget, execute};
@@ -12,12 +16,16 @@ use crate::commands::{Grammar, Script, Vocabulary, parse};
 impl Viewer {
     /// Parses and carries out one sentence; the reply says what was done, the error why not.
     pub fn command(&mut self, sentence: &str) -> Result<String, String> {
-        let vocabulary = Vocabulary::of_scene(&self.scene);
-        let outcome = parse(&self.grammar, &vocabulary, sentence)
-            .map_err(|e| e.to_string())
-            .and_then(|command| {
-                execute(self, &command).map_err(|e| format!("{}: {e}", sentence.trim()))
-            });
+        let outcome = if sentence.trim_start().starts_with("<query") {
+            self.query_in_xml(sentence.trim())
+        } else {
+            let vocabulary = Vocabulary::of_scene(&self.scene);
+            parse(&self.grammar, &vocabulary, sentence)
+                .map_err(|e| e.to_string())
+                .and_then(|command| {
+                    execute(self, &command).map_err(|e| format!("{}: {e}", sentence.trim()))
+                })
+        };
         match &outcome {
             Ok(reply) => tracing::info!("command {:?}: {reply}", sentence.trim()),
             Err(e) => tracing::warn!("command refused: {e}"),
@@ -29,6 +37,14 @@ impl Viewer {
         self.command_line.show(outcome.clone());
         self.replies.push(outcome.clone());
         outcome
+    }
+
+    /// A `<query>` typed or scripted: the reply's XML, or why there was none.
+    fn query_in_xml(&mut self, text: &str) -> Result<String, String> {
+        let query = Query::parse(text).map_err(|e| format!("{text}: {e}"))?;
+        self.ask(&query)
+            .map(|reply| reply.to_xml())
+            .map_err(|e| e.to_string())
     }
 
     /// Uses `grammar` for every sentence from now on.
