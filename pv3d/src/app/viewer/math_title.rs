@@ -55,21 +55,22 @@ pub fn has_math(title: &str) -> bool {
 /// Shows `title` in a row, its math typeset in the tree's text colour; math that does not
 /// typeset shows as its source (the cache warned once).
 pub fn show(ui: &mut Ui, formulas: &mut FormulaTextures, title: &str) {
-    let colour = ui.visuals().text_color();
-    let colour = Rgba([colour.r(), colour.g(), colour.b(), colour.a()]);
+    // The colour CollapsingHeader gives a plain title, so a typeset one does not look greyed.
+    let text_colour = ui.visuals().widgets.inactive.text_color();
+    let colour = Rgba(text_colour.to_srgba_unmultiplied());
     let em = egui::TextStyle::Body.resolve(ui.style()).size * FORMULA_SCALE;
     ui.spacing_mut().item_spacing.x = 0.0;
     for segment in segments(title) {
         match segment {
             Segment::Text(text) => {
-                ui.label(text);
+                ui.label(egui::RichText::new(text).color(text_colour));
             }
             Segment::Math(math) => match formulas.get(ui.ctx(), math, colour, em) {
                 Some(f) => {
                     ui.image((f.texture.id(), f.size));
                 }
                 None => {
-                    ui.label(math);
+                    ui.label(egui::RichText::new(math).color(text_colour));
                 }
             },
         }
