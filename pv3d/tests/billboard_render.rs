@@ -32,7 +32,7 @@ fn scene(facing_viewer: bool) -> Scene {
         )
     } else {
         // Its y (rows) turned up to the world's z: a sign facing south.
-        board.transform = board.transform * Affine3A::from_rotation_x(std::f32::consts::FRAC_PI_2);
+        board.transform *= Affine3A::from_rotation_x(std::f32::consts::FRAC_PI_2);
         ImageQuad::new(
             red,
             Vec3::new(-BOARD.x / 2.0, 0.0, 0.0),

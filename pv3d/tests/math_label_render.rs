@@ -62,7 +62,7 @@ fn a_math_label_is_typeset_on_a_transparent_background() {
         x0.abs_diff(cx) < 20 && y1.abs_diff(cy) < 20,
         "at the label's point: {x0},{y0}–{x1},{y1}"
     );
-    assert!(w > 30 && w < 200 && h >= 6 && h < 60, "{w} × {h}");
+    assert!((31..200).contains(&w) && (6..60).contains(&h), "{w} × {h}");
 
     // Not the raw text: different pixels, and no backslash-omega spelled out (the raw text
     // is wider than the typeset ω).
