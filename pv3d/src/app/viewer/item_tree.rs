@@ -76,10 +76,20 @@ impl Viewer {
                         id,
                         false,
                     )
-                    .show_header(ui, |ui| math_title::show(ui, &mut titles, &title))
+                    .show_header(ui, |ui| math_title::show(ui, id, &mut titles, &title))
                     .body(body);
+                if header.inner.clicked() {
+                    let mut state =
+                        egui::collapsing_header::CollapsingState::load_with_default_open(
+                            ui.ctx(),
+                            id,
+                            false,
+                        );
+                    state.toggle(ui);
+                    state.store(ui.ctx());
+                }
                 header
-                    .response
+                    .inner
                     .on_hover_text(format!("{title}\n\n{}", about.description));
             } else {
                 egui::CollapsingHeader::new(title)

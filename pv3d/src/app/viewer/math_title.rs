@@ -53,8 +53,14 @@ pub fn has_math(title: &str) -> bool {
 }
 
 /// Shows `title` in a row, its math typeset in the tree's text colour; math that does not
-/// typeset shows as its source (the cache warned once).
-pub fn show(ui: &mut Ui, formulas: &mut FormulaTextures, title: &str) {
+/// typeset shows as its source (the cache warned once). The row answers clicks (under `id`,
+/// the entry's), so that it opens and closes its entry as a plain title does.
+pub fn show(
+    ui: &mut Ui,
+    id: egui::Id,
+    formulas: &mut FormulaTextures,
+    title: &str,
+) -> egui::Response {
     // The colour CollapsingHeader gives a plain title, so a typeset one does not look greyed.
     let text_colour = ui.visuals().widgets.inactive.text_color();
     let colour = Rgba(text_colour.to_srgba_unmultiplied());
@@ -75,6 +81,7 @@ pub fn show(ui: &mut Ui, formulas: &mut FormulaTextures, title: &str) {
             },
         }
     }
+    ui.interact(ui.min_rect(), id.with("math title"), egui::Sense::click())
 }
 
 #[cfg(test)]
