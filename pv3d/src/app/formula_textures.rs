@@ -80,10 +80,19 @@ impl FormulaTextures {
         if let Some(known) = self.formulas.get(&key) {
             return known.clone();
         }
-        let made = match (self.typeset)(text, colour, typeset::dpi_for_em(key.em_px as f32)) {
-            Ok(pixels) => Some(to_texture(ctx, &key, &pixels, scale)),
-            Err(e) => {
+        let dpi = typeset::dpi_for_em(key.em_px as f32);
+        // A label is text from anywhere (a zone's name, a plugin's title): should the
+        // typesetter panic on some input, the label shows as text and the viewer goes on.
+        let typeset = self.typeset;
+        let outcome = std::panic::catch_unwind(|| typeset(text, colour, dpi));
+        let made = match outcome {
+            Ok(Ok(pixels)) => Some(to_texture(ctx, &key, &pixels, scale)),
+            Ok(Err(e)) => {
                 tracing::warn!("{text:?} is shown as text: {e}");
+                None
+            }
+            Err(_) => {
+                tracing::warn!("{text:?} is shown as text: the typesetter failed on it");
                 None
             }
         };
@@ -177,5 +186,17 @@ mod tests {
             );
         }
         assert_eq!(TYPESET.load(Ordering::SeqCst), 5);
+    }
+
+    fn panicking(_: &str, _: Rgba, _: u32) -> Result<Pixels, FormulaError> {
+        panic!("a typesetter bug")
+    }
+
+    #[test]
+    fn a_typesetter_that_panics_leaves_the_text_as_it_is() {
+        let ctx = egui::Context::default();
+        let mut formulas = FormulaTextures::with_typesetter(panicking);
+        assert!(formulas.get(&ctx, "$x$", Rgba::WHITE, 16.0).is_none());
+        assert_eq!(formulas.len(), 1, "remembered, not tried again");
     }
 }
