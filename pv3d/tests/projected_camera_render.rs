@@ -35,8 +35,8 @@ fn is_red(p: [u8; 4]) -> bool {
     p[0] > 150 && p[1] < 60 && p[2] < 60
 }
 
-#[test]
-fn a_floating_square_casts_its_picture_on_the_ground() {
+/// A harness whose scene holds a red square floating 1 m up.
+fn floating_square() -> Harness {
     let mut h = Harness::with_registry(plugins::standard_plugins());
     let mut square = Object3D::new("square");
     let c = SQUARE_HALF;
@@ -56,7 +56,12 @@ fn a_floating_square_casts_its_picture_on_the_ground() {
         square.geometry.triangle(a, b, d, red);
     }
     h.scene.add(square);
-    let config = PluginConfig {
+    h
+}
+
+/// A camera 2 m up looking straight down, its picture put back as `project` says.
+fn camera_looking_down(project: &str) -> PluginConfig {
+    PluginConfig {
         library: "libpv3d_virtual_camera".into(),
         params: vec![
             Param::new("pose", "0 0 2 0"),
@@ -66,11 +71,17 @@ fn a_floating_square_casts_its_picture_on_the_ground() {
             Param::new("height", "64"),
             Param::new("showWindow", "0"),
             Param::new("frustumLength", "0"),
-            Param::new("project", "ground"),
+            Param::new("project", project),
         ],
         origin: "test.xml:1:1".into(),
         ..PluginConfig::default()
-    };
+    }
+}
+
+#[test]
+fn a_floating_square_casts_its_picture_on_the_ground() {
+    let mut h = floating_square();
+    let config = camera_looking_down("ground");
     let mut plugin = h.make(config).unwrap();
 
     let gl = HeadlessGl::new(SIZE.0, SIZE.1).expect("headless GL (Mesa EGL)");
@@ -114,4 +125,48 @@ fn a_floating_square_casts_its_picture_on_the_ground() {
             at(&after, x, y)
         );
     }
+}
+
+#[test]
+fn the_billboard_floats_straight_up_and_faces_the_eye_from_any_side() {
+    let mut h = floating_square();
+    let mut plugin = h.make(camera_looking_down("billboard")).unwrap();
+    let gl = HeadlessGl::new(SIZE.0, SIZE.1).expect("headless GL (Mesa EGL)");
+    let side = |yaw: f32| OrbitCamera {
+        projection: pv3d::render::Projection::Perspective,
+        centre: Vec3::new(0.0, 0.0, 2.5),
+        distance: 5.0,
+        pitch: 0.15,
+        yaw,
+        ..OrbitCamera::default()
+    };
+    render(&gl, &h.scene, &side(0.0)); // renders the camera's view
+    plugin.run(&mut h.ctx()); // takes it and holds it up
+
+    // Straight above the camera, though the camera looks down: its lower edge 0.8 m up.
+    let (board, object) = h
+        .scene
+        .iter()
+        .find(|(_, o)| o.name.ends_with("billboard"))
+        .expect("the billboard's node");
+    let anchor = h.scene.world_transform(board).transform_point3(Vec3::ZERO);
+    assert!(anchor.distance(Vec3::new(0.0, 0.0, 2.8)) < 1e-4, "{anchor}");
+    assert!(matches!(
+        object.geometry.images[0].facing,
+        framework::scene::Facing::Viewer { .. }
+    ));
+
+    // The square it sees shows as large from the south as from the east.
+    let red = |image: &RgbaImage| image.pixels().filter(|p| is_red(p.0)).count();
+    let south = red(&render(&gl, &h.scene, &side(0.0)));
+    let east_image = render(&gl, &h.scene, &side(std::f32::consts::FRAC_PI_2));
+    east_image
+        .save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("camera_billboard.png"))
+        .unwrap();
+    let east = red(&east_image);
+    assert!(south > 100, "the picture on the board: {south}");
+    assert!(
+        south.abs_diff(east) * 10 < south,
+        "as large from either side: {south} vs {east}"
+    );
 }

@@ -145,18 +145,36 @@ impl PartialEq for Pixels {
     }
 }
 
-/// A picture drawn as a rectangle in its node's x–y plane, optionally through a chain of
-/// filters the renderer runs on the GPU.
+/// Which way a picture faces. The scene only says what is wanted; which way the viewer looks
+/// is known to the renderer alone, so it is the renderer that turns a billboard, every frame
+/// and for every camera (the main view and the virtual ones alike).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Facing {
+    /// In the node's x–y plane, turning with the node: a map, a floor bitmap, a projection.
+    #[default]
+    Fixed,
+    /// A billboard: turned towards whoever looks, so that a formula or a camera's picture
+    /// reads from any side. In a perspective view it stands upright and turns about the
+    /// vertical; in the top view it lies flat, north up. `corner` is then the anchor, a point
+    /// in the node's frame, and `pivot` the point of the picture pinned to it (0 0 its lower
+    /// left corner, 0.5 0 the middle of its lower edge, as shares of `size`). Only the node's
+    /// position applies: its turn would undo the facing, and `size` stays in metres.
+    Viewer { pivot: Vec2 },
+}
+
+/// A picture drawn as a rectangle in its node's x–y plane (or turned towards the viewer, see
+/// [`Facing`]), optionally through a chain of filters the renderer runs on the GPU.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ImageQuad {
     pub pixels: Pixels,
-    /// The corner where row 0, column 0 lies, in the node's frame.
+    /// The corner where row 0, column 0 lies, in the node's frame; a billboard's anchor.
     pub corner: Vec3,
     /// Extent along the node's x (columns) and y (rows), m.
     pub size: Vec2,
     pub sampling: Sampling,
     /// Applied in order before drawing; empty draws the pixels as they are.
     pub filters: FilterChain,
+    pub facing: Facing,
 }
 
 impl ImageQuad {
@@ -168,19 +186,48 @@ impl ImageQuad {
             size,
             sampling,
             filters: FilterChain::default(),
+            facing: Facing::Fixed,
+        }
+    }
+
+    /// `pixels` as a billboard `size` metres big, turned towards the viewer, with the point
+    /// `pivot` (shares of its size from its lower left corner) at `anchor` in the node's frame.
+    pub fn billboard(
+        pixels: Pixels,
+        anchor: Vec3,
+        pivot: Vec2,
+        size: Vec2,
+        sampling: Sampling,
+    ) -> ImageQuad {
+        ImageQuad {
+            facing: Facing::Viewer { pivot },
+            ..ImageQuad::new(pixels, anchor, size, sampling)
         }
     }
 
     /// The four corners in the node's frame, counter-clockwise from row 0, column 0, with the
-    /// texture coordinate of each.
+    /// texture coordinate of each. A billboard's are where the top view shows it, flat around
+    /// its anchor: enough to frame the view, which is all they are used for.
     pub fn corners(&self) -> [(Vec3, Vec2); 4] {
+        let origin = self.corner + self.billboard_offsets()[0].0.extend(0.0);
         let (x, y) = (Vec3::X * self.size.x, Vec3::Y * self.size.y);
         [
-            (self.corner, Vec2::new(0.0, 0.0)),
-            (self.corner + x, Vec2::new(1.0, 0.0)),
-            (self.corner + x + y, Vec2::new(1.0, 1.0)),
-            (self.corner + y, Vec2::new(0.0, 1.0)),
+            (origin, Vec2::new(0.0, 0.0)),
+            (origin + x, Vec2::new(1.0, 0.0)),
+            (origin + x + y, Vec2::new(1.0, 1.0)),
+            (origin + y, Vec2::new(0.0, 1.0)),
         ]
+    }
+
+    /// A billboard's corners as offsets from its anchor along the viewer's right and up, m,
+    /// counter-clockwise from row 0, column 0, with their texture coordinates; all zero offsets
+    /// from the corner for a fixed picture.
+    pub fn billboard_offsets(&self) -> [(Vec2, Vec2); 4] {
+        let uv = [Vec2::ZERO, Vec2::X, Vec2::ONE, Vec2::Y];
+        match self.facing {
+            Facing::Fixed => uv.map(|uv| (Vec2::ZERO, uv)),
+            Facing::Viewer { pivot } => uv.map(|uv| ((uv - pivot) * self.size, uv)),
+        }
     }
 }
 
@@ -235,5 +282,30 @@ mod tests {
         let corners = quad.corners();
         assert_eq!(corners[0], (Vec3::new(1.0, 2.0, 0.0), Vec2::ZERO));
         assert_eq!(corners[2], (Vec3::new(5.0, 4.0, 0.0), Vec2::ONE));
+        assert!(
+            quad.billboard_offsets()
+                .iter()
+                .all(|(o, _)| *o == Vec2::ZERO)
+        );
+    }
+
+    #[test]
+    fn a_billboard_hangs_from_its_pivot() {
+        let pixels = Pixels::new(4, 2, PixelFormat::Gray8, vec![0u8; 8]).unwrap();
+        let anchor = Vec3::new(1.0, 2.0, 3.0);
+        let quad = ImageQuad::billboard(
+            pixels,
+            anchor,
+            Vec2::new(0.5, 0.0),
+            Vec2::new(4.0, 2.0),
+            Sampling::Linear,
+        );
+        let offsets = quad.billboard_offsets();
+        // The middle of its lower edge on the anchor: 2 m to either side, 2 m up.
+        assert_eq!(offsets[0], (Vec2::new(-2.0, 0.0), Vec2::ZERO));
+        assert_eq!(offsets[2], (Vec2::new(2.0, 2.0), Vec2::ONE));
+        // Seen from above, it lies around its anchor.
+        assert_eq!(quad.corners()[0].0, Vec3::new(-1.0, 2.0, 3.0));
+        assert_eq!(quad.corners()[2].0, Vec3::new(3.0, 4.0, 3.0));
     }
 }

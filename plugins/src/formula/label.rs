@@ -1,10 +1,14 @@
-//! `libpv3d_formula`: a LaTeX formula floating next to a robot, north up however the robot
-//! turns, so that a class reads `$v = \omega r$` beside the robot it describes.
+//! `libpv3d_formula`: a LaTeX formula floating next to a robot, turned towards the viewer
+//! however the robot turns, so that a class reads `$v = \omega r$` beside the robot it
+//! describes from any side.
 //!
 //! Parameters: `text` (the formula between dollar signs; required), `parentNode` (the robot
 //! it follows, when made in a robot's device handler; none = fixed), `offset` (`x y z`, m from
-//! the robot or the world's origin; `0.4 0.4 0.6`), `pixelSize` (m a typeset pixel spans,
-//! 0.008), `dpi` (180), `color` (white).
+//! the robot or the world's origin; `0.4 0.4 0.6`), `style` (`picture`: a billboard in the
+//! world, `pixelSize` m a typeset pixel spans (0.008), at `dpi` (180), growing as the camera
+//! comes closer; `label`: a scene label the viewer typesets at the size of its text, the same
+//! on screen at any distance), `color` (white), `title` (the item tree's; `Formula` and the
+//! text).
 
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::plugin::{AnchorKey, Metadata, Plugin, PluginContext};
@@ -54,18 +58,37 @@ impl FormulaPlugin {
         let pixel_size = config.number("pixelSize", DEFAULT_PIXEL_SIZE_M, 1e-5..=1.0)? as f32;
         let dpi = config.number("dpi", f64::from(DEFAULT_DPI), 1.0..=f64::from(MAX_DPI))? as u32;
         let colour = config.color("color", Rgba::WHITE)?;
+        let as_label = match config.text("style").unwrap_or("picture") {
+            "picture" => false,
+            "label" => true,
+            other => {
+                return Err(error(
+                    "style",
+                    format!("expected picture or label, found {other:?}"),
+                ));
+            }
+        };
+        // Typeset here even for a label, so that a formula that does not parse stops the
+        // plugin with the typesetter's message rather than showing as raw text.
         let pixels = typeset(text, colour, dpi).map_err(|e| error("text", e.to_string()))?;
 
-        let size = Vec2::new(pixels.width() as f32, pixels.height() as f32) * pixel_size;
         let offset = Vec3::new(offset[0] as f32, offset[1] as f32, offset[2] as f32);
         let mut object = Object3D::new(format!("Formula {text}"));
         object.tags.push("formula".into());
         object.transform = Affine3A::from_translation(offset);
-        // Its lower left corner at the node: the formula reads to the right of its point.
-        object
-            .geometry
-            .images
-            .push(ImageQuad::new(pixels, Vec3::ZERO, size, Sampling::Linear));
+        if as_label {
+            object.geometry.label(Vec3::ZERO, text, colour);
+        } else {
+            // Its lower left corner at the node: the formula reads to the right of its point.
+            let size = Vec2::new(pixels.width() as f32, pixels.height() as f32) * pixel_size;
+            object.geometry.images.push(ImageQuad::billboard(
+                pixels,
+                Vec3::ZERO,
+                Vec2::ZERO,
+                size,
+                Sampling::Linear,
+            ));
+        }
         let node = ctx.scene.add(object);
         let follow = match (config.param("parentNode"), &config.device) {
             (Some(p), Some(device)) => Some(AnchorKey {
@@ -90,11 +113,16 @@ impl Plugin for FormulaPlugin {
         self.config.clone()
     }
 
+    /// `Formula $…$`: the item tree typesets the math at its end.
     fn title(&self) -> String {
-        format!("Formula {}", self.config.text("text").unwrap_or_default())
+        match self.config.text("title") {
+            Some(title) => title.to_string(),
+            None => format!("Formula {}", self.config.text("text").unwrap_or_default()),
+        }
     }
 
-    /// Follows the robot's position but not its heading, so the formula stays readable.
+    /// Follows the robot's position but not its heading: the renderer turns the formula to
+    /// the viewer, the robot's heading must not.
     fn run(&mut self, ctx: &mut PluginContext<'_>) {
         let Some(robot) = self.follow.as_ref().and_then(|k| ctx.anchors.find(k)) else {
             return;

@@ -15,6 +15,20 @@ use latex_rust::{Dim, MathFont, PngBackground, PngOptions};
 pub const DEFAULT_DPI: u32 = 180;
 /// The highest resolution accepted; the typesetter refuses more than 2400.
 pub const MAX_DPI: u32 = 1200;
+/// The em of a typeset formula, points: the typesetter's own default, which the resolutions
+/// here are reckoned in.
+pub const FONT_SIZE_PT: u32 = 12;
+
+/// The resolution at which a formula's em is `em_px` pixels: for labels on screen, whose size
+/// is given in pixels rather than in metres.
+pub fn dpi_for_em(em_px: f32) -> u32 {
+    let dpi = (em_px * 72.0 / FONT_SIZE_PT as f32).round();
+    if dpi.is_finite() {
+        (dpi as u32).clamp(1, MAX_DPI)
+    } else {
+        DEFAULT_DPI
+    }
+}
 
 /// Why a formula gave no picture.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -55,6 +69,7 @@ pub fn typeset(text: &str, colour: Rgba, dpi: u32) -> Result<Pixels, FormulaErro
     }
     let [r, g, b, alpha] = colour.0;
     let options = PngOptions {
+        font_size_pt: Dim::from_i64(i64::from(FONT_SIZE_PT)),
         dpi: Dim::from_i64(i64::from(dpi)),
         color: latex_rust::Color::rgb(r, g, b),
         background: PngBackground::Transparent,
@@ -122,6 +137,14 @@ mod tests {
             typeset("$x$", Rgba::WHITE, 0),
             Err(FormulaError::BadResolution(0))
         ));
+    }
+
+    #[test]
+    fn an_em_in_pixels_gives_the_resolution() {
+        assert_eq!(dpi_for_em(30.0), 180, "12 pt at 180 dpi is 30 pixels");
+        assert_eq!(dpi_for_em(0.0), 1);
+        assert_eq!(dpi_for_em(1e9), MAX_DPI);
+        assert_eq!(dpi_for_em(f32::NAN), DEFAULT_DPI);
     }
 
     #[test]

@@ -11,8 +11,8 @@
 //! `servePort` (none: serve each picture as Player device `camera:0` on this port of
 //! 127.0.0.1, see [`serve`]), `project` (`none`; `ground`: the picture laid on the ground along
 //! the frustum, within `projectDistance` m (5) at `projectResolution` pixels (256);
-//! `billboard`: the picture `billboardWidth` m wide (1) floating `billboardHeight` m (0.8)
-//! above the camera — see [`projection`]).
+//! `billboard`: the picture `billboardWidth` m wide (1), its lower edge `billboardHeight` m
+//! (0.8) above the camera, turned towards the viewer — see [`projection`]).
 
 pub mod frustum;
 pub mod projection;
@@ -54,6 +54,9 @@ struct Projection {
     distance: f32,
     resolution: u32,
     billboard_width: f32,
+    /// How far above the camera the billboard's lower edge floats, m (straight up in the world
+    /// however the camera is pitched).
+    billboard_height: f32,
 }
 
 pub struct VirtualCameraPlugin {
@@ -166,6 +169,7 @@ impl VirtualCameraPlugin {
                 distance,
                 resolution,
                 billboard_width,
+                billboard_height,
             },
         }))
     }
@@ -247,13 +251,19 @@ impl VirtualCameraPlugin {
                 )
             }
             Placement::Billboard => {
-                let (quad, pose) = projection::billboard(pixels, self.projection.billboard_width);
+                // Straight up in the world, wherever the camera points.
+                let up = ctx
+                    .scene
+                    .world_transform(self.node)
+                    .inverse()
+                    .transform_vector3(Vec3::Z * self.projection.billboard_height);
                 if let Some(board) = ctx.scene.get_mut(node) {
-                    // Keep the height the board was made at; turn it to face up, top ahead.
-                    board.transform =
-                        Affine3A::from_translation(board.transform.translation.into()) * pose;
+                    board.transform = Affine3A::from_translation(up);
                 }
-                Some(quad)
+                Some(projection::billboard(
+                    pixels,
+                    self.projection.billboard_width,
+                ))
             }
         };
         if let Some(object) = ctx.scene.get_mut(node) {

@@ -2,7 +2,8 @@
 //! looks (the frustum's footprint, as a slide projector would throw it), or held up as a
 //! billboard above the robot. Both are ordinary scene pictures; the ground one is resampled
 //! here, on the CPU, because its footprint is a trapezoid and the scene's pictures are
-//! rectangles — the pixels outside the footprint are left transparent.
+//! rectangles — the pixels outside the footprint are left transparent. The billboard is a
+//! [`framework::scene::Facing::Viewer`] picture: pv3d's renderer turns it to the eye.
 
 use framework::scene::{ImageQuad, PixelFormat, Pixels, Sampling, VirtualView};
 use glam::{Affine3A, Vec2, Vec3};
@@ -19,7 +20,7 @@ pub enum Placement {
     None,
     /// On the ground, along the frustum.
     Ground,
-    /// Above the robot, facing up, its top towards where the camera looks.
+    /// Above the robot, turned towards the viewer.
     Billboard,
 }
 
@@ -137,20 +138,17 @@ fn footprint_bounds(
     Some((lo, hi))
 }
 
-/// The picture as a billboard `width` metres wide, its top towards the camera's +x: the quad,
-/// and the turn of the node that carries it.
-pub fn billboard(picture: &Pixels, width: f32) -> (ImageQuad, Affine3A) {
+/// The picture as a billboard `width` metres wide, the middle of its lower edge on the node:
+/// the renderer turns it towards whoever looks, so the camera's view reads from any side.
+pub fn billboard(picture: &Pixels, width: f32) -> ImageQuad {
     let aspect = picture.height() as f32 / picture.width() as f32;
-    let size = Vec2::new(width, width * aspect);
-    let quad = ImageQuad::new(
+    ImageQuad::billboard(
         picture.clone(),
-        (-size / 2.0).extend(0.0),
-        size,
+        Vec3::ZERO,
+        Vec2::new(0.5, 0.0),
+        Vec2::new(width, width * aspect),
         Sampling::Linear,
-    );
-    // Columns along the node's -y (the camera's right), rows along +x (where it looks).
-    let turn = Affine3A::from_rotation_z(-std::f32::consts::FRAC_PI_2);
-    (quad, turn)
+    )
 }
 
 #[cfg(test)]
@@ -223,6 +221,19 @@ mod tests {
         // Beyond the horizon's distance, pixels stay transparent.
         let transparent = quad.pixels.bytes().chunks_exact(4).filter(|p| p[3] == 0);
         assert!(transparent.count() > 0);
+    }
+
+    #[test]
+    fn the_billboard_stands_on_the_middle_of_its_lower_edge() {
+        let quad = billboard(&halves(), 2.0);
+        assert_eq!(
+            quad.facing,
+            framework::scene::Facing::Viewer {
+                pivot: Vec2::new(0.5, 0.0)
+            }
+        );
+        assert_eq!(quad.size, Vec2::new(2.0, 2.0));
+        assert_eq!(quad.corner, Vec3::ZERO);
     }
 
     #[test]

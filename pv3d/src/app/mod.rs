@@ -3,6 +3,7 @@
 
 pub mod builder;
 pub mod command_line;
+pub mod formula_textures;
 pub mod status_panel;
 pub mod timeline;
 pub mod view3d;

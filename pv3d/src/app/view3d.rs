@@ -11,10 +11,17 @@ use eframe::glow::{self, HasContext};
 use framework::scene::Scene;
 use glam::{Vec2, Vec3};
 
+use super::formula_textures::FormulaTextures;
 use crate::render::{
     Lighting, OrbitCamera, POINT_SIZE_PX, PictureFilters, Projection, SceneBatch, SceneRenderer,
     ScreenDetail, ViewTargets,
 };
+
+/// The size of a label's text, points.
+const LABEL_POINTS: f32 = 13.0;
+/// The em of a label typeset as math, points: larger than the text's, because a formula's
+/// subscripts and exponents are set smaller still.
+const FORMULA_EM_POINTS: f32 = 16.0;
 
 /// GL-side state shared with the paint callback (which runs later, during painting).
 #[derive(Default)]
@@ -71,6 +78,8 @@ pub struct View3d {
     framed: bool,
     /// The primary drag under way moves a target, not the camera.
     dragging_target: bool,
+    /// Labels written as math (`$…$`), typeset once each.
+    formulas: FormulaTextures,
 }
 
 impl View3d {
@@ -249,8 +258,9 @@ impl View3d {
 
     /// Draws the labels, leaving out any that would overlap one already drawn: 256 robot
     /// names on top of each other are unreadable, every other one is not. Zoom in and all
-    /// of them come back.
-    fn paint_labels(&self, ui: &mut Ui, rect: Rect) {
+    /// of them come back. A label that is math (`$…$`) shows typeset, in its colour, on a
+    /// transparent background.
+    fn paint_labels(&mut self, ui: &mut Ui, rect: Rect) {
         let gpu = self.gpu.lock().expect("gpu state");
         let size = Vec2::new(rect.width(), rect.height());
         let painter = ui.painter_at(rect);
@@ -259,17 +269,37 @@ impl View3d {
             let Some(at) = self.camera.to_screen(label.pos, size) else {
                 continue;
             };
+            let at = rect.min + egui::vec2(at.x, at.y);
+            let formula = self
+                .formulas
+                .get(ui.ctx(), &label.text, label.color, FORMULA_EM_POINTS);
             let [r, g, b, a] = label.color.0;
             let color = Color32::from_rgba_unmultiplied(r, g, b, a);
-            let galley =
-                painter.layout_no_wrap(label.text.clone(), egui::FontId::proportional(13.0), color);
-            let place = egui::Align2::LEFT_BOTTOM
-                .anchor_size(rect.min + egui::vec2(at.x, at.y), galley.size());
+            let (galley, shape_size) = match &formula {
+                Some(f) => (None, f.size),
+                None => {
+                    let galley = painter.layout_no_wrap(
+                        label.text.clone(),
+                        egui::FontId::proportional(LABEL_POINTS),
+                        color,
+                    );
+                    let size = galley.size();
+                    (Some(galley), size)
+                }
+            };
+            let place = egui::Align2::LEFT_BOTTOM.anchor_size(at, shape_size);
             if !rect.intersects(place) || taken.iter().any(|t| t.intersects(place)) {
                 continue;
             }
             taken.push(place);
-            painter.galley(place.min, galley, color);
+            match (formula, galley) {
+                (Some(f), _) => {
+                    let whole = Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0));
+                    painter.image(f.texture.id(), place, whole, Color32::WHITE);
+                }
+                (None, Some(galley)) => painter.galley(place.min, galley, color),
+                (None, None) => {}
+            }
         }
     }
 }

@@ -14,6 +14,7 @@ mod editor_ui;
 mod input_chain;
 mod item_tree;
 mod lifecycle;
+mod math_title;
 mod popups;
 mod queries;
 mod reactions;
@@ -89,6 +90,8 @@ pub struct Viewer {
     /// Components switched off in the editor (or saved so), kept to be enabled again.
     disabled: Vec<editor::DisabledPlugin>,
     editor: editor_ui::EditorState,
+    /// Item-tree titles' math, typeset once each.
+    titles: super::formula_textures::FormulaTextures,
 }
 
 /// The composition a session came from and the file its state is saved to.
@@ -129,6 +132,7 @@ impl Viewer {
             speech: Default::default(),
             disabled: Vec::new(),
             editor: Default::default(),
+            titles: Default::default(),
         };
         viewer.add_plugins(instances, devices);
         viewer

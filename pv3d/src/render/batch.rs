@@ -3,7 +3,8 @@
 
 use bytemuck::{Pod, Zeroable};
 use framework::scene::{
-    FilterChain, FilteredPicture, ImageQuad, Label, Pixels, Sampling, Scene, Vertex, VirtualView,
+    Facing, FilterChain, FilteredPicture, ImageQuad, Label, Pixels, Sampling, Scene, Vertex,
+    VirtualView,
 };
 use glam::{Affine3A, Vec3};
 
@@ -28,21 +29,41 @@ pub struct GpuMeshVertex {
 
 /// A picture placed in world space: its corners (counter-clockwise from row 0, column 0)
 /// with their texture coordinates. The pixels are shared with the scene, not copied.
+///
+/// A billboard's four corners all sit on its anchor, and `offsets` say how far along the
+/// viewer's right and up each one goes: which way that is, only the camera drawing knows, so
+/// the shader turns it (see [`super::billboard`]) and the batch needs no rebuild when the
+/// camera moves. A fixed picture's offsets are zero.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BatchedImage {
     pub pixels: Pixels,
     pub corners: [([f32; 3], [f32; 2]); 4],
+    pub offsets: [[f32; 2]; 4],
     pub sampling: Sampling,
     pub filters: FilterChain,
 }
 
 impl BatchedImage {
     fn placed(quad: &ImageQuad, to_world: &Affine3A) -> BatchedImage {
+        let (corners, offsets) = match quad.facing {
+            Facing::Fixed => (
+                quad.corners()
+                    .map(|(p, uv)| (to_world.transform_point3(p).to_array(), uv.to_array())),
+                [[0.0; 2]; 4],
+            ),
+            Facing::Viewer { .. } => {
+                let anchor = to_world.transform_point3(quad.corner).to_array();
+                let around = quad.billboard_offsets();
+                (
+                    around.map(|(_, uv)| (anchor, uv.to_array())),
+                    around.map(|(offset, _)| offset.to_array()),
+                )
+            }
+        };
         BatchedImage {
             pixels: quad.pixels.clone(),
-            corners: quad
-                .corners()
-                .map(|(p, uv)| (to_world.transform_point3(p).to_array(), uv.to_array())),
+            corners,
+            offsets,
             sampling: quad.sampling,
             filters: quad.filters.clone(),
         }

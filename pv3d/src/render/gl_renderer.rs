@@ -8,6 +8,7 @@ use eframe::glow::{self, HasContext};
 use glam::{Mat4, Vec3};
 
 use super::batch::{GpuMeshVertex, GpuVertex, SceneBatch};
+use super::billboard::BillboardAxes;
 use super::image_quads::ImageRenderer;
 use super::shader::{glsl_header, link_program};
 
@@ -227,7 +228,8 @@ impl SceneRenderer {
             );
             draw_buffer(gl, &self.triangles, glow::TRIANGLES);
             // Pictures lie on the ground among the opaque fills.
-            self.images.draw(gl, &matrix);
+            self.images
+                .draw(gl, &matrix, BillboardAxes::facing(&view_proj));
             gl.use_program(Some(self.flat));
             // Translucent fills after everything opaque and without writing depth, so that
             // neither an opaque fill drawn later nor the lines on them are hidden.

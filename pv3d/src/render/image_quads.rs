@@ -10,6 +10,7 @@ use eframe::glow::{self, HasContext};
 use framework::scene::{FilterChain, Pixels, Sampling};
 
 use super::batch::BatchedImage;
+use super::billboard::BillboardAxes;
 use super::grid_mipmaps::GridMipmaps;
 use super::kernels::KernelRunner;
 use super::shader::{glsl_header, link_program};
@@ -18,10 +19,15 @@ use super::texture::{self, GpuTexture};
 const QUAD_VERTEX: &str = r#"
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec2 a_uv;
+layout(location = 2) in vec2 a_offset;
 uniform mat4 u_view_proj;
+uniform vec3 u_right;
+uniform vec3 u_up;
 out vec2 v_uv;
 void main() {
-    gl_Position = u_view_proj * vec4(a_pos, 1.0);
+    // A billboard's corners sit on its anchor and are pushed out along the viewer's axes.
+    vec3 pos = a_pos + u_right * a_offset.x + u_up * a_offset.y;
+    gl_Position = u_view_proj * vec4(pos, 1.0);
     v_uv = a_uv;
 }
 "#;
@@ -37,12 +43,14 @@ void main() {
 }
 "#;
 
-/// A picture's vertex: 20 bytes.
+/// A picture's vertex: 28 bytes. `offset` is zero but for billboards (see
+/// [`BatchedImage`]).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Pod, Zeroable)]
 struct ImageVertex {
     pos: [f32; 3],
     uv: [f32; 2],
+    offset: [f32; 2],
 }
 
 /// Two triangles per quad.
@@ -98,6 +106,8 @@ impl ImageRenderer {
             gl.vertex_attrib_pointer_f32(0, 3, glow::FLOAT, false, stride, 0);
             gl.enable_vertex_attrib_array(1);
             gl.vertex_attrib_pointer_f32(1, 2, glow::FLOAT, false, stride, 12);
+            gl.enable_vertex_attrib_array(2);
+            gl.vertex_attrib_pointer_f32(2, 2, glow::FLOAT, false, stride, 20);
             gl.bind_vertex_array(None);
             gl.bind_buffer(glow::ARRAY_BUFFER, None);
             Ok(ImageRenderer {
@@ -139,6 +149,7 @@ impl ImageRenderer {
             vertices.extend(QUAD_TRIANGLES.map(|i| ImageVertex {
                 pos: image.corners[i].0,
                 uv: image.corners[i].1,
+                offset: image.offsets[i],
             }));
         }
         self.evict(gl, images);
@@ -276,8 +287,9 @@ impl ImageRenderer {
         }
     }
 
-    /// Draws every quad uploaded, with depth test and writes as the caller set them.
-    pub fn draw(&self, gl: &glow::Context, view_proj: &[f32; 16]) {
+    /// Draws every quad uploaded, with depth test and writes as the caller set them;
+    /// billboards turned along `axes`, those of the camera `view_proj` draws for.
+    pub fn draw(&self, gl: &glow::Context, view_proj: &[f32; 16], axes: BillboardAxes) {
         if self.draws.is_empty() {
             return;
         }
@@ -290,6 +302,11 @@ impl ImageRenderer {
                 false,
                 view_proj,
             );
+            let (right, up) = (axes.right, axes.up);
+            let right_at = gl.get_uniform_location(self.program, "u_right");
+            gl.uniform_3_f32(right_at.as_ref(), right.x, right.y, right.z);
+            let up_at = gl.get_uniform_location(self.program, "u_up");
+            gl.uniform_3_f32(up_at.as_ref(), up.x, up.y, up.z);
             gl.uniform_1_i32(gl.get_uniform_location(self.program, "u_image").as_ref(), 0);
             gl.active_texture(glow::TEXTURE0);
             gl.enable(glow::POLYGON_OFFSET_FILL);

@@ -3,6 +3,7 @@
 //! their filter chains run as GPU kernels. Drawing with no window lives in [`crate::headless`].
 
 pub mod batch;
+pub mod billboard;
 pub mod camera;
 pub mod filtered_pictures;
 pub mod gl_renderer;
@@ -16,6 +17,7 @@ pub mod texture;
 pub mod virtual_views;
 
 pub use batch::{BatchedImage, BatchedView, SceneBatch};
+pub use billboard::BillboardAxes;
 pub use camera::{OrbitCamera, Projection};
 pub use filtered_pictures::PictureFilters;
 pub use gl_renderer::{Lighting, POINT_SIZE_PX, SceneRenderer};

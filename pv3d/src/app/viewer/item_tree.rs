@@ -1,6 +1,6 @@
 //! The item tree: one entry per component, with its own panel, its services, and the paper's
 //! metadata — what it is for, who wrote it and where to read more — so that a composition
-//! explains its parts to whoever opens it.
+//! explains its parts to whoever opens it. Math in a title (`$…$`) shows typeset.
 
 use std::time::Instant;
 
@@ -9,6 +9,7 @@ use framework::plugin::Metadata;
 
 use super::Viewer;
 use super::device_presence::{GONE, GONE_COLOR};
+use super::math_title;
 
 impl Viewer {
     /// The list of components on the left: each plugin's panel, services and "about" line,
@@ -26,8 +27,10 @@ impl Viewer {
         let mut activate = None;
         let mut used = None;
         let mut edit = None;
-        // The plugins are borrowed while their entries are drawn; the editor's fields too.
+        // The plugins are borrowed while their entries are drawn; the editor's fields and the
+        // typeset titles too.
         let mut editor = std::mem::take(&mut self.editor);
+        let mut titles = std::mem::take(&mut self.titles);
         for i in 0..self.slots.len() {
             let active = self.active == Some(i);
             let about = self.slots[i].metadata;
@@ -36,38 +39,67 @@ impl Viewer {
             if active {
                 title.push_str("  (active)");
             }
-            egui::CollapsingHeader::new(title)
-                .id_salt(("plugin", i))
-                .show(ui, |ui| {
-                    about_line(ui, ("plugin", i), &about);
-                    plugin.ui(ui, &mut ctx);
-                    // An observer's services would command the robot: none are offered.
-                    let services = if observing {
-                        Vec::new()
-                    } else {
-                        plugin.services()
-                    };
-                    for service in services {
-                        if ui
-                            .button(service.name)
-                            .on_hover_text(service.description)
-                            .clicked()
-                        {
-                            used = Some((i, service.name));
-                        }
+            let body = |ui: &mut Ui| {
+                about_line(ui, ("plugin", i), &about);
+                plugin.ui(ui, &mut ctx);
+                // An observer's services would command the robot: none are offered.
+                let services = if observing {
+                    Vec::new()
+                } else {
+                    plugin.services()
+                };
+                for service in services {
+                    if ui
+                        .button(service.name)
+                        .on_hover_text(service.description)
+                        .clicked()
+                    {
+                        used = Some((i, service.name));
                     }
-                    let selectable = plugin.can_be_active() && !observing;
-                    if selectable && !active && ui.button("Select").clicked() {
-                        activate = Some(i);
-                    }
-                    let config = plugin.save();
-                    if let Some(e) = editor.component_controls(ui, i, &config) {
-                        edit = Some(e);
-                    }
-                })
-                .header_response
-                .on_hover_text(about.description);
+                }
+                let selectable = plugin.can_be_active() && !observing;
+                if selectable && !active && ui.button("Select").clicked() {
+                    activate = Some(i);
+                }
+                let config = plugin.save();
+                if let Some(e) = editor.component_controls(ui, i, &config) {
+                    edit = Some(e);
+                }
+            };
+            if math_title::has_math(&title) {
+                // A custom header under the id CollapsingHeader would use, so an entry keeps
+                // its state whichever way its title is drawn.
+                let id = ui.make_persistent_id(("plugin", i));
+                let (_, header, _) =
+                    egui::collapsing_header::CollapsingState::load_with_default_open(
+                        ui.ctx(),
+                        id,
+                        false,
+                    )
+                    .show_header(ui, |ui| math_title::show(ui, id, &mut titles, &title))
+                    .body(body);
+                if header.inner.clicked() {
+                    let mut state =
+                        egui::collapsing_header::CollapsingState::load_with_default_open(
+                            ui.ctx(),
+                            id,
+                            false,
+                        );
+                    state.toggle(ui);
+                    state.store(ui.ctx());
+                }
+                header
+                    .inner
+                    .on_hover_text(format!("{title}\n\n{}", about.description));
+            } else {
+                egui::CollapsingHeader::new(title)
+                    .id_salt(("plugin", i))
+                    .show(ui, body)
+                    .header_response
+                    .on_hover_text(about.description);
+            }
         }
+        self.titles = titles;
         self.editor = editor;
         self.gone_entries(ui);
         if let Some(e) = self.editor_footer(ui) {
