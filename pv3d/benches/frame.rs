@@ -53,6 +53,20 @@ fn composition(fill: bool) -> Composition {
 }
 
 /// A swarm of robots on a 16 × 16 grid, with their devices kept in memory.
+/// Where each robot's data comes from: every robot has its own port, and index 0 of each.
+const POSITION2D_0: DevAddr = DevAddr {
+    host: 0,
+    robot: 0,
+    interf: Interface::POSITION2D,
+    index: 0,
+};
+const LASER_0: DevAddr = DevAddr {
+    host: 0,
+    robot: 0,
+    interf: Interface::LASER,
+    index: 0,
+};
+
 struct Swarm {
     viewer: Viewer,
     devices: Vec<(u16, Arc<RecordingDevice>, Arc<RecordingDevice>)>,
@@ -96,7 +110,31 @@ impl Swarm {
             frame: 0,
         };
         swarm.new_data();
+        swarm.viewer.update(Instant::now());
+        swarm.assert_spread();
         swarm
+    }
+
+    /// The robots stand where their odometry puts them, apart on a 16 × 16 grid — not all at
+    /// the origin, as they did while the data was addressed to no interface (a figure of 256
+    /// robots drawn on top of one another measures nothing real).
+    fn assert_spread(&self) {
+        let scene = self.viewer.scene();
+        let mut places: Vec<(i32, i32)> = scene
+            .iter()
+            .filter(|(_, o)| o.has_tag("robot"))
+            .map(|(id, _)| {
+                let at = scene.world_transform(id).translation;
+                (at.x.round() as i32, at.y.round() as i32)
+            })
+            .collect();
+        places.sort_unstable();
+        places.dedup();
+        assert_eq!(
+            places.len(),
+            usize::from(ROBOTS),
+            "robots apart: {places:?}"
+        );
     }
 
     /// Every robot moves a little and scans again.
@@ -107,7 +145,7 @@ impl Swarm {
             let i = f32::from(*port - 1);
             let (x, y) = ((i % 16.0) * 4.0 - 30.0, (i / 16.0).floor() * 4.0 - 30.0);
             base.push(Message::typed(
-                DevAddr::default(),
+                POSITION2D_0,
                 MsgType::Data,
                 Position2d::State(Position2dData {
                     pos: Pose2d {
@@ -122,7 +160,7 @@ impl Swarm {
                 .map(|b| 1.0 + ((b as f32 * 0.05 + t + i).sin() + 1.0) * 1.5)
                 .collect();
             laser.push(Message::typed(
-                DevAddr::default(),
+                LASER_0,
                 MsgType::Data,
                 Laser::Scan(LaserScan {
                     min_angle: -std::f32::consts::FRAC_PI_2,
