@@ -56,6 +56,22 @@ fn last_velocity(device: &RecordingDevice) -> Option<(f64, f64)> {
         })
 }
 
+/// robot1, its odometry at the origin taken.
+fn robot_at_origin(w: &mut support::Harness) -> Box<dyn framework::Plugin> {
+    let mut robot = w.make(config()).unwrap();
+    odometry(&w.device, 0.0, 0.0);
+    robot.run(&mut w.ctx());
+    robot
+}
+
+/// An object called `name`, tagged `tag`, at (`x`, 0).
+fn place(w: &mut support::Harness, name: &str, tag: &str, x: f32) {
+    let mut object = Object3D::new(name);
+    object.tags = vec![tag.into()];
+    object.transform = glam::Affine3A::from_translation(Vec3::new(x, 0.0, 0.0));
+    w.scene.add(object);
+}
+
 fn ask(name: &str) -> Query {
     Query::new(Target::Named("robot1".into()), name)
 }
@@ -99,20 +115,14 @@ fn a_robot_says_where_it_is_and_goes_where_it_is_told() {
 #[test]
 fn a_robot_follows_the_nearest_object_with_a_tag() {
     let mut w = harness();
-    let mut robot = w.make(config()).unwrap();
-    odometry(&w.device, 0.0, 0.0);
-    robot.run(&mut w.ctx());
+    let mut robot = robot_at_origin(&mut w);
     let follow = ask("follow").with_attr("tag", "person");
     let nobody = robot.answer(&follow, &mut w.ctx()).unwrap();
     assert_eq!(nobody.error, FAILED);
     assert!(nobody.body.text.contains("person"), "{:?}", nobody.body);
 
-    for (name, x) in [("person far", 9.0), ("person near", 3.0)] {
-        let mut person = Object3D::new(name);
-        person.tags = vec!["person".into()];
-        person.transform = glam::Affine3A::from_translation(Vec3::new(x, 0.0, 0.0));
-        w.scene.add(person);
-    }
+    place(&mut w, "person far", "person", 9.0);
+    place(&mut w, "person near", "person", 3.0);
     let reply = robot.answer(&follow, &mut w.ctx()).unwrap();
     assert!(reply.is_done());
     assert_eq!(reply.body.attr("name"), Some("person near"));
@@ -156,9 +166,7 @@ fn a_robots_condition_is_on_its_node_as_tags() {
 fn a_robot_asks_about_its_goal_and_gives_up_one_in_keep_out() {
     use framework::query::Reply;
     let mut w = harness();
-    let mut robot = w.make(config()).unwrap();
-    odometry(&w.device, 0.0, 0.0);
-    robot.run(&mut w.ctx());
+    let mut robot = robot_at_origin(&mut w);
     let go = |x: i32| {
         ask("go to").with_child(XmlElement::new("point").with_attr("x", x).with_attr("y", 0))
     };
@@ -199,13 +207,8 @@ fn a_robot_asks_about_its_goal_and_gives_up_one_in_keep_out() {
 #[test]
 fn a_robot_goes_up_to_or_follows_an_object_named_by_name() {
     let mut w = harness();
-    let mut robot = w.make(config()).unwrap();
-    odometry(&w.device, 0.0, 0.0);
-    robot.run(&mut w.ctx());
-    let mut other = Object3D::new("robot2");
-    other.tags = vec!["robot".into()];
-    other.transform = glam::Affine3A::from_translation(Vec3::new(4.0, 0.0, 0.0));
-    w.scene.add(other);
+    let mut robot = robot_at_origin(&mut w);
+    place(&mut w, "robot2", "robot", 4.0);
 
     let go = robot
         .answer(&ask("go to").with_attr("object", "robot2"), &mut w.ctx())
@@ -244,13 +247,8 @@ fn a_robot_holds_still_while_the_way_ahead_enters_keep_out() {
         Ok(Reply::done(body))
     };
     let mut w = harness();
-    let mut robot = w.make(config()).unwrap();
-    odometry(&w.device, 0.0, 0.0);
-    robot.run(&mut w.ctx());
-    let mut person = Object3D::new("person 1");
-    person.tags = vec!["person".into()];
-    person.transform = glam::Affine3A::from_translation(Vec3::new(3.0, 0.0, 0.0));
-    w.scene.add(person);
+    let mut robot = robot_at_origin(&mut w);
+    place(&mut w, "person 1", "person", 3.0);
     robot
         .answer(&ask("follow").with_attr("tag", "person"), &mut w.ctx())
         .unwrap();

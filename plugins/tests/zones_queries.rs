@@ -1,13 +1,13 @@
 //! The zones manager answers "which zone" for a point and for a named object, and "where is"
 //! a zone.
 
-use std::time::Instant;
+mod support;
 
 use framework::config::{Param, PluginConfig};
-use framework::plugin::{Anchors, PluginContext};
 use framework::query::{BAD_ARGUMENTS, FAILED, Query, Target, XmlElement};
-use framework::scene::{Object3D, Scene};
+use framework::scene::Object3D;
 use glam::{Affine3A, Vec3};
+use support::harness;
 
 fn zone(name: &str, corners: &str) -> Param {
     let mut p = Param::new("zone", corners);
@@ -27,6 +27,10 @@ fn zones_config() -> PluginConfig {
     }
 }
 
+fn to() -> Target {
+    Target::Named("libpv3d_zones".into())
+}
+
 fn names(reply: &framework::query::Reply) -> Vec<String> {
     reply
         .body
@@ -38,18 +42,13 @@ fn names(reply: &framework::query::Reply) -> Vec<String> {
 
 #[test]
 fn which_zone_contains_a_point_or_an_object() {
-    let mut scene = Scene::new();
-    let mut anchors = Anchors::default();
+    let mut w = harness();
     let mut person = Object3D::new("person 3");
     person.tags = vec!["person".into()];
     person.transform = Affine3A::from_translation(Vec3::new(0.5, 0.5, 0.0));
-    scene.add(person);
-    let mut ctx = PluginContext::new(&mut scene, &mut anchors, Instant::now());
-    let create = plugins::standard_plugins()
-        .constructor("libpv3d_zones")
-        .unwrap();
-    let mut zones = create(zones_config(), &mut ctx).unwrap();
-    let to = || Target::Named("libpv3d_zones".into());
+    w.scene.add(person);
+    let mut zones = w.make(zones_config()).unwrap();
+    let mut ctx = w.ctx_without_device();
 
     let at = |x: f32, y: f32| {
         Query::new(to(), "which zone")
@@ -85,14 +84,9 @@ fn which_zone_contains_a_point_or_an_object() {
 
 #[test]
 fn where_is_a_zone_answers_its_centre_and_names_the_zones_when_unknown() {
-    let mut scene = Scene::new();
-    let mut anchors = Anchors::default();
-    let mut ctx = PluginContext::new(&mut scene, &mut anchors, Instant::now());
-    let create = plugins::standard_plugins()
-        .constructor("libpv3d_zones")
-        .unwrap();
-    let mut zones = create(zones_config(), &mut ctx).unwrap();
-    let to = || Target::Named("libpv3d_zones".into());
+    let mut w = harness();
+    let mut zones = w.make(zones_config()).unwrap();
+    let mut ctx = w.ctx_without_device();
     let stairs = Query::new(to(), "where is").with_attr("zone", "stairs");
     let reply = zones.answer(&stairs, &mut ctx).unwrap();
     assert!(reply.is_done(), "{reply:?}");
