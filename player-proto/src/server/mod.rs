@@ -25,6 +25,16 @@
 //! let scan = LaserScan { ranges: vec![1.0; 181], ..LaserScan::default() };
 //! server.publisher().publish(addr, 1, Body::Laser(Laser::Scan(scan)), 0.0);
 //! ```
+//!
+//! Locks, and the one order they are taken in (a cycle would deadlock a session's thread
+//! against a device's own): a session's thread holds a **device** while its hooks run
+//! (`on_request`, `on_subscribe` …); a hook may take the device's own locks (a simulation's)
+//! and may publish; publishing takes the **sessions** list, then each session's
+//! **subscriptions**, then its **queue**, releasing each before taking the next. So: device →
+//! the device's own locks → sessions → subscriptions → queue, never backwards — a device's
+//! thread (a simulation's step) may publish while holding its own locks, because nothing the
+//! server holds while taking a device's lock is taken by publishing.
+//!
 
 mod control;
 mod device;
