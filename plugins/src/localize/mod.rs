@@ -24,7 +24,7 @@ use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::plugin::{Handled, InputEvent, Metadata, Plugin, PluginContext, Service};
 use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
-use pose_drag::PoseDrag;
+use pose_drag::{DragStep, PoseDrag};
 use set_pose::{HandPlacedSpread, set_pose_request};
 
 const SHOW_PARTICLES: &str = "Show particles";
@@ -275,29 +275,16 @@ impl Plugin for LocalizePlugin {
     }
 
     fn on_event(&mut self, event: &InputEvent, ctx: &mut PluginContext<'_>) -> Handled {
-        match event {
-            InputEvent::Activated(active) => {
-                self.active = *active;
-                Handled::Yes
-            }
-            InputEvent::TargetDragged(point) if self.active => {
-                self.drag.dragged(point.truncate());
-                self.redraw(ctx.scene);
-                Handled::Yes
-            }
-            InputEvent::GroundClicked(point) if self.active => {
-                let pose = self.drag.release(point.truncate(), self.current_heading());
-                self.send_pose(pose, ctx);
-                self.redraw(ctx.scene);
-                Handled::Yes
-            }
-            InputEvent::TargetDragCancelled => {
-                self.drag.cancel();
-                self.redraw(ctx.scene);
-                Handled::No
-            }
-            _ => Handled::No,
+        let step = self.drag.follow(event, self.active, self.current_heading());
+        match step {
+            DragStep::Activated(active) => self.active = active,
+            DragStep::Released(pose) => self.send_pose(pose, ctx),
+            _ => {}
         }
+        if step.redraws() {
+            self.redraw(ctx.scene);
+        }
+        step.handled()
     }
 
     fn can_be_active(&self) -> bool {

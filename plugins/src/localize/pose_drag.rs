@@ -6,11 +6,45 @@
 //! (the first one where the drag began) and its release as a ground click at the drop point; a
 //! plain click, with no drag before it, keeps the heading the caller already had.
 
+use framework::plugin::{Handled, InputEvent};
 use glam::Vec2;
 use player_proto::interfaces::common::Pose2d;
 
 /// Drags shorter than this, m, give no heading: the hand shook, it did not point.
 pub const MIN_HEADING_DRAG: f32 = 0.1;
+
+/// What an input event meant for a plugin that takes a pose by drag ([`PoseDrag::follow`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DragStep {
+    /// The plugin became (or stopped being) the active handler.
+    Activated(bool),
+    /// The pointer moved in a drag: the preview changed.
+    Moved,
+    /// The gesture ended in this pose: send it.
+    Released(Pose2d),
+    /// The drag was let go off the ground: the preview is gone.
+    Cancelled,
+    /// Nothing for the drag.
+    Other,
+}
+
+impl DragStep {
+    /// Whether the plugin's drawing (its preview) changed.
+    pub fn redraws(&self) -> bool {
+        matches!(
+            self,
+            DragStep::Moved | DragStep::Released(_) | DragStep::Cancelled
+        )
+    }
+
+    /// What the plugin answers the viewer: it took the event, or the event goes on.
+    pub fn handled(&self) -> Handled {
+        match self {
+            DragStep::Activated(_) | DragStep::Moved | DragStep::Released(_) => Handled::Yes,
+            DragStep::Cancelled | DragStep::Other => Handled::No,
+        }
+    }
+}
 
 /// A pose drag under way.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -50,6 +84,26 @@ impl PoseDrag {
                 ..pose
             },
             None => pose,
+        }
+    }
+
+    /// Follows the viewer's input for a plugin that takes a pose by drag while it is the
+    /// active handler (`active`); a plain click keeps `heading`.
+    pub fn follow(&mut self, event: &InputEvent, active: bool, heading: f64) -> DragStep {
+        match event {
+            InputEvent::Activated(now) => DragStep::Activated(*now),
+            InputEvent::TargetDragged(point) if active => {
+                self.dragged(point.truncate());
+                DragStep::Moved
+            }
+            InputEvent::GroundClicked(point) if active => {
+                DragStep::Released(self.release(point.truncate(), heading))
+            }
+            InputEvent::TargetDragCancelled => {
+                self.cancel();
+                DragStep::Cancelled
+            }
+            _ => DragStep::Other,
         }
     }
 

@@ -23,7 +23,7 @@ use player_proto::interfaces::planner::{
     Planner, PlannerCmd, PlannerData, PlannerEnable, PlannerWaypoints,
 };
 
-use crate::localize::pose_drag::PoseDrag;
+use crate::localize::pose_drag::{DragStep, PoseDrag};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::plugin::{Handled, InputEvent, Metadata, Plugin, PluginContext, Service};
@@ -228,30 +228,18 @@ impl Plugin for PlannerPlugin {
     }
 
     fn on_event(&mut self, event: &InputEvent, ctx: &mut PluginContext<'_>) -> Handled {
-        match event {
-            InputEvent::Activated(active) => {
-                self.active = *active;
-                Handled::Yes
-            }
-            InputEvent::TargetDragged(point) if self.active => {
-                self.drag.dragged(point.truncate());
-                self.redraw(ctx.scene);
-                Handled::Yes
-            }
-            InputEvent::GroundClicked(point) if self.active => {
-                let keep = self.state.map_or(0.0, |s| s.pos.pa);
-                let goal = self.drag.release(point.truncate(), keep);
-                self.send_goal(goal, ctx);
-                self.redraw(ctx.scene);
-                Handled::Yes
-            }
-            InputEvent::TargetDragCancelled => {
-                self.drag.cancel();
-                self.redraw(ctx.scene);
-                Handled::No
-            }
-            _ => Handled::No,
+        let step = self
+            .drag
+            .follow(event, self.active, self.state.map_or(0.0, |s| s.pos.pa));
+        match step {
+            DragStep::Activated(active) => self.active = active,
+            DragStep::Released(goal) => self.send_goal(goal, ctx),
+            _ => {}
         }
+        if step.redraws() {
+            self.redraw(ctx.scene);
+        }
+        step.handled()
     }
 
     fn can_be_active(&self) -> bool {
