@@ -3,6 +3,7 @@
 
 #![allow(dead_code)] // each test file uses its own part
 
+pub mod compositions;
 pub mod xvfb;
 
 use std::path::Path;
