@@ -5,6 +5,7 @@
 
 pub mod annotated;
 pub mod captures;
+pub mod served_robots;
 pub mod sessions;
 
 use std::io::{Read, Write};
