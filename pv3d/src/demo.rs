@@ -27,10 +27,11 @@ pub fn world_file() -> PathBuf {
 }
 
 /// The composition for a world given with `--world` and no composition: the world's own,
-/// `configs/<world>.pv3d.xml`, when there is one that names no server (it was written for
-/// whatever ports the world is served on: `navigation.world` gets its map, localizer and
-/// planner); otherwise every robot's position2d, lasers, sonars, fiducials and cameras, on the
-/// world's floorplan (`configs/stage-world.pv3d.xml`).
+/// `configs/<world>.pv3d.xml`, when there is one that loads (`navigation.world` gets its map,
+/// localizer and planner, `classroom.world` its zones; the servers it names are the world's
+/// ports, which [`crate::embedded_world::serve_world`] points at wherever they are served);
+/// otherwise every robot's position2d, lasers, sonars, fiducials and cameras, on the world's
+/// floorplan (`configs/stage-world.pv3d.xml`).
 pub fn world_composition_file(world: &Path) -> PathBuf {
     let own = world.file_stem().map(|stem| {
         demo_root()
@@ -38,11 +39,10 @@ pub fn world_composition_file(world: &Path) -> PathBuf {
             .join(stem)
             .with_extension("pv3d.xml")
     });
-    let names_no_server = |path: &PathBuf| {
-        Composition::load_files(std::slice::from_ref(path), &ParserRegistry::standard())
-            .is_ok_and(|c| c.clients.is_empty())
+    let loads = |path: &PathBuf| {
+        Composition::load_files(std::slice::from_ref(path), &ParserRegistry::standard()).is_ok()
     };
-    own.filter(names_no_server)
+    own.filter(loads)
         .unwrap_or_else(|| demo_root().join("configs/stage-world.pv3d.xml"))
 }
 
@@ -51,12 +51,11 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_world_with_a_composition_of_its_own_naming_no_server_gets_it() {
+    fn a_world_with_a_composition_of_its_own_gets_it() {
         let chosen = |world: &str| world_composition_file(&demo_root().join(world));
         assert!(chosen("stage-worlds/navigation.world").ends_with("configs/navigation.pv3d.xml"));
-        // classroom.pv3d.xml names its servers' ports: a world run on free ports needs the
-        // composition that names none.
-        assert!(chosen("stage-worlds/classroom.world").ends_with("configs/stage-world.pv3d.xml"));
+        // It names the world's ports (6665…6672); served on free ones, they are pointed there.
+        assert!(chosen("stage-worlds/classroom.world").ends_with("configs/classroom.pv3d.xml"));
         assert!(chosen("stage-worlds/swarm.world").ends_with("configs/stage-world.pv3d.xml"));
     }
 }

@@ -29,7 +29,7 @@ struct Cli {
     demo: bool,
 
     /// Simulate this Stage world (and the .cfg beside it) in-process on free ports and show
-    /// it, with the world's own configs/<world>.pv3d.xml if it names no server, else
+    /// it, with the world's own configs/<world>.pv3d.xml if there is one, else
     /// configs/stage-world.pv3d.xml, unless compositions are given.
     #[arg(long, value_name = "WORLD", conflicts_with = "demo")]
     world: Option<PathBuf>,
