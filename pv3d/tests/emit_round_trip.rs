@@ -201,7 +201,21 @@ fn emitted_and_saved_compositions_run_as_the_original() {
         );
         let name = written.file_stem().unwrap().to_string_lossy();
         let again = shot(written, &dir.path().join(format!("{name}.png")));
-        let differ = different_pixels(&first, &again);
+        let mut differ = different_pixels(&first, &again);
+        // On a loaded machine one of the two runs may not have had every robot's first scan
+        // by the time it took its picture (one robot's free space is a fifth of the view):
+        // the scene is still, so both are taken again before the pictures are said to differ.
+        for attempt in 1..=2 {
+            if differ <= MAX_DIFFERENT_PIXELS {
+                break;
+            }
+            let original_again = shot(
+                &original,
+                &dir.path().join(format!("original-{attempt}.png")),
+            );
+            let written_again = shot(written, &dir.path().join(format!("{name}-{attempt}.png")));
+            differ = different_pixels(&original_again, &written_again);
+        }
         assert!(
             differ <= MAX_DIFFERENT_PIXELS,
             "{name}: {differ} pixels differ from the original's picture"
