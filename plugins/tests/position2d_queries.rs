@@ -1,59 +1,28 @@
-//! A robot answers queries: "where are you", "go to", "follow" a tag, "stop" — and drives
-//! as it would after a click.
+//! A robot answers queries: "where are you", "go to" a point or an object, "follow", "stop" —
+//! and drives as it would after a click, holding at the edge of a zone it avoids.
 
 mod support;
 
 use framework::PluginConfig;
-use framework::config::DeviceRef;
 use framework::device::RecordingDevice;
 use framework::query::{BAD_ARGUMENTS, FAILED, Query, Target, XmlElement};
 use framework::scene::Object3D;
 use glam::Vec3;
-use player_proto::interfaces::common::Pose2d;
 use player_proto::interfaces::position2d::{Position2d, Position2dData};
-use player_proto::message::{Body, Message};
+use player_proto::message::Message;
 use player_proto::{DevAddr, MsgType};
-use support::harness;
+use support::{harness, position2d};
 
 fn config() -> PluginConfig {
-    PluginConfig {
-        library: "libpv3d_position2d".into(),
-        id: "robot1".into(),
-        device: Some(DeviceRef {
-            host: "localhost".into(),
-            port: 6665,
-            addr: "position2d:0".parse().unwrap(),
-            driver: "stage".into(),
-        }),
-        ..PluginConfig::default()
-    }
+    position2d::config("robot1")
 }
 
 fn odometry(device: &RecordingDevice, x: f64, y: f64) {
-    let addr: DevAddr = "position2d:0".parse().unwrap();
-    let state = Position2dData {
-        pos: Pose2d::new(x, y, 0.0),
-        vel: Pose2d::default(),
-        stall: 0,
-    };
-    device.push(Message::typed(
-        addr,
-        MsgType::Data,
-        Position2d::State(state),
-    ));
+    position2d::odometry(device, x, y, 0.0);
 }
 
 fn last_velocity(device: &RecordingDevice) -> Option<(f64, f64)> {
-    device
-        .commands
-        .lock()
-        .unwrap()
-        .iter()
-        .rev()
-        .find_map(|b| match b {
-            Body::Position2d(Position2d::Velocity(v)) => Some((v.vel.px, v.vel.pa)),
-            _ => None,
-        })
+    position2d::velocities(device).last().copied()
 }
 
 /// robot1, its odometry at the origin taken.
