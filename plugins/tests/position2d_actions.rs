@@ -5,23 +5,11 @@ mod support;
 
 use std::time::Duration;
 
-use framework::PluginConfig;
 use framework::action::ObjectRef;
 use framework::config::Param;
-use framework::plugin::{InputEvent, Plugin};
+use framework::plugin::InputEvent;
 use glam::Vec3;
-use support::position2d::{config, marker, odometry, velocities, waypoints};
-use support::{Harness, harness};
-
-fn world() -> (Harness, Box<dyn Plugin>) {
-    world_with(config("r0"))
-}
-
-fn world_with(config: PluginConfig) -> (Harness, Box<dyn Plugin>) {
-    let mut w = harness();
-    let plugin = w.make(config).unwrap();
-    (w, plugin)
-}
+use support::position2d::{config, marker, odometry, velocities, waypoints, world, world_with};
 
 #[test]
 fn go_to_and_follow_a_marker_that_is_re_created_every_scan() {

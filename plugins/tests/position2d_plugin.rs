@@ -6,23 +6,12 @@ mod support;
 
 use std::time::Duration;
 
-use framework::PluginConfig;
 use framework::config::Param;
 use framework::device::ConnectionState;
-use framework::plugin::{AnchorKey, InputEvent, Plugin};
+use framework::plugin::{AnchorKey, InputEvent};
 use glam::Vec3;
-use support::position2d::{config, odometry, velocities, waypoints};
+use support::position2d::{config, odometry, velocities, waypoints, world, world_with};
 use support::{Harness, harness};
-
-fn world() -> (Harness, Box<dyn Plugin>) {
-    world_with(config("r0"))
-}
-
-fn world_with(config: PluginConfig) -> (Harness, Box<dyn Plugin>) {
-    let mut w = harness();
-    let plugin = w.make(config).unwrap();
-    (w, plugin)
-}
 
 #[test]
 fn the_body_follows_odometry_and_is_an_anchor_for_sensors() {
