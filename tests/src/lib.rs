@@ -118,3 +118,27 @@ pub fn serve_some_on_port(
     player_sim::serve::serve(Simulation::new(world), devices, ServeOptions::default())
         .expect("the server starts")
 }
+
+/// Every text one UI pass of `viewer` draws in a 1200×800 window laid out by `egui_ctx` (its
+/// plugins' windows and the status panel included). Nothing is painted: the font texture
+/// uploads are dropped on purpose. Windows that open on a click keep their state in
+/// `egui_ctx`, so pass the same one to successive passes.
+pub fn texts_drawn(viewer: &mut Viewer, egui_ctx: &egui::Context) -> Vec<String> {
+    use egui::{Pos2, RawInput, Rect, Shape, vec2};
+    let input = RawInput {
+        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, vec2(1200.0, 800.0))),
+        ..Default::default()
+    };
+    let mut output = egui_ctx.run_ui(input, |ui| viewer.ui(ui));
+    output.textures_delta.clear();
+    let mut shapes: Vec<Shape> = output.shapes.into_iter().map(|c| c.shape).collect();
+    let mut texts = Vec::new();
+    while let Some(shape) = shapes.pop() {
+        match shape {
+            Shape::Text(text) => texts.push(text.galley.text().to_string()),
+            Shape::Vec(inner) => shapes.extend(inner),
+            _ => {}
+        }
+    }
+    texts
+}

@@ -4,10 +4,9 @@
 
 use std::time::Duration;
 
-use egui::{Pos2, RawInput, Rect, Shape, vec2};
 use framework::scene::{Label, Rgba};
 use pv3d::app::Viewer;
-use tests::{load, run_until, serve, viewer_for};
+use tests::{load, run_until, serve, texts_drawn, viewer_for};
 
 const PATIENCE: Duration = Duration::from_secs(20);
 /// The power plugin's gauge colours: fine, and low (under `lowPercent`, not yet half of it).
@@ -15,26 +14,6 @@ const FINE: Rgba = Rgba::rgb(80, 200, 90);
 const LOW: Rgba = Rgba::rgb(240, 170, 40);
 /// What is left in the pack once run down: 15 % of r0's 20 kJ.
 const RUN_DOWN_JOULES: f64 = 3000.0;
-
-/// Every text one UI pass of the viewer draws (the status panel's included).
-fn texts_drawn(viewer: &mut Viewer, egui_ctx: &egui::Context) -> Vec<String> {
-    let input = RawInput {
-        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, vec2(1200.0, 800.0))),
-        ..Default::default()
-    };
-    let mut output = egui_ctx.run_ui(input, |ui| viewer.ui(ui));
-    output.textures_delta.clear();
-    let mut shapes: Vec<Shape> = output.shapes.into_iter().map(|c| c.shape).collect();
-    let mut texts = Vec::new();
-    while let Some(shape) = shapes.pop() {
-        match shape {
-            Shape::Text(text) => texts.push(text.galley.text().to_string()),
-            Shape::Vec(inner) => shapes.extend(inner),
-            _ => {}
-        }
-    }
-    texts
-}
 
 /// The label of r0's battery gauge, once drawn.
 fn gauge_label(viewer: &Viewer) -> Option<Label> {

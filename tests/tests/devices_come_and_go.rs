@@ -5,12 +5,11 @@
 
 use std::time::Duration;
 
-use egui::{Pos2, RawInput, Rect, Shape, vec2};
 use player_proto::Interface;
 use player_proto::client::ConnectionState;
 use player_sim::serve::Running;
 use pv3d::app::Viewer;
-use tests::{load, point_at, run_until, serve_some_on_port, unused_port, viewer_for};
+use tests::{load, point_at, run_until, serve_some_on_port, texts_drawn, unused_port, viewer_for};
 
 const WORLD: &str = "stage-worlds/simple.world";
 
@@ -52,30 +51,6 @@ fn laser_plugins(viewer: &Viewer) -> usize {
         .count()
 }
 
-/// Every text one UI pass of the viewer draws.
-fn texts_drawn(viewer: &mut Viewer) -> Vec<String> {
-    let input = RawInput {
-        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, vec2(1200.0, 800.0))),
-        ..Default::default()
-    };
-    let mut output = egui::Context::default().run_ui(input, |ui| viewer.ui(ui));
-    // Nothing is painted: drop the font texture uploads on purpose.
-    output.textures_delta.clear();
-    let mut texts = Vec::new();
-    let mut shapes: Vec<Shape> = std::mem::take(&mut output.shapes)
-        .into_iter()
-        .map(|c| c.shape)
-        .collect();
-    while let Some(shape) = shapes.pop() {
-        match shape {
-            Shape::Text(text) => texts.push(text.galley.text().to_string()),
-            Shape::Vec(inner) => shapes.extend(inner),
-            _ => {}
-        }
-    }
-    texts
-}
-
 #[test]
 fn a_device_that_appears_goes_and_comes_back_gets_gone_and_resumes_its_plugin() {
     let port = unused_port();
@@ -110,7 +85,7 @@ fn a_device_that_appears_goes_and_comes_back_gets_gone_and_resumes_its_plugin() 
         viewer.save().iter().any(|i| i.library() == "libpv3d_laser"),
         "a saved composition keeps the gone plugin"
     );
-    let texts = texts_drawn(&mut viewer);
+    let texts = texts_drawn(&mut viewer, &egui::Context::default());
     let says_gone = |what: &str| texts.iter().any(|t| t.contains(what));
     assert!(
         says_gone(&format!("{}  (device gone)", gone[0])),

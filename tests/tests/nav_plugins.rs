@@ -6,31 +6,10 @@
 
 use std::time::Duration;
 
-use egui::{Pos2, RawInput, Rect, Shape, vec2};
 use pv3d::app::Viewer;
-use tests::{load, run_until, serve, viewer_for};
+use tests::{load, run_until, serve, texts_drawn, viewer_for};
 
 const PATIENCE: Duration = Duration::from_secs(20);
-
-/// Every text one UI pass of the viewer draws (its plugins' windows included).
-fn texts_drawn(viewer: &mut Viewer, egui_ctx: &egui::Context) -> Vec<String> {
-    let input = RawInput {
-        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, vec2(1200.0, 800.0))),
-        ..Default::default()
-    };
-    let mut output = egui_ctx.run_ui(input, |ui| viewer.ui(ui));
-    output.textures_delta.clear();
-    let mut shapes: Vec<Shape> = output.shapes.into_iter().map(|c| c.shape).collect();
-    let mut texts = Vec::new();
-    while let Some(shape) = shapes.pop() {
-        match shape {
-            Shape::Text(text) => texts.push(text.galley.text().to_string()),
-            Shape::Vec(inner) => shapes.extend(inner),
-            _ => {}
-        }
-    }
-    texts
-}
 
 /// How far apart the gripper's paddles' outer faces are, once it is drawn below its robot.
 fn paddle_spread(viewer: &Viewer) -> Option<f32> {
