@@ -4,7 +4,7 @@
 mod support;
 
 use framework::PluginConfig;
-use framework::config::{DeviceRef, Param};
+use framework::config::Param;
 use framework::plugin::Plugin;
 use framework::scene::Rgba;
 use player_proto::interfaces::bumper::{Bumper, BumperData, BumperDefine, BumperGeometry};
@@ -20,23 +20,7 @@ fn addr() -> DevAddr {
 }
 
 fn config(params: Vec<Param>) -> PluginConfig {
-    let mut parent = Param::new("parentNode", "");
-    parent.attributes = vec![("interface".into(), "position2d".into())];
-    let mut all = vec![parent];
-    all.extend(params);
-    PluginConfig {
-        library: "libpv3d_bumper".into(),
-        id: "bumper".into(),
-        device: Some(DeviceRef {
-            host: "localhost".into(),
-            port: 6665,
-            addr: addr(),
-            driver: "p2os".into(),
-        }),
-        params: all,
-        origin: "test.xml:1:1".into(),
-        ..PluginConfig::default()
-    }
+    support::on_robot("libpv3d_bumper", "bumper", "bumper:0", params)
 }
 
 /// Front bumper at +x, rear at −x.

@@ -5,30 +5,17 @@
 mod support;
 
 use framework::PluginConfig;
-use framework::config::{DeviceRef, Param};
+use framework::config::Param;
 use glam::{Affine3A, Quat, Vec3};
 use support::harness;
 
 fn config(text: &str) -> PluginConfig {
-    let mut parent = Param::new("parentNode", "");
-    parent.attributes = vec![("interface".into(), "position2d".into())];
-    PluginConfig {
-        library: "libpv3d_formula".into(),
-        id: "speed".into(),
-        device: Some(DeviceRef {
-            host: "localhost".into(),
-            port: 6665,
-            addr: "position2d:0".parse().unwrap(),
-            driver: "stage".into(),
-        }),
-        params: vec![
-            parent,
-            Param::new("text", text),
-            Param::new("offset", "0.5 0 1"),
-        ],
-        origin: "test.xml:1:1".into(),
-        ..PluginConfig::default()
-    }
+    support::on_robot(
+        "libpv3d_formula",
+        "speed",
+        "position2d:0",
+        vec![Param::new("text", text), Param::new("offset", "0.5 0 1")],
+    )
 }
 
 #[test]

@@ -4,7 +4,7 @@
 mod support;
 
 use framework::PluginConfig;
-use framework::config::{DeviceRef, Param};
+use framework::config::Param;
 use framework::plugin::Plugin;
 use player_proto::interfaces::common::{BBox3d, Pose3d};
 use player_proto::interfaces::gripper::{
@@ -19,23 +19,7 @@ fn addr() -> DevAddr {
 }
 
 fn config(params: Vec<Param>) -> PluginConfig {
-    let mut parent = Param::new("parentNode", "");
-    parent.attributes = vec![("interface".into(), "position2d".into())];
-    let mut all = vec![parent];
-    all.extend(params);
-    PluginConfig {
-        library: "libpv3d_gripper".into(),
-        id: "gripper".into(),
-        device: Some(DeviceRef {
-            host: "localhost".into(),
-            port: 6665,
-            addr: addr(),
-            driver: "stage".into(),
-        }),
-        params: all,
-        origin: "test.xml:1:1".into(),
-        ..PluginConfig::default()
-    }
+    support::on_robot("libpv3d_gripper", "gripper", "gripper:0", params)
 }
 
 fn feed(h: &Harness, state: u8, beams: u32) {

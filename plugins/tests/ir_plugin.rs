@@ -4,7 +4,7 @@
 mod support;
 
 use framework::PluginConfig;
-use framework::config::{DeviceRef, Param};
+use framework::config::Param;
 use glam::Vec3;
 use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::ir::{Ir, IrData, IrPose};
@@ -17,23 +17,7 @@ fn addr() -> DevAddr {
 }
 
 fn config(params: Vec<Param>) -> PluginConfig {
-    let mut parent = Param::new("parentNode", "");
-    parent.attributes = vec![("interface".into(), "position2d".into())];
-    let mut all = vec![parent];
-    all.extend(params);
-    PluginConfig {
-        library: "libpv3d_ir".into(),
-        id: "ir".into(),
-        device: Some(DeviceRef {
-            host: "localhost".into(),
-            port: 6665,
-            addr: addr(),
-            driver: "stage".into(),
-        }),
-        params: all,
-        origin: "test.xml:1:1".into(),
-        ..PluginConfig::default()
-    }
+    support::on_robot("libpv3d_ir", "ir", "ir:0", params)
 }
 
 #[test]

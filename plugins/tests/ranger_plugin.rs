@@ -4,7 +4,7 @@
 mod support;
 
 use framework::PluginConfig;
-use framework::config::{DeviceRef, Param};
+use framework::config::Param;
 use framework::device::RecordingDevice;
 use framework::plugin::Plugin;
 use framework::scene::{NodeId, Scene};
@@ -22,23 +22,7 @@ fn addr() -> DevAddr {
 }
 
 fn ranger_config(params: Vec<Param>) -> PluginConfig {
-    let mut parent = Param::new("parentNode", "");
-    parent.attributes = vec![("interface".into(), "position2d".into())];
-    let mut all = vec![parent];
-    all.extend(params);
-    PluginConfig {
-        library: "libpv3d_ranger".into(),
-        id: "ranger".into(),
-        device: Some(DeviceRef {
-            host: "localhost".into(),
-            port: 6665,
-            addr: addr(),
-            driver: "stage".into(),
-        }),
-        params: all,
-        origin: "test.xml:1:1".into(),
-        ..PluginConfig::default()
-    }
+    support::on_robot("libpv3d_ranger", "ranger", "ranger:1", params)
 }
 
 fn answer(device: &RecordingDevice, geometry: RangerGeometry, config: RangerConfig) {

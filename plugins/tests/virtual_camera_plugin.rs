@@ -5,29 +5,13 @@
 mod support;
 
 use framework::PluginConfig;
-use framework::config::{DeviceRef, Param};
+use framework::config::Param;
 use framework::scene::{PixelFormat, Pixels};
 use glam::Vec3;
 use support::harness;
 
 fn config(extra: Vec<Param>) -> PluginConfig {
-    let mut parent = Param::new("parentNode", "");
-    parent.attributes = vec![("interface".into(), "position2d".into())];
-    let mut params = vec![parent];
-    params.extend(extra);
-    PluginConfig {
-        library: "libpv3d_virtual_camera".into(),
-        id: "onboard".into(),
-        device: Some(DeviceRef {
-            host: "localhost".into(),
-            port: 6665,
-            addr: "position2d:0".parse().unwrap(),
-            driver: "stage".into(),
-        }),
-        params,
-        origin: "test.xml:1:1".into(),
-        ..PluginConfig::default()
-    }
+    support::on_robot("libpv3d_virtual_camera", "onboard", "position2d:0", extra)
 }
 
 #[test]
