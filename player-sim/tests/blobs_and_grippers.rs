@@ -6,7 +6,7 @@ mod support;
 
 use std::io::{Read, Write};
 use std::net::TcpStream;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use player_proto::client::{Client, ClientOptions};
 use player_proto::interfaces::blobfinder::BlobfinderData;
@@ -21,6 +21,7 @@ use player_sim::serve::{Running, ServeOptions, serve};
 use player_sim::served::from_cfg;
 use player_sim::sim::Simulation;
 use player_sim::world::World;
+use support::wait_for;
 
 const COLLECTOR_PORT: u16 = 6668;
 const SIMULATION_PORT: u16 = 6666;
@@ -37,17 +38,6 @@ fn start() -> Running {
         ..ServeOptions::default()
     };
     serve(Simulation::new(world), devices, options).unwrap()
-}
-
-fn wait_for<T>(what: &str, mut get: impl FnMut() -> Option<T>) -> T {
-    let deadline = Instant::now() + WAIT;
-    loop {
-        if let Some(v) = get() {
-            return v;
-        }
-        assert!(Instant::now() < deadline, "timed out waiting for {what}");
-        std::thread::sleep(Duration::from_millis(5));
-    }
 }
 
 /// Sends a gripper command as libplayerc does: a CMD with no body.
@@ -87,7 +77,7 @@ fn the_blobfinder_sees_the_red_puck_ahead() {
     let client = Client::connect("127.0.0.1", port, ClientOptions::default()).unwrap();
     let finder = client.addr(Interface::BLOBFINDER, 0);
     assert_eq!(client.subscribe(finder).unwrap(), "stage");
-    let (seen, _) = wait_for("blobs", || client.latest_of::<BlobfinderData>(finder));
+    let (seen, _) = wait_for("blobs", WAIT, || client.latest_of::<BlobfinderData>(finder));
     assert_eq!((seen.width, seen.height), (80, 60));
     let puck = seen
         .blobs
@@ -123,7 +113,7 @@ fn the_gripper_closes_on_the_puck_carries_it_and_puts_it_down() {
     assert_eq!(geometry.num_beams, 2);
     assert_eq!((geometry.outer_size.sl, geometry.outer_size.sw), (0.2, 0.3));
     let state = |want: u8| {
-        wait_for(&format!("gripper state {want}"), || {
+        wait_for(&format!("gripper state {want}"), WAIT, || {
             client
                 .latest_of::<GripperData>(gripper)
                 .filter(|(d, _)| d.state == want)
@@ -141,7 +131,7 @@ fn the_gripper_closes_on_the_puck_carries_it_and_puts_it_down() {
     // Held at the gripper's centre, as Stage holds it: across the inner beam only.
     assert_eq!(closed.beams, 0x04);
     base.set_velocity(-0.3, 0.0, 0.0);
-    wait_for("the puck carried back", || {
+    wait_for("the puck carried back", WAIT, || {
         (puck_x(&sim) < start_x - 0.3).then_some(())
     });
     base.set_velocity(0.0, 0.0, 0.0);
@@ -150,7 +140,7 @@ fn the_gripper_closes_on_the_puck_carries_it_and_puts_it_down() {
     state(STATE_OPEN);
     let dropped_at = puck_x(&sim);
     base.set_velocity(-0.3, 0.0, 0.0);
-    wait_for("the robot backing away", || {
+    wait_for("the robot backing away", WAIT, || {
         base.state()
             .filter(|(s, _)| s.pos.px < dropped_at - 1.0)
             .map(|_| ())

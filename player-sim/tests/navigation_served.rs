@@ -6,7 +6,7 @@
 
 mod support;
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use player_proto::client::{Client, ClientOptions, Stamped};
 use player_proto::interfaces::common::{BoolValue, Pose2d};
@@ -15,10 +15,11 @@ use player_proto::interfaces::planner::{Planner, PlannerCmd, PlannerData};
 use player_proto::interfaces::position2d::Position2d;
 use player_proto::message::Body;
 use player_proto::wire::Interface;
-use player_sim::serve::{Running, ServeOptions, serve};
-use player_sim::served::{cfgs_beside, from_cfgs};
-use player_sim::sim::Simulation;
-use player_sim::world::World;
+use player_sim::serve::Running;
+use support::wait_for;
+
+/// How long a test waits for what the server sends, in real time.
+const WAIT: Duration = Duration::from_secs(20);
 
 /// Simulated seconds per real second: a crossing of the floor takes a few real seconds.
 const SPEEDUP: f64 = 20.0;
@@ -26,36 +27,10 @@ const SPEEDUP: f64 = 20.0;
 const WALL_CLOCK_AFTER: f64 = 1e9;
 
 fn start() -> (Running, Client) {
-    let world_file = support::worlds().join("navigation.world");
-    let world = World::load(&world_file).unwrap();
-    let cfgs = cfgs_beside(&world_file);
-    assert_eq!(
-        cfgs.len(),
-        3,
-        "navigation.cfg, navigation-sim.cfg and navigation-nav.cfg: {cfgs:?}"
-    );
-    let paths: Vec<_> = cfgs.iter().map(|p| p.as_path()).collect();
-    let devices = from_cfgs(&paths, &world, &mut Vec::new()).unwrap();
-    let options = ServeOptions {
-        speedup: SPEEDUP,
-        free_ports: true,
-        ..ServeOptions::default()
-    };
-    let running = serve(Simulation::new(world), devices, options).unwrap();
+    let running = support::serve_navigation(SPEEDUP);
     let port = running.port(6665).unwrap();
     let client = Client::connect("127.0.0.1", port, ClientOptions::default()).unwrap();
     (running, client)
-}
-
-fn wait_for<T>(what: &str, mut get: impl FnMut() -> Option<T>) -> T {
-    let deadline = Instant::now() + Duration::from_secs(20);
-    loop {
-        if let Some(v) = get() {
-            return v;
-        }
-        assert!(Instant::now() < deadline, "timed out waiting for {what}");
-        std::thread::sleep(Duration::from_millis(2));
-    }
 }
 
 /// The newest message of `subtype` newer than `after` (a sequence number).
@@ -86,7 +61,7 @@ fn set_pose_moves_the_estimate_and_particles_surround_it() {
     let odometry = client.addr(Interface::POSITION2D, 0);
     assert_eq!(client.subscribe(odometry).unwrap(), "passthrough");
     assert_eq!(client.subscribe(localize).unwrap(), "amcl");
-    let first = wait_for("hypotheses on subscribing", || {
+    let first = wait_for("hypotheses on subscribing", WAIT, || {
         newer(
             &client,
             Interface::LOCALIZE,
@@ -102,7 +77,7 @@ fn set_pose_moves_the_estimate_and_particles_surround_it() {
     assert!(best.cov[0] > 0.0 && best.cov[0] < 0.01);
     // amcl stamps with the server's clock, Stage's odometry with the simulation's.
     assert!(first.server_time > WALL_CLOCK_AFTER);
-    let (_, odo) = wait_for("odometry", || {
+    let (_, odo) = wait_for("odometry", WAIT, || {
         client
             .latest(odometry, Position2d::DATA_STATE.subtype())
             .map(|s| ((), s))
@@ -121,7 +96,7 @@ fn set_pose_moves_the_estimate_and_particles_surround_it() {
         Body::Localize(Localize::SetPose(set)),
     );
     assert!(reply.is_ok(), "{reply:?}");
-    let moved = wait_for("hypotheses after set pose", || {
+    let moved = wait_for("hypotheses after set pose", WAIT, || {
         newer(
             &client,
             Interface::LOCALIZE,
@@ -143,7 +118,7 @@ fn set_pose_moves_the_estimate_and_particles_surround_it() {
             },
         )),
     );
-    let ahead = wait_for("the estimate a metre on", || {
+    let ahead = wait_for("the estimate a metre on", WAIT, || {
         newer(
             &client,
             Interface::LOCALIZE,
@@ -178,7 +153,7 @@ fn a_goal_is_planned_driven_to_and_reported_as_wavefront_does() {
     let planner = client.addr(Interface::PLANNER, 0);
     assert_eq!(client.subscribe(planner).unwrap(), "wavefront");
     let state = Planner::DATA_STATE.subtype();
-    let before = wait_for("a state before any goal", || {
+    let before = wait_for("a state before any goal", WAIT, || {
         newer(&client, Interface::PLANNER, state, 0)
     });
     let idle = planner_state(&before);
@@ -200,7 +175,7 @@ fn a_goal_is_planned_driven_to_and_reported_as_wavefront_does() {
 
     let goal = Pose2d::new(3.5, 4.5, std::f64::consts::FRAC_PI_2);
     client.command(planner, Body::Planner(Planner::Goal(PlannerCmd { goal })));
-    let driving = wait_for("a valid plan", || {
+    let driving = wait_for("a valid plan", WAIT, || {
         newer(&client, Interface::PLANNER, state, before.seq)
             .filter(|s| planner_state(s).is_valid())
     });
@@ -226,11 +201,11 @@ fn a_goal_is_planned_driven_to_and_reported_as_wavefront_does() {
         Body::Planner(Planner::Enable(BoolValue::new(false))),
     );
     assert!(off.is_ok());
-    let paused = wait_for("a state after disabling", || {
+    let paused = wait_for("a state after disabling", WAIT, || {
         newer(&client, Interface::PLANNER, state, driving.seq + 2)
     });
     let a = planner_state(&paused).pos;
-    let later = wait_for("another state", || {
+    let later = wait_for("another state", WAIT, || {
         newer(&client, Interface::PLANNER, state, paused.seq + 3)
     });
     assert_eq!(
@@ -246,7 +221,7 @@ fn a_goal_is_planned_driven_to_and_reported_as_wavefront_does() {
         )
         .unwrap();
 
-    let done = wait_for("the goal reached", || {
+    let done = wait_for("the goal reached", WAIT, || {
         newer(&client, Interface::PLANNER, state, later.seq).filter(|s| planner_state(s).is_done())
     });
     let d = planner_state(&done);
@@ -277,7 +252,7 @@ fn an_unreachable_goal_is_not_valid() {
     let state = Planner::DATA_STATE.subtype();
     let goal = Pose2d::new(-7.95, 0.0, 0.0);
     client.command(planner, Body::Planner(Planner::Goal(PlannerCmd { goal })));
-    let told = wait_for("the goal in the state", || {
+    let told = wait_for("the goal in the state", WAIT, || {
         newer(&client, Interface::PLANNER, state, 0).filter(|s| planner_state(s).goal == goal)
     });
     let s = planner_state(&told);

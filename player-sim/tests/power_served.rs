@@ -14,10 +14,7 @@ use player_proto::interfaces::power::{
 };
 use player_proto::message::Body;
 use player_proto::wire::Interface;
-use player_sim::serve::{Running, ServeOptions, serve};
-use player_sim::served::{cfgs_beside, from_cfgs};
-use player_sim::sim::Simulation;
-use player_sim::world::World;
+use player_sim::serve::Running;
 
 const SPEEDUP: f64 = 20.0;
 /// navigation.world's r0: `kjoules 20 watts 1 mass 10`.
@@ -29,17 +26,7 @@ const WATTS_PER_KG_SPEED: f32 = 10.0;
 const SPEED: f64 = 0.3;
 
 fn start() -> (Running, Client) {
-    let world_file = support::worlds().join("navigation.world");
-    let world = World::load(&world_file).unwrap();
-    let cfgs = cfgs_beside(&world_file);
-    let paths: Vec<_> = cfgs.iter().map(|p| p.as_path()).collect();
-    let devices = from_cfgs(&paths, &world, &mut Vec::new()).unwrap();
-    let options = ServeOptions {
-        speedup: SPEEDUP,
-        free_ports: true,
-        ..ServeOptions::default()
-    };
-    let running = serve(Simulation::new(world), devices, options).unwrap();
+    let running = support::serve_navigation(SPEEDUP);
     let port = running.port(6666).unwrap();
     let client = Client::connect("127.0.0.1", port, ClientOptions::default()).unwrap();
     (running, client)

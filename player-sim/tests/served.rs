@@ -1,7 +1,9 @@
 //! player-sim through the real client over TCP, as a Player user would meet it.
 
+mod support;
+
 use std::path::Path;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use player_proto::client::{Client, ClientOptions};
 use player_proto::interfaces::common::Pose2d;
@@ -11,6 +13,7 @@ use player_sim::serve::{Running, ServeOptions, serve};
 use player_sim::served::from_cfg;
 use player_sim::sim::Simulation;
 use player_sim::world::{Pose, World};
+use support::wait_for;
 
 fn start(world: &str, speedup: f64) -> Running {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../stage-worlds");
@@ -24,17 +27,6 @@ fn start(world: &str, speedup: f64) -> Running {
         ..ServeOptions::default()
     };
     serve(Simulation::new(world), devices, options).unwrap()
-}
-
-fn wait_for<T>(what: &str, timeout: Duration, mut get: impl FnMut() -> Option<T>) -> T {
-    let deadline = Instant::now() + timeout;
-    loop {
-        if let Some(v) = get() {
-            return v;
-        }
-        assert!(Instant::now() < deadline, "timed out waiting for {what}");
-        std::thread::sleep(Duration::from_millis(5));
-    }
 }
 
 #[test]

@@ -5,7 +5,7 @@
 
 mod support;
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use player_proto::client::{Client, ClientOptions};
 use player_proto::interfaces::speech::{Speech, SpeechCmd};
@@ -16,17 +16,10 @@ use player_sim::serve::{ServeOptions, serve};
 use player_sim::served::from_cfg;
 use player_sim::sim::Simulation;
 use player_sim::world::World;
+use support::wait_for;
 
-fn wait_for<T>(what: &str, mut get: impl FnMut() -> Option<T>) -> T {
-    let deadline = Instant::now() + Duration::from_secs(20);
-    loop {
-        if let Some(v) = get() {
-            return v;
-        }
-        assert!(Instant::now() < deadline, "timed out waiting for {what}");
-        std::thread::sleep(Duration::from_millis(5));
-    }
-}
+/// How long a test waits for what the server sends, in real time.
+const WAIT: Duration = Duration::from_secs(20);
 
 const CFG: &str = "driver ( name \"stage\" provides [ \"6665:position2d:0\" ] model \"r0\" )\n\
     driver ( name \"sentences\" provides [ \"6665:speech_recognition:0\" ] file \"heard.txt\" )\n\
@@ -75,10 +68,10 @@ fn sentences_are_heard_in_turn_and_replies_are_logged() {
             other => panic!("not a sentence: {other:?}"),
         }
     };
-    let (seq, first_at, first) = wait_for("the first sentence", || text_of(0));
+    let (seq, first_at, first) = wait_for("the first sentence", WAIT, || text_of(0));
     assert_eq!(first, "r0 go to dock");
     assert!((0.5..1.5).contains(&first_at), "heard at {first_at}");
-    let (_, second_at, second) = wait_for("the second sentence", || text_of(seq));
+    let (_, second_at, second) = wait_for("the second sentence", WAIT, || text_of(seq));
     assert_eq!(second, "all robots stop");
     assert!(second_at >= 1.5, "heard at {second_at}");
 
@@ -89,12 +82,14 @@ fn sentences_are_heard_in_turn_and_replies_are_logged() {
         })),
     );
     let log = dir.path().join("said.txt");
-    let said = wait_for("the reply logged", || std::fs::read_to_string(&log).ok());
+    let said = wait_for("the reply logged", WAIT, || {
+        std::fs::read_to_string(&log).ok()
+    });
     assert_eq!(said, "r0: going to zone dock\n");
 
     // Spoken out loud too: espeak-ng (installed by scripts/setup.sh) wrote a whole WAV file.
     let wav = dir.path().join("said-1.wav");
-    let bytes = wait_for("the spoken WAV file, complete", || {
+    let bytes = wait_for("the spoken WAV file, complete", WAIT, || {
         let bytes = std::fs::read(&wav).ok()?;
         let riff = u32::from_le_bytes(bytes.get(4..8)?.try_into().ok()?) as usize;
         (riff + 8 == bytes.len()).then_some(bytes)
