@@ -4,7 +4,7 @@
 mod support;
 
 use framework::PluginConfig;
-use framework::config::{DeviceRef, Param};
+use framework::config::Param;
 use framework::plugin::Plugin;
 use framework::scene::Rgba;
 use player_proto::interfaces::power::{MASK_PERCENT, MASK_VOLTS, Power, PowerData};
@@ -13,26 +13,7 @@ use player_proto::{DevAddr, MsgType};
 use support::{Harness, harness};
 
 fn config(extra: Vec<Param>) -> PluginConfig {
-    let mut parent = Param::new("parentNode", "");
-    parent.attributes = vec![
-        ("interface".into(), "position2d".into()),
-        ("index".into(), "0".into()),
-    ];
-    let mut params = vec![parent];
-    params.extend(extra);
-    PluginConfig {
-        library: "libpv3d_power".into(),
-        id: "battery".into(),
-        device: Some(DeviceRef {
-            host: "localhost".into(),
-            port: 6665,
-            addr: "power:0".parse().unwrap(),
-            driver: "p2os".into(),
-        }),
-        params,
-        origin: "test.xml:1:1".into(),
-        ..PluginConfig::default()
-    }
+    support::on_robot("libpv3d_power", "battery", "power:0", extra)
 }
 
 fn feed(h: &Harness, percent: f32) {

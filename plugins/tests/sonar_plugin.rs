@@ -4,7 +4,7 @@
 mod support;
 
 use framework::PluginConfig;
-use framework::config::{DeviceRef, Param};
+use framework::config::Param;
 use framework::device::{RecordingDevice, RequestError};
 use framework::plugin::Plugin;
 use glam::Vec3;
@@ -21,26 +21,7 @@ fn addr() -> DevAddr {
 }
 
 fn sonar_config(extra: Vec<Param>) -> PluginConfig {
-    let mut parent = Param::new("parentNode", "");
-    parent.attributes = vec![
-        ("interface".into(), "position2d".into()),
-        ("index".into(), "0".into()),
-    ];
-    let mut params = vec![parent];
-    params.extend(extra);
-    PluginConfig {
-        library: "libpv3d_sonar".into(),
-        id: "sonar".into(),
-        device: Some(DeviceRef {
-            host: "localhost".into(),
-            port: 6665,
-            addr: addr(),
-            driver: "p2os".into(),
-        }),
-        params,
-        origin: "test.xml:1:1".into(),
-        ..PluginConfig::default()
-    }
+    support::on_robot("libpv3d_sonar", "sonar", "sonar:0", extra)
 }
 
 fn make(h: &mut Harness, config: PluginConfig) -> Box<dyn Plugin> {
