@@ -51,10 +51,17 @@ impl Viewer {
                 })
             };
         }
+        // Only the plugins addressed are named (their strings copied): a robot asks the zones
+        // about its way ten times a second, and a swarm has a thousand plugins.
         let addressees: Vec<Addressee> = self
             .slots
             .iter()
             .enumerate()
+            .filter(|(_, slot)| {
+                query
+                    .to
+                    .matches(slot.instance.id(), slot.instance.library())
+            })
             .map(|(index, slot)| Addressee {
                 index,
                 id: slot.instance.id().to_string(),
