@@ -12,6 +12,8 @@ packages=(
   xvfb xauth libglx-mesa0 libx11-xcb1 libxcursor1 libxi6 libxkbcommon-x11-0
   # player-sim's speech device speaks what it is told into WAV files (tested).
   espeak-ng
+  # Python for the player3 package and the Python-side tests (in a virtual environment).
+  python3 python3-venv
 )
 
 missing=()
@@ -25,3 +27,8 @@ if [ "${#missing[@]}" -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 command -v cargo >/dev/null || { echo "cargo not found: install Rust 1.95 first" >&2; exit 1; }
+
+# Python's side (the player3 package and the tests that use Python readers) lives in .venv.
+python3 -m venv .venv
+.venv/bin/python -m pip install -q --upgrade pip
+.venv/bin/python -m pip install -q -r scripts/python-requirements.txt
