@@ -9,6 +9,7 @@ use framework::config::{DeviceRef, Param};
 use framework::plugin::{Handled, InputEvent, Plugin};
 use glam::Vec3;
 use player_proto::interfaces::common::Pose2d;
+use player_proto::interfaces::kind::DataBody;
 use player_proto::interfaces::localize::{
     Localize, LocalizeData, LocalizeHypothesis, LocalizeParticle, LocalizeParticles, cov,
 };
@@ -195,4 +196,125 @@ fn a_spread_out_of_range_names_the_parameter() {
         .err()
         .expect("400° refused");
     assert!(error.to_string().contains("headingStdDev"), "{error}");
+}
+
+/// The text beside the best hypothesis once `hypoths` has been drawn.
+fn label_for(hypoths: Vec<LocalizeHypothesis>) -> String {
+    let mut h = harness();
+    let mut plugin = make(&mut h);
+    feed(&h, hypoths);
+    assert!(h.run_changes_scene(plugin.as_mut()));
+    let node = h.scene.get(plugin.node().unwrap()).unwrap();
+    assert_eq!(node.geometry.labels.len(), 1, "one label, the best's");
+    node.geometry.labels[0].text.clone()
+}
+
+#[test]
+fn a_weight_is_shown_as_its_share_of_the_message_whatever_its_scale() {
+    // fakelocalize's constant beside a weightless hypothesis: all of it, not "100000000 %".
+    assert_eq!(
+        label_for(vec![
+            hypothesis(1.0, 1.0, 1e6, 0.01),
+            hypothesis(4.0, 0.0, 0.0, 0.01)
+        ]),
+        "100 %"
+    );
+    // Weights on any scale share out alike.
+    assert_eq!(
+        label_for(vec![
+            hypothesis(1.0, 1.0, 30.0, 0.01),
+            hypothesis(4.0, 0.0, 10.0, 0.01)
+        ]),
+        "75 %"
+    );
+    // One hypothesis alone has no meaningful share, whatever weight it carries.
+    assert_eq!(
+        label_for(vec![hypothesis(1.0, 1.0, 1e6, 0.01)]),
+        "sole hypothesis"
+    );
+}
+
+#[test]
+fn unusable_weights_fall_back_quietly() {
+    // A NaN and a negative weight: the usable one is best, and no share is made up.
+    let label = label_for(vec![
+        hypothesis(-2.0, 0.0, f64::NAN, 0.01),
+        hypothesis(1.0, 1.0, 0.2, 0.01),
+        hypothesis(3.0, 0.0, -1.0, 0.01),
+    ]);
+    assert_eq!(label, "share unknown");
+    let mut h = harness();
+    let mut plugin = make(&mut h);
+    feed(
+        &h,
+        vec![
+            hypothesis(-2.0, 0.0, f64::NAN, 0.01),
+            hypothesis(1.0, 1.0, 0.2, 0.01),
+        ],
+    );
+    assert!(h.run_changes_scene(plugin.as_mut()));
+    let node = h.scene.get(plugin.node().unwrap()).unwrap();
+    let best_at = node.geometry.labels[0].pos - Vec3::new(0.3, 0.3, 0.0);
+    assert!(
+        (best_at.truncate() - glam::Vec2::new(1.0, 1.0)).length() < 1e-5,
+        "the label sits by the usable hypothesis, not the NaN one: {best_at}"
+    );
+    // All weights unusable or zero: still drawn, still no percentage.
+    assert_eq!(
+        label_for(vec![
+            hypothesis(0.0, 0.0, f64::INFINITY, 0.01),
+            hypothesis(1.0, 0.0, -3.0, 0.01)
+        ]),
+        "share unknown"
+    );
+    assert_eq!(
+        label_for(vec![
+            hypothesis(0.0, 0.0, 0.0, 0.01),
+            hypothesis(1.0, 0.0, 0.0, 0.01)
+        ]),
+        "share unknown"
+    );
+}
+
+/// Every `PLAYER_LOCALIZE_DATA_HYPOTHS` real amcl sent in `captures/nav/`.
+fn amcl_estimates() -> Vec<Message> {
+    use player_proto::capture::{Direction, parse_capture, stream};
+    use player_proto::wire::FrameDecoder;
+
+    let path = std::env::var_os("PLAYER_CAPTURES_DIR")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../captures"))
+        .join("nav/localize_hypotheses_setpose.jsonl");
+    let text = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("missing capture {}: {e}", path.display()));
+    let bytes = stream(&parse_capture(&text).unwrap(), Direction::ServerToClient);
+    let mut frames = FrameDecoder::default();
+    frames.extend(&bytes);
+    frames.take_banner().unwrap().unwrap();
+    let mut estimates = Vec::new();
+    while let Some(frame) = frames.next_frame().unwrap() {
+        let message = Message::decode(frame.header, frame.body).unwrap();
+        if LocalizeData::KIND.of(&message).is_some() {
+            estimates.push(message);
+        }
+    }
+    estimates
+}
+
+#[test]
+fn real_amcl_estimates_are_labelled_without_a_made_up_share() {
+    let estimates = amcl_estimates();
+    assert_eq!(estimates.len(), 10, "the capture's ten estimates");
+    let mut h = harness();
+    let mut plugin = make(&mut h);
+    for message in estimates {
+        // Drawn as sent to the plugin's own device.
+        let mut message = message;
+        message.header.addr = addr();
+        h.device.push(message);
+        assert!(h.run_changes_scene(plugin.as_mut()));
+        let node = h.scene.get(plugin.node().unwrap()).unwrap();
+        // amcl sends one hypothesis holding weight 1: a share of one says nothing.
+        assert_eq!(node.geometry.labels[0].text, "sole hypothesis");
+    }
 }

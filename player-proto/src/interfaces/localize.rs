@@ -98,12 +98,68 @@ pub fn covariance_matrix(cov: &PoseCovariance) -> [[f64; 3]; 3] {
     ]
 }
 
+/// What one hypothesis's weight says about the belief, whatever the driver meant by it.
+///
+/// Player leaves the weight's scale to the driver: amcl's weights are relative to one
+/// another, fakelocalize sends a constant of its own (1e6), others may send nothing useful.
+/// Only a share of the weights of one message is comparable across drivers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum HypothesisShare {
+    /// This hypothesis's part of the message's total weight, in `0.0..=1.0`.
+    Fraction(f64),
+    /// The message holds this hypothesis alone: a share of one says nothing.
+    Sole,
+    /// The weights cannot be compared: one of them is negative, NaN or infinite, or all are
+    /// zero.
+    Unknown,
+}
+
+/// How a share is read out — beside an estimate in the viewer, in `playerprint` — never a
+/// percentage over 100.
+impl std::fmt::Display for HypothesisShare {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            HypothesisShare::Fraction(share) if share > 0.0 && share < 0.005 => {
+                f.write_str("< 1 %")
+            }
+            HypothesisShare::Fraction(share) => write!(f, "{:.0} %", share * 100.0),
+            HypothesisShare::Sole => f.write_str("sole hypothesis"),
+            HypothesisShare::Unknown => f.write_str("share unknown"),
+        }
+    }
+}
+
+/// A weight that can be compared with others: finite and not negative.
+fn usable(weight: f64) -> bool {
+    weight.is_finite() && weight >= 0.0
+}
+
 impl LocalizeData {
-    /// The hypothesis with the largest weight: the pose a client acts on.
+    /// The hypothesis with the largest usable weight (finite, not negative): the pose a client
+    /// acts on. When no weight is usable, the first hypothesis.
     pub fn best(&self) -> Option<&LocalizeHypothesis> {
         self.hypoths
             .iter()
+            .filter(|h| usable(h.alpha))
             .max_by(|a, b| a.alpha.total_cmp(&b.alpha))
+            .or_else(|| self.hypoths.first())
+    }
+
+    /// `hypothesis`'s share of the weights of this message (see [`HypothesisShare`]).
+    pub fn share_of(&self, hypothesis: &LocalizeHypothesis) -> HypothesisShare {
+        if self.hypoths.len() == 1 {
+            return HypothesisShare::Sole;
+        }
+        if !usable(hypothesis.alpha) || !self.hypoths.iter().all(|h| usable(h.alpha)) {
+            return HypothesisShare::Unknown;
+        }
+        // Scaled by the heaviest first, so that weights near f64::MAX do not overflow the sum.
+        let heaviest = self.hypoths.iter().map(|h| h.alpha).fold(0.0, f64::max);
+        if heaviest == 0.0 {
+            return HypothesisShare::Unknown;
+        }
+        let total: f64 = self.hypoths.iter().map(|h| h.alpha / heaviest).sum();
+        HypothesisShare::Fraction((hypothesis.alpha / heaviest / total).clamp(0.0, 1.0))
     }
 }
 
@@ -135,5 +191,77 @@ mod tests {
         };
         assert_eq!(data.best().map(|h| h.mean.px), Some(2.0));
         assert!(LocalizeData::default().best().is_none());
+    }
+
+    fn weighted(alphas: &[f64]) -> LocalizeData {
+        LocalizeData {
+            hypoths: alphas
+                .iter()
+                .enumerate()
+                .map(|(i, &alpha)| LocalizeHypothesis {
+                    mean: Pose2d::new(i as f64, 0.0, 0.0),
+                    alpha,
+                    ..Default::default()
+                })
+                .collect(),
+            ..Default::default()
+        }
+    }
+
+    fn shares(data: &LocalizeData) -> Vec<HypothesisShare> {
+        data.hypoths.iter().map(|h| data.share_of(h)).collect()
+    }
+
+    #[test]
+    fn shares_are_normalised_over_one_message() {
+        use HypothesisShare::*;
+        assert_eq!(
+            shares(&weighted(&[3.0, 1.0])),
+            [Fraction(0.75), Fraction(0.25)]
+        );
+        // fakelocalize's constant weight beside a weightless one.
+        assert_eq!(
+            shares(&weighted(&[1e6, 0.0])),
+            [Fraction(1.0), Fraction(0.0)]
+        );
+        // Weights far outside 0..1 still share out to at most 1.
+        let huge = weighted(&[f64::MAX, f64::MAX]);
+        assert_eq!(
+            shares(&huge),
+            [Fraction(0.5), Fraction(0.5)],
+            "a sum past f64::MAX"
+        );
+        assert_eq!(shares(&weighted(&[1e6])), [Sole]);
+        assert_eq!(shares(&weighted(&[0.0, 0.0])), [Unknown, Unknown]);
+    }
+
+    #[test]
+    fn a_share_reads_as_a_percentage_of_at_most_100() {
+        use HypothesisShare::*;
+        let read = |s: HypothesisShare| s.to_string();
+        assert_eq!(read(Fraction(0.7)), "70 %");
+        assert_eq!(read(Fraction(1.0)), "100 %");
+        assert_eq!(read(Fraction(0.001)), "< 1 %");
+        assert_eq!(read(Fraction(0.0)), "0 %");
+        assert_eq!(read(Sole), "sole hypothesis");
+        assert_eq!(read(Unknown), "share unknown");
+    }
+
+    #[test]
+    fn unusable_weights_are_neither_shared_nor_best() {
+        use HypothesisShare::*;
+        let data = weighted(&[f64::NAN, 0.2, -1.0]);
+        assert_eq!(shares(&data), [Unknown, Unknown, Unknown]);
+        assert_eq!(
+            data.best().map(|h| h.mean.px),
+            Some(1.0),
+            "NaN is not the heaviest"
+        );
+        let none_usable = weighted(&[f64::NAN, -2.0, f64::INFINITY]);
+        assert_eq!(
+            none_usable.best().map(|h| h.mean.px),
+            Some(0.0),
+            "the first, then"
+        );
     }
 }

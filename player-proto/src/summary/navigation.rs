@@ -26,11 +26,12 @@ pub(super) fn localize(l: &Localize) -> String {
     match l {
         Localize::Hypotheses(d) => match d.best() {
             Some(best) => format!(
-                "{} hypotheses, best {} {} weight {:.2}",
+                "{} hypotheses, best {} {} weight {} ({})",
                 d.hypoths.len(),
                 pose2d(&best.mean),
                 spread(&best.cov),
-                best.alpha
+                best.alpha,
+                d.share_of(best)
             ),
             None => "no hypotheses".into(),
         },
@@ -93,7 +94,7 @@ mod tests {
         };
         assert_eq!(
             line("localize:0", Localize::Hypotheses(data)),
-            "2 hypotheses, best (1.000, -2.000, 90.0°) ± (0.100 m, 0.200 m, 0.0°) weight 0.75"
+            "2 hypotheses, best (1.000, -2.000, 90.0°) ± (0.100 m, 0.200 m, 0.0°) weight 0.75 (75 %)"
         );
     }
 

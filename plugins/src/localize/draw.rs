@@ -41,7 +41,7 @@ fn pose_point(pose: &Pose2d) -> Vec2 {
 }
 
 /// Fills `geometry` (cleared first) with every hypothesis; the heaviest is drawn solid with
-/// its weight beside it.
+/// its share of the message's weights beside it (a driver's raw weight may be any number).
 pub fn hypotheses(geometry: &mut Geometry, data: &LocalizeData, color: Rgba) {
     geometry.clear();
     let best = data.best().copied();
@@ -61,7 +61,7 @@ pub fn hypotheses(geometry: &mut Geometry, data: &LocalizeData, color: Rgba) {
             geometry.triangle(tip, left, right, color);
             geometry.label(
                 on_floor(centre + Vec2::new(0.3, 0.3)),
-                format!("{:.0} %", hypothesis.alpha * 100.0),
+                data.share_of(hypothesis).to_string(),
                 color,
             );
         } else {

@@ -222,12 +222,13 @@ impl Plugin for LocalizePlugin {
             Some((data, best)) => {
                 let e = ellipse::Ellipse::of_covariance(&best.cov);
                 ui.label(format!(
-                    "best ({:.2}, {:.2}) m, {:.0}°, weight {:.2}",
+                    "best ({:.2}, {:.2}) m, {:.0}°, {}",
                     best.mean.px,
                     best.mean.py,
                     best.mean.pa.to_degrees(),
-                    best.alpha
-                ));
+                    data.share_of(best)
+                ))
+                .on_hover_text(format!("weight as the driver sent it: {}", best.alpha));
                 ui.label(format!(
                     "95 %: ±{:.2} × ±{:.2} m; {} hypotheses",
                     e.major,
