@@ -73,7 +73,7 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
-    player_tools::logging::init("info");
+    program_edge::logging::init("info");
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -84,3 +84,30 @@ fn a_broken_world_fails_with_its_position() {
         "{stderr}"
     );
 }
+
+/// A log written to a pipe (or a file) is read by programs and editors, not a terminal: no
+/// ANSI colour codes in it.
+#[test]
+fn a_log_written_to_a_pipe_carries_no_colour_codes() {
+    let world = Path::new(env!("CARGO_MANIFEST_DIR")).join("../stage-worlds/simple.world");
+    let out = Command::new(env!("CARGO_BIN_EXE_player-sim"))
+        .arg(&world)
+        .args([
+            "--headless-once",
+            "1",
+            "--port-base",
+            &free_port().to_string(),
+        ])
+        .env_remove("NO_COLOR")
+        .env("RUST_LOG", "info")
+        .stderr(Stdio::piped())
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", out.status);
+    let log = String::from_utf8_lossy(&out.stderr);
+    assert!(log.contains("serving"), "{log}");
+    assert!(
+        !log.contains('\u{1b}'),
+        "escape codes in a piped log: {log:?}"
+    );
+}

@@ -72,8 +72,8 @@ fn parse_robot(text: &str) -> Result<(String, u16, Option<u16>), String> {
 }
 
 fn main() -> ExitCode {
-    player_tools::logging::init("info");
-    player_tools::exit::exit_code("player-relay", run(Cli::parse()))
+    program_edge::logging::init("info");
+    program_edge::exit::exit_code("player-relay", run(Cli::parse()))
 }
 
 fn run(cli: Cli) -> Result<()> {

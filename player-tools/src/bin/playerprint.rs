@@ -52,8 +52,8 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
-    player_tools::logging::init("warn");
-    player_tools::exit::exit_code("playerprint", run(Cli::parse()))
+    program_edge::logging::init("warn");
+    program_edge::exit::exit_code("playerprint", run(Cli::parse()))
 }
 
 fn run(cli: Cli) -> Result<()> {

@@ -71,7 +71,7 @@ pub(crate) struct Args {
 }
 
 fn main() -> Result<()> {
-    player_tools::logging::init("warn");
+    program_edge::logging::init("warn");
     let args = Args::parse();
     if args.robots == 0 || args.observers == 0 || args.beams == 0 {
         bail!("--robots, --observers and --beams must be positive");

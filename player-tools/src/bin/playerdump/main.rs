@@ -42,7 +42,7 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
-    player_tools::exit::exit_code("playerdump", run(&Cli::parse()))
+    program_edge::exit::exit_code("playerdump", run(&Cli::parse()))
 }
 
 fn run(cli: &Cli) -> Result<()> {

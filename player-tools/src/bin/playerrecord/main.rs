@@ -34,12 +34,12 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    player_tools::logging::init("warn");
+    program_edge::logging::init("warn");
     let result = match Cli::parse().command {
         Command::Record(args) => record::run(args),
         Command::Info(args) => info::run(args),
         Command::Export(args) => export::run(args),
         Command::FromCapture(args) => capture::run(args),
     };
-    player_tools::exit::exit_code("playerrecord", result)
+    program_edge::exit::exit_code("playerrecord", result)
 }
