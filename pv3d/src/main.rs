@@ -7,12 +7,12 @@ use anyhow::{Context, Result, bail};
 use clap::Parser;
 use player_sim::serve::ServeOptions;
 use pv3d::app::{
-    RedrawPolicy, ScreenshotRequest, UiWaker, ViewerBuilder, WindowOptions, run_window,
+    RedrawPolicy, ScreenshotRequest, UiWaker, ViewerBuilder, WindowOptions, frame_stats, run_window,
 };
 use pv3d::commands::{Grammar, Script};
 use pv3d::composition::{Composition, ParserRegistry, emit_document};
 use pv3d::embedded_world::serve_world;
-use pv3d::headless::{ScreenshotRun, write_screenshot};
+use pv3d::headless::{HeadlessRun, ScreenshotRun, run_headless, write_screenshot};
 use pv3d::render::Projection;
 use pv3d::robots::recording::Recording;
 
@@ -55,7 +55,8 @@ struct Cli {
     #[arg(long, default_value_t = 2.0, value_name = "SECONDS")]
     after: f64,
 
-    /// Render offscreen (no window, no X server needed). Implied by --screenshot when no
+    /// Run offscreen (no window, no X server needed): with --screenshot, to take it; alone, to
+    /// record, run a script or measure until --quit-after. Implied by --screenshot when no
     /// DISPLAY is set.
     #[arg(long)]
     headless: bool,
@@ -76,7 +77,8 @@ struct Cli {
     #[arg(long, value_name = "OUT.xml")]
     save_to: Option<PathBuf>,
 
-    /// Close the window after this many seconds (for scripted runs and measurements).
+    /// Close the window (or end a --headless run) after this many seconds (for scripted runs,
+    /// recordings and measurements).
     #[arg(long, value_name = "SECONDS")]
     quit_after: Option<f64>,
 
@@ -127,7 +129,7 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
 }
 
 fn main() -> Result<()> {
-    player_tools::logging::init("info");
+    program_edge::logging::init("info");
     let mut cli = Cli::parse();
     if cli.demo {
         cli.world = Some(pv3d::demo::world_file());
@@ -156,16 +158,14 @@ fn main() -> Result<()> {
     if !(0.0..=1e6).contains(&cli.after) {
         bail!("--after must be from 0 to 1000000 seconds");
     }
-    if cli.headless && cli.screenshot.is_none() && cli.emit_config.is_none() {
-        bail!("--headless draws no window: it needs --screenshot OUT.png");
-    }
     let no_display =
         std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none();
-    if no_display && cli.screenshot.is_none() && cli.emit_config.is_none() {
+    if no_display && !cli.headless && cli.screenshot.is_none() && cli.emit_config.is_none() {
         bail!(
             "no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is set): run \
-             pv3d on a desktop, under `xvfb-run`, or add `--screenshot out.png` to render \
-             offscreen"
+             pv3d on a desktop, under `xvfb-run`, add `--screenshot out.png` to render \
+             offscreen, or `--headless` to run without drawing a window (with --record, \
+             --script, --quit-after)"
         );
     }
 
@@ -234,6 +234,18 @@ fn main() -> Result<()> {
                 path.display(),
                 started.elapsed().as_secs_f64()
             );
+            Ok(())
+        }
+        None if cli.headless => {
+            let run = HeadlessRun {
+                size: cli.size,
+                interval,
+                quit_after: cli.quit_after.map(Duration::from_secs_f64),
+            };
+            let summary = run_headless(&mut viewer, &run)?;
+            if cli.frame_stats {
+                eprintln!("{}", frame_stats(summary.frames, summary.elapsed));
+            }
             Ok(())
         }
         _ => {

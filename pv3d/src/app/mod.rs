@@ -13,4 +13,6 @@ pub mod window;
 pub use builder::{ViewerBuilder, ViewerParts};
 pub use view3d::{View3d, ViewInput};
 pub use viewer::{EditError, Viewer};
-pub use window::{RedrawPolicy, ScreenshotRequest, UiWaker, WindowOptions, run_window};
+pub use window::{
+    RedrawPolicy, ScreenshotRequest, UiWaker, WindowOptions, frame_stats, run_window,
+};

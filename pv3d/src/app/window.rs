@@ -116,14 +116,18 @@ impl eframe::App for WindowApp {
     fn on_exit(&mut self, _gl: Option<&eframe::glow::Context>) {
         self.viewer.stop_all();
         if self.frame_stats {
-            let seconds = self.started.elapsed().as_secs_f64();
-            eprintln!(
-                "frames: {} in {seconds:.2} s ({:.1} per second)",
-                self.frames,
-                self.frames as f64 / seconds.max(1e-9)
-            );
+            eprintln!("{}", frame_stats(self.frames, self.started.elapsed()));
         }
     }
+}
+
+/// The `--frame-stats` line a run prints on exit, window or offscreen alike.
+pub fn frame_stats(frames: u64, elapsed: Duration) -> String {
+    let seconds = elapsed.as_secs_f64();
+    format!(
+        "frames: {frames} in {seconds:.2} s ({:.1} per second)",
+        frames as f64 / seconds.max(1e-9)
+    )
 }
 
 impl WindowApp {

@@ -8,6 +8,7 @@ use std::time::{Duration, Instant};
 use image::RgbaImage;
 
 use super::gl::HeadlessError;
+use super::run::paint_until;
 use super::ui::HeadlessUi;
 use crate::app::Viewer;
 
@@ -37,18 +38,13 @@ pub enum ScreenshotError {
 /// Runs the viewer offscreen as `run` says and returns the last frame.
 fn render_after(viewer: &mut Viewer, run: &ScreenshotRun) -> Result<RgbaImage, HeadlessError> {
     let mut ui = HeadlessUi::new(run.size.0, run.size.1)?;
-    let started = Instant::now();
-    loop {
-        viewer.update(Instant::now());
-        ui.run(|ui| viewer.ui(ui));
-        if started.elapsed() >= run.after {
-            break;
-        }
-        std::thread::sleep(
-            run.interval
-                .min(run.after.saturating_sub(started.elapsed())),
-        );
-    }
+    paint_until(
+        viewer,
+        &mut ui,
+        Instant::now(),
+        Some(run.after),
+        run.interval,
+    );
     // Two more passes so that layouts settle with the final data.
     ui.run(|ui| viewer.ui(ui));
     ui.run(|ui| viewer.ui(ui));
