@@ -95,6 +95,9 @@ fn ctrl_drag_over_the_view_drags_the_target_and_release_sends_it() {
     run_for(&mut viewer, Duration::from_millis(500));
     window.idle(&mut viewer, 5);
     viewer.cycle_active();
+    // The selected robot's panel takes room from the view, which is framed anew for its
+    // shape: let that settle before the drag is watched.
+    window.idle(&mut viewer, 2);
     let start = sim_pose(&running, 0);
     let camera = viewer.view.camera.clone();
 

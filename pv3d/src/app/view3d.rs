@@ -12,6 +12,7 @@ use framework::scene::Scene;
 use glam::{Vec2, Vec3};
 
 use super::formula_textures::FormulaTextures;
+use super::framing::Framing;
 use crate::render::{
     Lighting, OrbitCamera, POINT_SIZE_PX, PictureFilters, Projection, SceneBatch, SceneRenderer,
     ScreenDetail, ViewTargets,
@@ -74,8 +75,8 @@ pub struct View3d {
     batched_for: Option<(u64, ScreenDetail)>,
     /// Line segments drawn in the last frame built (for the status line and benchmarks).
     pub segments: usize,
-    /// Whether the view was fitted to the scene yet (once, when content first appears).
-    framed: bool,
+    /// Frames the world until the person moves the view.
+    framing: Framing,
     /// The primary drag under way moves a target, not the camera.
     dragging_target: bool,
     /// Labels written as math (`$…$`), typeset once each.
@@ -166,9 +167,12 @@ impl View3d {
                 .map(|p| ray_at(&self.camera, p));
         }
 
-        if !self.framed {
-            self.frame_scene(scene, aspect);
+        // Moving the view, or beginning to work in it (a click, a drag of a target), makes it
+        // the person's: it is not framed under their pointer any more.
+        if input.camera_moved || input.target_drag.is_some() || response.clicked() {
+            self.framing.user_moved();
         }
+        self.framing.update(&mut self.camera, scene, aspect);
         let view_proj = self.camera.view_projection(aspect);
         let viewport_px = size * ui.ctx().pixels_per_point();
         self.rebuild_batch(
@@ -178,21 +182,6 @@ impl View3d {
         self.paint(ui, rect, view_proj);
         self.paint_labels(ui, rect);
         input
-    }
-
-    /// Centres the view on what is drawn and zooms so that all of it shows.
-    pub fn frame_scene(&mut self, scene: &Scene, aspect: f32) {
-        let Some((lo, hi)) = crate::render::batch::content_bounds(scene) else {
-            return;
-        };
-        let extent = hi - lo;
-        if extent.x.max(extent.y) < 2.0 {
-            return; // Wait for more than a robot or two.
-        }
-        let half = (extent.y / 2.0).max(extent.x / 2.0 / aspect.max(0.1)) * 1.08;
-        self.camera.centre = glam::Vec3::new((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0, 0.0);
-        self.camera.distance = half / (self.camera.fov_y / 2.0).tan();
-        self.framed = true;
     }
 
     fn rebuild_batch(&mut self, scene: &Scene, detail: ScreenDetail) {
