@@ -5,6 +5,7 @@ pub mod builder;
 pub mod command_line;
 pub mod formula_textures;
 pub mod framing;
+pub mod listing;
 pub mod status_panel;
 pub mod timeline;
 pub mod view3d;

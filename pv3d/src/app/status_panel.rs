@@ -12,6 +12,7 @@ use player_proto::interfaces::power::Power;
 use player_proto::message::Body;
 use player_proto::wire::{DevAddr, Interface};
 
+use super::listing;
 use super::viewer::{GONE, GONE_COLOR};
 use crate::composition::FoundDevice;
 use crate::robots::RobotManager;
@@ -20,6 +21,16 @@ const LOW_BATTERY_COLOR: Color32 = Color32::from_rgb(230, 80, 60);
 
 /// Rates are computed over windows of this length.
 const RATE_WINDOW: Duration = Duration::from_secs(1);
+
+/// What the person is looking for in the panel.
+pub struct Find<'a> {
+    /// What they typed: rows whose host:port, state or devices hold every word are listed.
+    pub text: &'a str,
+    /// Servers listed whatever the text: those of the components it found.
+    pub servers: &'a [(String, u16)],
+    /// The selected robot's server, listed first.
+    pub selected: Option<(&'a str, u16)>,
+}
 
 #[derive(Default)]
 pub struct StatusPanel {
@@ -33,20 +44,45 @@ impl StatusPanel {
     /// A summary line, then one row per server. Only the rows in sight are built, so a swarm
     /// of hundreds of servers costs a screenful of rows per frame, not hundreds. `gone`: the
     /// devices a server no longer lists while plugins wait for them.
-    pub fn ui(&mut self, ui: &mut Ui, robots: &RobotManager, gone: &[FoundDevice]) {
+    /// `find`: which rows to list, and which first.
+    pub fn ui(&mut self, ui: &mut Ui, robots: &RobotManager, gone: &[FoundDevice], find: &Find) {
+        let selected = find.selected;
         self.timeline.ui(ui, robots);
         let now = Instant::now();
-        let clients: Vec<_> = robots.clients().collect();
+        let mut clients: Vec<_> = robots.clients().collect();
+        let total = clients.len();
         let connected = clients
             .iter()
             .filter(|(_, _, c)| c.state() == ConnectionState::Connected)
             .count();
-        ui.label(format!(
-            "{} Player servers: {connected} connected, {} not",
-            clients.len(),
-            clients.len() - connected
-        ));
         let used = robots.used_devices();
+        if !find.text.trim().is_empty() {
+            clients.retain(|&(host, port, client)| {
+                if find.servers.iter().any(|(h, p)| h == host && *p == port) {
+                    return true;
+                }
+                let devices: Vec<String> = used
+                    .iter()
+                    .filter(|(h, p, _)| h == host && *p == port)
+                    .map(|(_, _, a)| format!("{}:{}", a.interf, a.index))
+                    .collect();
+                let text = format!("{host}:{port} {} {}", client.state(), devices.join(" "));
+                listing::matches(find.text, &text)
+            });
+        }
+        // Stable: the selected robot's server first, the others in their order.
+        clients.sort_by_key(|&(host, port, _)| Some((host, port)) != selected);
+        let shown = if clients.len() == total {
+            String::new()
+        } else {
+            format!("; {} found", listing::thousands(clients.len()))
+        };
+        ui.label(format!(
+            "{} Player servers: {} connected, {} not{shown}",
+            listing::thousands(total),
+            listing::thousands(connected),
+            listing::thousands(total - connected)
+        ));
         let row_height = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
         egui::ScrollArea::vertical()
             .auto_shrink([false, true])

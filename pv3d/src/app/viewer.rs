@@ -92,6 +92,8 @@ pub struct Viewer {
     editor: editor_ui::EditorState,
     /// Item-tree titles' math, typeset once each.
     titles: super::formula_textures::FormulaTextures,
+    /// What the person typed to find components and servers (see [`super::listing`]).
+    pub find: String,
 }
 
 /// The composition a session came from and the file its state is saved to.
@@ -133,6 +135,7 @@ impl Viewer {
             disabled: Vec::new(),
             editor: Default::default(),
             titles: Default::default(),
+            find: String::new(),
         };
         viewer.add_plugins(instances, devices);
         viewer
@@ -174,7 +177,13 @@ impl Viewer {
                 .default_size(140.0)
                 .show(ui, |ui| {
                     let gone = self.gone_devices();
-                    self.status.ui(ui, &robots, &gone)
+                    let selected = self.selected_server();
+                    let find = super::status_panel::Find {
+                        text: &self.find,
+                        servers: &self.servers_found(),
+                        selected: selected.as_ref().map(|(h, p)| (h.as_str(), *p)),
+                    };
+                    self.status.ui(ui, &robots, &gone, &find)
                 });
         }
         egui::CentralPanel::default()
@@ -220,6 +229,13 @@ impl Viewer {
             let (plugin, mut ctx) = self.plugin_in_context(i, now);
             plugin.windows(&egui_ctx, &mut ctx);
         }
+    }
+
+    /// The Player server (host, port) of the selected robot, listed first in the panels.
+    fn selected_server(&self) -> Option<(String, u16)> {
+        let slot = self.slots.get(self.active?)?;
+        let device = slot.instance.device.as_ref()?;
+        Some((device.host.clone(), device.port))
     }
 
     fn handle_keys(&mut self, ui: &mut Ui) {

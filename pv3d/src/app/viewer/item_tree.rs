@@ -10,6 +10,9 @@ use framework::plugin::Metadata;
 use super::Viewer;
 use super::device_presence::{GONE, GONE_COLOR};
 use super::math_title;
+use crate::app::listing::{
+    Entry, FIND_FROM, LISTED_AT_MOST, Listing, list, matches, summary, thousands,
+};
 
 impl Viewer {
     /// The list of components on the left: each plugin's panel, services and "about" line,
@@ -24,6 +27,7 @@ impl Viewer {
         if observing {
             ui.strong("Observing: read-only, no tele-operation");
         }
+        let listing = self.find_field(ui);
         let mut activate = None;
         let mut used = None;
         let mut edit = None;
@@ -31,7 +35,7 @@ impl Viewer {
         // typeset titles too.
         let mut editor = std::mem::take(&mut self.editor);
         let mut titles = std::mem::take(&mut self.titles);
-        for i in 0..self.slots.len() {
+        for &i in &listing.shown {
             let active = self.active == Some(i);
             let about = self.slots[i].metadata;
             let (plugin, mut ctx) = self.plugin_in_context(i, now);
@@ -101,6 +105,14 @@ impl Viewer {
         }
         self.titles = titles;
         self.editor = editor;
+        if listing.left_out() > 0 {
+            ui.small(format!(
+                "… and {} more: type in Find to reach them",
+                thousands(listing.left_out())
+            ));
+        } else if listing.found == 0 && !self.find.trim().is_empty() {
+            ui.small("no component matches");
+        }
         self.gone_entries(ui);
         if let Some(e) = self.editor_footer(ui) {
             edit = Some(e);
@@ -144,6 +156,57 @@ impl Viewer {
             "drag: pan/orbit · wheel: zoom · T: top/perspective · Tab: next robot · Space: stop all \
              · click ground: send robot · Ctrl+drag: drag its target · click/right-click object: actions"
         });
+    }
+
+    /// The find field and the summary by kind, once there are enough components to need
+    /// them, and which entries to list: the selected robot and its server's first.
+    fn find_field(&mut self, ui: &mut Ui) -> Listing {
+        if self.slots.len() >= FIND_FROM {
+            ui.add(
+                egui::TextEdit::singleline(&mut self.find)
+                    .hint_text("Find: robot, device, host:port"),
+            );
+            ui.small(summary(
+                self.slots.iter().map(|s| {
+                    let library = s.instance.library();
+                    library.strip_prefix("libpv3d_").unwrap_or(library)
+                }),
+                "components",
+            ));
+        }
+        let titles: Vec<String> = self.slots.iter().map(|s| s.plugin.title()).collect();
+        let entries: Vec<Entry<'_>> = self
+            .slots
+            .iter()
+            .zip(&titles)
+            .map(|(slot, title)| Entry {
+                title,
+                server: slot
+                    .instance
+                    .device
+                    .as_ref()
+                    .map(|d| (d.host.as_str(), d.port)),
+            })
+            .collect();
+        list(&entries, self.active, &self.find, LISTED_AT_MOST)
+    }
+
+    /// The servers of the components the find text matches: their rows stay in the status
+    /// panel, so finding "robot3" shows robot3's server too.
+    pub(super) fn servers_found(&self) -> Vec<(String, u16)> {
+        if self.find.trim().is_empty() {
+            return Vec::new();
+        }
+        let mut servers: Vec<(String, u16)> = self
+            .slots
+            .iter()
+            .filter(|slot| matches(&self.find, &slot.plugin.title()))
+            .filter_map(|slot| slot.instance.device.as_ref())
+            .map(|d| (d.host.clone(), d.port))
+            .collect();
+        servers.sort();
+        servers.dedup();
+        servers
     }
 
     /// The plugins whose device went away: named as they were, marked, and told when they
