@@ -356,3 +356,33 @@ fn a_server_that_never_works_is_retried_ever_more_slowly() {
     let why = client.last_disconnect().expect("the reason is kept");
     assert!(why.contains("bad header"), "{why}");
 }
+
+/// A failed connect names the first attempt's own reason, not a summary that may be wrong:
+/// a host name that does not resolve is not "connection refused".
+#[test]
+fn a_failed_connect_says_what_went_wrong() {
+    let closed = {
+        let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+        listener.local_addr().unwrap().port()
+    };
+    let refused = Client::connect("127.0.0.1", closed, quick())
+        .err()
+        .expect("nobody listens there")
+        .to_string();
+    assert!(
+        refused.starts_with(&format!(
+            "cannot reach the Player server at 127.0.0.1:{closed}: "
+        )) && refused.to_lowercase().contains("refused"),
+        "{refused}"
+    );
+    // .invalid never resolves (RFC 2606).
+    let unknown = Client::connect("robot.invalid", 6665, quick())
+        .err()
+        .expect("no such host")
+        .to_string();
+    assert!(
+        unknown.starts_with("cannot reach the Player server at robot.invalid:6665: ")
+            && !unknown.contains("refused"),
+        "{unknown}"
+    );
+}

@@ -70,9 +70,11 @@ impl Client {
         match client.wait_for_state(limit, |s| *s != ConnectionState::Connecting) {
             Some(ConnectionState::Connected) => Ok(client),
             Some(ConnectionState::Failed(why)) => Err(unreachable(why)),
-            Some(_) => Err(unreachable(
-                "connection refused or lost during the handshake".into(),
-            )),
+            // Retrying: the first attempt's own reason (a name that does not resolve, a
+            // refused port, a banner that is not Player's) says more than any summary.
+            Some(_) => Err(unreachable(client.last_disconnect().unwrap_or_else(|| {
+                "connection refused or lost during the handshake".into()
+            }))),
             None => Err(unreachable(format!("no handshake within {limit:?}"))),
         }
     }
