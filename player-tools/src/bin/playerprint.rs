@@ -17,7 +17,7 @@ use player_proto::wire::{DevAddr, Interface};
 
 /// Print the data of Player devices as it arrives.
 #[derive(Parser, Debug)]
-#[command(version, about, disable_help_flag = true)]
+#[command(version, disable_help_flag = true)]
 struct Cli {
     /// Devices to print, e.g. `laser:0 position2d:1`.
     devices: Vec<String>,

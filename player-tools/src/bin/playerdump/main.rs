@@ -23,7 +23,7 @@ enum Dir {
 
 /// Decode a recorded Player byte stream, one line per message.
 #[derive(Parser, Debug)]
-#[command(version, about)]
+#[command(version)]
 struct Cli {
     /// The raw stream (server to client: banner first), or a JSON-lines capture with --capture.
     file: PathBuf,

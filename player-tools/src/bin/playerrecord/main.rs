@@ -19,7 +19,7 @@ use clap::{Parser, Subcommand};
 
 /// Record Player robots losslessly; summarise, convert and export recordings.
 #[derive(Parser, Debug)]
-#[command(version, about)]
+#[command(version)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
