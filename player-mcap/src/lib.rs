@@ -5,10 +5,12 @@
 //! back to the very same `.prec` bytes and `player-sim --replay` serves it as it serves the
 //! `.prec`. `docs/RECORDING-FORMAT.md` ("MCAP") describes the layout; [`layout`] implements it.
 //!
-//! * [`McapRecordWriter`] — records into an MCAP file.
+//! * [`McapRecordWriter`] — records into an MCAP file, with what Foxglove shows of them
+//!   ([`foxglove_channels`], through `player_foxglove`).
 //! * [`McapRecords`] — records out of one, trusting nothing.
 //! * [`prec_to_mcap`] / [`mcap_to_prec`] — whole files, streaming, in bounded memory.
 
+pub mod foxglove_channels;
 pub mod layout;
 pub mod reader;
 pub mod writer;
@@ -50,6 +52,8 @@ pub enum ConvertError {
 #[derive(Debug, Default)]
 pub struct Converted {
     pub records: u64,
+    /// Foxglove messages written beside the records (MCAP exports).
+    pub foxglove: u64,
     /// Why reading stopped before the input's end, if it did: everything before is written.
     pub stopped: Option<ConvertError>,
 }
@@ -73,6 +77,7 @@ pub fn prec_to_mcap<R: Read, W: Write + Seek>(
         }
     }
     converted.records = writer.records();
+    converted.foxglove = writer.foxglove_messages();
     Ok((converted, writer.finish()?))
 }
 

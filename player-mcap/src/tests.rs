@@ -46,7 +46,10 @@ fn prec(records: &[Record]) -> Vec<u8> {
 }
 
 fn mcap_of(prec_bytes: &[u8], chunk_size: u64) -> Vec<u8> {
-    let options = McapOptions { chunk_size };
+    let options = McapOptions {
+        chunk_size,
+        ..McapOptions::default()
+    };
     let reader = RecordingReader::new(prec_bytes).unwrap();
     let (converted, out) = prec_to_mcap(reader, Cursor::new(Vec::new()), options).unwrap();
     assert!(converted.stopped.is_none(), "{:?}", converted.stopped);
@@ -218,4 +221,51 @@ fn a_lying_record_length_is_refused_without_allocating_it() {
     assert!(got.is_empty());
     let error = stopped.expect("refused").to_string();
     assert!(error.contains("at or before byte"), "{error}");
+}
+
+#[test]
+fn every_laser_scan_is_also_a_foxglove_laser_scan() {
+    use player_proto::capture::Direction;
+    use player_proto::wire::{Interface, MsgType};
+    let records = real_records();
+    let scans = records
+        .iter()
+        .filter(|r| {
+            matches!(&r.event, Event::Message { direction: Direction::ServerToClient, header, .. }
+                if header.addr.interf == Interface::LASER
+                    && header.msg_type == MsgType::Data
+                    && header.subtype == 1 /* scan */)
+        })
+        .count();
+    let mcap = mcap_of(&prec(&records), McapOptions::default().chunk_size);
+    let mut foxglove_scans = 0;
+    let mut schemas = std::collections::BTreeSet::new();
+    for message in mcap::MessageStream::new(&mcap).unwrap() {
+        let message = message.unwrap();
+        let schema = message
+            .channel
+            .schema
+            .as_ref()
+            .expect("every channel has a schema");
+        schemas.insert(schema.name.clone());
+        if schema.name == "foxglove.LaserScan" && message.channel.topic.contains("/laser/") {
+            foxglove_scans += 1;
+        }
+    }
+    assert!(scans >= 10, "{scans} scans recorded");
+    assert_eq!(foxglove_scans, scans);
+    for name in [
+        "player.Message",
+        "player.Session",
+        "foxglove.LaserScan",
+        "foxglove.PoseInFrame",
+        "foxglove.FrameTransform",
+        "foxglove.Grid",
+        "foxglove.RawImage",
+        "foxglove.CompressedImage",
+        "foxglove.SceneUpdate",
+        "foxglove.Log",
+    ] {
+        assert!(schemas.contains(name), "no {name} in {schemas:?}");
+    }
 }

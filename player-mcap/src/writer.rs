@@ -1,4 +1,5 @@
-//! Writing a recording's records into an MCAP file, losslessly (see [`crate::layout`]).
+//! Writing a recording's records into an MCAP file, losslessly (see [`crate::layout`]), with
+//! Foxglove's well-known schemas beside them when asked ([`crate::foxglove_channels`]).
 
 use std::collections::HashMap;
 use std::io::{Seek, Write};
@@ -6,6 +7,7 @@ use std::io::{Seek, Write};
 use mcap::records::MessageHeader;
 use player_proto::recording::{Event, Record};
 
+use crate::foxglove_channels::FoxgloveChannels;
 use crate::layout::{FILE_METADATA, Stream, session_json};
 
 /// Why an MCAP file could not be written.
@@ -23,6 +25,8 @@ pub enum McapWriteError {
 /// How the file is written.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct McapOptions {
+    /// Also write what Foxglove shows of the messages, in its well-known schemas.
+    pub foxglove: bool,
     /// Uncompressed bytes per chunk: what a crash can lose while recording directly.
     pub chunk_size: u64,
 }
@@ -30,6 +34,7 @@ pub struct McapOptions {
 impl Default for McapOptions {
     fn default() -> Self {
         McapOptions {
+            foxglove: true,
             chunk_size: mcap::WriteOptions::DEFAULT_CHUNK_SIZE,
         }
     }
@@ -42,6 +47,7 @@ pub struct McapRecordWriter<W: Write + Seek> {
     schemas: HashMap<Stream, u16>,
     /// Host and port of each connection, from its `connection` record.
     hosts: HashMap<u32, (String, u16)>,
+    foxglove: Option<FoxgloveChannels>,
     records: u64,
 }
 
@@ -65,11 +71,12 @@ impl<W: Write + Seek> McapRecordWriter<W> {
             channels: HashMap::new(),
             schemas: HashMap::new(),
             hosts: HashMap::new(),
+            foxglove: options.foxglove.then(FoxgloveChannels::default),
             records: 0,
         })
     }
 
-    /// Appends one record.
+    /// Appends one record (and what Foxglove shows of it).
     pub fn write(&mut self, record: &Record) -> Result<(), McapWriteError> {
         let stream = Stream::of(&record.event);
         let channel = self.channel(record, stream)?;
@@ -96,12 +103,23 @@ impl<W: Write + Seek> McapRecordWriter<W> {
         };
         written.map_err(|source| self.failed(source))?;
         self.records += 1;
+        if let Some(foxglove) = &mut self.foxglove {
+            let records = self.records;
+            foxglove
+                .write(&mut self.out, record)
+                .map_err(|source| McapWriteError::Mcap { records, source })?;
+        }
         Ok(())
     }
 
     /// Records written so far.
     pub fn records(&self) -> u64 {
         self.records
+    }
+
+    /// Foxglove messages written so far.
+    pub fn foxglove_messages(&self) -> u64 {
+        self.foxglove.as_ref().map_or(0, |f| f.written)
     }
 
     /// Writes what is buffered: every record so far is in the file after this.
