@@ -9,10 +9,12 @@
 //!   ([`foxglove_channels`], through `player_foxglove`).
 //! * [`McapRecords`] — records out of one, trusting nothing.
 //! * [`prec_to_mcap`] / [`mcap_to_prec`] — whole files, streaming, in bounded memory.
+//! * [`recorder`] — a recorder writing MCAP directly when the file is named `*.mcap`.
 
 pub mod foxglove_channels;
 pub mod layout;
 pub mod reader;
+pub mod sink;
 pub mod writer;
 
 use std::io::{Read, Seek, Write};
@@ -20,6 +22,7 @@ use std::io::{Read, Seek, Write};
 use player_proto::recording::{ReadError, RecordingReader, RecordingWriter, WriteError};
 
 pub use reader::{McapReadError, McapRecords};
+pub use sink::{RecordError, recorder};
 pub use writer::{McapOptions, McapRecordWriter, McapWriteError};
 
 /// The conventional file extension of an MCAP file.

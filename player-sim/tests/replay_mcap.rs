@@ -1,6 +1,7 @@
 //! A recording of a real Player 3 + Stage 4 server (`captures/laser_push.jsonl`), exported to
 //! MCAP, is served by `player-sim --replay` as the `.prec` is: a client receives the same
-//! messages, byte for byte, from both.
+//! messages, byte for byte, from both. A live session recorded straight into MCAP replays as
+//! it was received.
 
 use std::io::{BufReader, Cursor};
 use std::path::Path;
@@ -145,6 +146,54 @@ fn an_mcap_export_of_a_real_server_replays_as_its_prec_does() {
     let from_mcap = laser_from_replay(&mcap, sent.len());
     same(&sent, &from_prec);
     same(&from_prec, &from_mcap);
+}
+
+#[test]
+fn a_live_session_recorded_straight_into_mcap_replays_as_it_was_received() {
+    use player_sim::serve::{ServeOptions, serve};
+    let dir = tempfile::tempdir().unwrap();
+    let world_file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../stage-worlds/simple.world");
+    let world = player_sim::world::World::load(&world_file).unwrap();
+    let devices =
+        player_sim::served::from_cfg(&world_file.with_extension("cfg"), &world, &mut Vec::new())
+            .unwrap();
+    let options = ServeOptions {
+        speedup: 10.0,
+        free_ports: true,
+        ..ServeOptions::default()
+    };
+    let sim = serve(player_sim::sim::Simulation::new(world), devices, options).unwrap();
+    let port = sim.port(6665).unwrap();
+
+    let path = dir.path().join("live.mcap");
+    let recorder = player_mcap::recorder(&path).unwrap();
+    let (mut options, received) = collecting();
+    let (record, collect) = (recorder.tap(), options.tap.take().unwrap());
+    options.tap = Some(Arc::new(move |host: &str, port: u16| {
+        let (record, collect) = (record(host, port), collect(host, port));
+        let both: player_proto::client::ConnectionTap = Arc::new(move |time, event| {
+            record(time, event);
+            collect(time, event);
+        });
+        both
+    }));
+    let mut client = Client::connect("127.0.0.1", port, options).unwrap();
+    client.laser(0).subscribe().unwrap();
+    let mut live = Vec::new();
+    while live.len() < 20 {
+        let (header, body) = received.recv_timeout(WAIT).expect("a laser scan");
+        if header.msg_type == MsgType::Data && header.addr.interf == Interface::LASER {
+            live.push((header, body));
+        }
+    }
+    client.close();
+    drop(sim);
+    let stats = recorder.finish().unwrap();
+    assert_eq!(stats.lost(), 0, "{stats:?}");
+    assert_eq!(stats.bytes, std::fs::metadata(&path).unwrap().len());
+
+    let replayed = laser_from_replay(&path, live.len());
+    same(&live, &replayed);
 }
 
 #[test]

@@ -6,7 +6,6 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
 use player_proto::client::{ClientOptions, MultiClient};
-use player_proto::recording::Recorder;
 use player_proto::wire::DevAddr;
 
 /// How often progress is printed.
@@ -22,7 +21,7 @@ pub struct Args {
     #[arg(required = true)]
     robots: Vec<String>,
 
-    /// The recording to write (replaced if it exists).
+    /// The recording to write (replaced if it exists): MCAP when it is named `*.mcap`.
     #[arg(short, long)]
     out: PathBuf,
 
@@ -60,7 +59,7 @@ pub fn run(args: Args) -> Result<()> {
                 .with_context(|| format!("device {text:?}"))?,
         );
     }
-    let recorder = Recorder::create(&args.out)?;
+    let recorder = player_mcap::recorder(&args.out)?;
     let options = ClientOptions {
         tap: Some(recorder.tap()),
         // Every message is wanted, not only the newest.
