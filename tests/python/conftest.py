@@ -20,6 +20,17 @@ def playerrecord() -> pathlib.Path:
 
 
 @pytest.fixture(scope="session")
+def player_sim() -> pathlib.Path:
+    """The player-sim binary, built (debug) if it is not fresh."""
+    subprocess.run(
+        ["cargo", "build", "-q", "-p", "player-sim", "--bin", "player-sim"],
+        cwd=ROOT,
+        check=True,
+    )
+    return ROOT / "target" / "debug" / "player-sim"
+
+
+@pytest.fixture(scope="session")
 def captures() -> list[pathlib.Path]:
     """Every capture of real Player 3 + Stage 4 traffic in the repository."""
     found = sorted((ROOT / "captures").glob("*.jsonl")) + sorted(

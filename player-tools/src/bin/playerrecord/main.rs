@@ -12,6 +12,7 @@
 //! ```
 
 mod capture;
+mod describe;
 mod export;
 mod info;
 mod mcap_file;

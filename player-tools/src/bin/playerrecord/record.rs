@@ -87,13 +87,18 @@ pub fn run(args: Args) -> Result<()> {
             pending.push((client, device, client.subscribe_async(device)));
         }
     }
+    let mut subscribed = Vec::new();
     for (client, device, reply) in pending {
-        if let Err(e) = reply.wait(options.request_timeout) {
-            let (interf, index) = (device.interf, device.index);
-            let (host, port) = (client.host(), client.port());
-            tracing::warn!("{host}:{port} {interf}:{index} not subscribed: {e}");
+        match reply.wait(options.request_timeout) {
+            Ok(_) => subscribed.push((&**client, device)),
+            Err(e) => {
+                let (interf, index) = (device.interf, device.index);
+                let (host, port) = (client.host(), client.port());
+                tracing::warn!("{host}:{port} {interf}:{index} not subscribed: {e}");
+            }
         }
     }
+    crate::describe::describe(subscribed, options.request_timeout);
     let started = Instant::now();
     let until = args.seconds.map(|s| started + Duration::from_secs_f64(s));
     loop {
