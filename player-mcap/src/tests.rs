@@ -269,3 +269,54 @@ fn every_laser_scan_is_also_a_foxglove_laser_scan() {
         assert!(schemas.contains(name), "no {name} in {schemas:?}");
     }
 }
+
+#[test]
+fn a_channel_claiming_to_be_a_player_channel_without_sense_is_named() {
+    let mut writer = mcap::Writer::new(Cursor::new(Vec::new())).unwrap();
+    let mut meta = layout::Stream::Session.metadata(1, None);
+    meta.insert(layout::META_CONNECTION.into(), "first".into());
+    writer
+        .add_channel(0, "/player/first/session", "json", &meta)
+        .unwrap();
+    writer.finish().unwrap();
+    let (got, stopped) = read_mcap(&writer.into_inner().into_inner());
+    assert!(got.is_empty());
+    let error = stopped.expect("refused").to_string();
+    assert!(error.contains("\"/player/first/session\""), "{error}");
+    assert!(error.contains("\"first\" is not a number"), "{error}");
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+    /// Damage anywhere — bytes changed, the file cut — is an error or fewer records, never a
+    /// panic, and what is returned is the recording's beginning.
+    #[test]
+    fn damaged_files_never_panic(
+        changes in proptest::collection::vec((0.0..1.0f64, proptest::prelude::any::<u8>()), 1..8),
+        keep in 0.5..1.0f64,
+    ) {
+        let (records, mcap) = small_recording();
+        let mut mcap = mcap.clone();
+        let len = mcap.len();
+        for (at, byte) in changes {
+            let at = ((at * len as f64) as usize).min(len - 1);
+            mcap[at] = byte;
+        }
+        mcap.truncate((keep * len as f64) as usize);
+        let (got, _) = read_mcap(&mcap);
+        // Chunks are checked whole before their records are returned: what comes back is the
+        // recording's beginning, unchanged.
+        proptest::prop_assert_eq!(&got[..], &records[..got.len()]);
+    }
+}
+
+/// The first records of the real recording, and their MCAP file in 512-byte chunks (many).
+fn small_recording() -> &'static (Vec<Record>, Vec<u8>) {
+    static SMALL: std::sync::OnceLock<(Vec<Record>, Vec<u8>)> = std::sync::OnceLock::new();
+    SMALL.get_or_init(|| {
+        let records: Vec<Record> = real_records().into_iter().take(60).collect();
+        let mcap = mcap_of(&prec(&records), 512);
+        (records, mcap)
+    })
+}
