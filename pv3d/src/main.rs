@@ -34,9 +34,10 @@ struct Cli {
     #[arg(long, value_name = "WORLD", conflicts_with = "demo")]
     world: Option<PathBuf>,
 
-    /// Record every message of every server to this file (docs/RECORDING-FORMAT.md); replay
-    /// it with `player-sim --replay FILE`.
-    #[arg(long, value_name = "FILE.prec")]
+    /// Record every message of every server to this file (docs/RECORDING-FORMAT.md): MCAP,
+    /// with Foxglove's schemas, when it is named `*.mcap`; replay it with `player-sim --replay
+    /// FILE`.
+    #[arg(long, value_name = "FILE.prec|FILE.mcap")]
     record: Option<PathBuf>,
 
     /// Simulated seconds per real second for --demo and --world.

@@ -6,7 +6,8 @@
 //! * [`from_capture`] — a capture of real Player traffic (`captures/`) as records.
 //! * [`index`] — one pass for what a replay or a summary needs (devices, replies, seeking).
 //! * [`playerlog`] — export to the text format of Player's `writelog`/`readlog` drivers.
-//! * [`recorder`] — a client tap that writes on its own thread and counts what it could not.
+//! * [`recorder`] — a client tap that writes on its own thread and counts what it could not,
+//!   into a `.prec` or any other [`sink::RecordSink`].
 //!
 //! ```no_run
 //! use player_proto::client::{Client, ClientOptions};
@@ -27,12 +28,14 @@ pub mod index;
 pub mod playerlog;
 pub mod reader;
 pub mod recorder;
+pub mod sink;
 pub mod writer;
 
 pub use format::{Event, Record};
 pub use index::RecordingIndex;
 pub use reader::{ReadError, RecordingReader};
 pub use recorder::{Recorder, RecorderError, RecorderStats};
+pub use sink::RecordSink;
 pub use writer::{RecordingWriter, WriteError};
 
 /// The conventional file extension of a recording.

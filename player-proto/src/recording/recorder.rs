@@ -16,6 +16,7 @@ use std::thread::JoinHandle;
 use std::time::SystemTime;
 
 use super::format::{Event, Record, to_ns};
+use super::sink::RecordSink;
 use super::writer::{RecordingWriter, WriteError};
 use crate::client::{ConnectionTap, Tap, TapEvent};
 
@@ -100,7 +101,11 @@ impl Recorder {
 
     /// Records to any writer (tests give one that fails).
     pub fn to_writer<W: Write + Send + 'static>(out: W) -> Result<Recorder, RecorderError> {
-        let writer = RecordingWriter::new(out)?;
+        Recorder::to_sink(RecordingWriter::new(out)?)
+    }
+
+    /// Records into any sink (another file format), started already.
+    pub fn to_sink<S: RecordSink>(writer: S) -> Result<Recorder, RecorderError> {
         let counters = Arc::new(Counters::default());
         counters.bytes.store(writer.bytes(), Ordering::Relaxed);
         let (queue, records) = sync_channel(QUEUE_RECORDS);
@@ -230,9 +235,9 @@ impl Sink {
 
 /// The writer thread: write what comes, flush when nothing is waiting; after a write error,
 /// count what still comes as failed.
-fn write_loop<W: Write>(mut writer: RecordingWriter<W>, items: &Receiver<Item>, c: &Counters) {
+fn write_loop<S: RecordSink>(mut writer: S, items: &Receiver<Item>, c: &Counters) {
     let mut broken = false;
-    let fail = |e: WriteError, broken: &mut bool| {
+    let fail = |e: S::Error, broken: &mut bool| {
         tracing::error!("recording stopped: {e}");
         *c.error.lock().expect("recorder error") = Some(e.to_string());
         *broken = true;
@@ -269,9 +274,11 @@ fn write_loop<W: Write>(mut writer: RecordingWriter<W>, items: &Receiver<Item>, 
             }
         }
     }
-    if !broken && let Err(e) = writer.flush() {
+    if !broken && let Err(e) = writer.finish() {
         fail(e, &mut broken);
     }
+    // A format with an index writes it at the end.
+    c.bytes.store(writer.bytes(), Ordering::Relaxed);
     // Whatever raced the finish is lost; count it.
     while let Ok(Item::Record(_)) = items.try_recv() {
         c.failed.fetch_add(1, Ordering::Relaxed);

@@ -6,6 +6,7 @@
 
 mod clock;
 mod devices;
+pub mod from_mcap;
 mod playback;
 
 use std::collections::{BTreeMap, HashMap};
@@ -63,6 +64,8 @@ pub enum ReplayError {
     #[error("--speed must be above 0, not {0}")]
     Speed(f64),
     #[error(transparent)]
+    Mcap(#[from] from_mcap::FromMcapError),
+    #[error(transparent)]
     Server(#[from] ServerError),
 }
 
@@ -85,6 +88,8 @@ pub struct Replaying {
     pub stopped: Option<ReadError>,
     thread: Option<JoinHandle<()>>,
     _server: Server,
+    /// The recording an MCAP file was converted to, removed after the playback stopped.
+    _converted: Option<from_mcap::ConvertedRecording>,
 }
 
 impl Replaying {
@@ -105,10 +110,22 @@ impl Drop for Replaying {
     }
 }
 
-/// Reads the recording once for its servers and devices, then serves it.
+/// Reads the recording (a `.prec`, or an MCAP file written from one) once for its servers and
+/// devices, then serves it.
 pub fn replay(path: &Path, options: &ReplayOptions) -> Result<Replaying, ReplayError> {
     if !(options.speed > 0.0 && options.speed.is_finite()) {
         return Err(ReplayError::Speed(options.speed));
+    }
+    if player_mcap::is_mcap(path) {
+        let converted = from_mcap::convert(path)?;
+        let mut replaying = replay(&converted.path, options).map_err(|e| match e {
+            ReplayError::Empty { .. } => ReplayError::Empty {
+                path: path.to_path_buf(),
+            },
+            e => e,
+        })?;
+        replaying._converted = Some(converted);
+        return Ok(replaying);
     }
     let read_error = |source| ReplayError::Read {
         path: path.to_path_buf(),
@@ -229,6 +246,7 @@ pub fn replay(path: &Path, options: &ReplayOptions) -> Result<Replaying, ReplayE
         stopped: index.stopped,
         thread: Some(thread),
         _server: server,
+        _converted: None,
     })
 }
 

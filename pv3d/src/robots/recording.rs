@@ -1,10 +1,12 @@
 //! `pv3d --record FILE`: every message of every server written to a recording while the
-//! viewer runs, finished — and what it wrote reported — when the viewer ends.
+//! viewer runs (MCAP when FILE is named `*.mcap`, else a `.prec`), finished — and what it
+//! wrote reported — when the viewer ends.
 
 use std::path::{Path, PathBuf};
 
+use player_mcap::RecordError;
 use player_proto::client::Tap;
-use player_proto::recording::{Recorder, RecorderError};
+use player_proto::recording::Recorder;
 
 /// A recording in progress; finished when dropped (after the robots, which hold its tap).
 pub struct Recording {
@@ -13,10 +15,10 @@ pub struct Recording {
 }
 
 impl Recording {
-    pub fn start(path: &Path) -> Result<Recording, RecorderError> {
+    pub fn start(path: &Path) -> Result<Recording, RecordError> {
         tracing::info!("recording every message to {}", path.display());
         Ok(Recording {
-            recorder: Some(Recorder::create(path)?),
+            recorder: Some(player_mcap::recorder(path)?),
             path: path.to_path_buf(),
         })
     }

@@ -1,16 +1,21 @@
 //! `playerrecord` — record every message of Player robots losslessly, for robots without a
-//! viewer; summarise a recording; turn captures into one; export to Player's own log format.
+//! viewer; summarise a recording; turn captures into one; export to Player's own log format
+//! or to MCAP, and back from MCAP.
 //!
 //! ```text
 //! playerrecord record --out swarm.prec localhost:7000-7255 --seconds 600
 //! playerrecord info swarm.prec
 //! playerrecord export swarm.prec --out swarm.log
 //! playerrecord from-capture captures/laser_push.jsonl --out laser.prec
+//! playerrecord export swarm.prec --mcap --out swarm.mcap
+//! playerrecord from-mcap swarm.mcap --out swarm.prec
 //! ```
 
 mod capture;
+mod describe;
 mod export;
 mod info;
+mod mcap_file;
 mod record;
 
 use std::process::ExitCode;
@@ -31,6 +36,7 @@ enum Command {
     Info(info::Args),
     Export(export::Args),
     FromCapture(capture::Args),
+    FromMcap(mcap_file::FromMcapArgs),
 }
 
 fn main() -> ExitCode {
@@ -40,6 +46,7 @@ fn main() -> ExitCode {
         Command::Info(args) => info::run(args),
         Command::Export(args) => export::run(args),
         Command::FromCapture(args) => capture::run(args),
+        Command::FromMcap(args) => mcap_file::from_mcap(args),
     };
     program_edge::exit::exit_code("playerrecord", result)
 }

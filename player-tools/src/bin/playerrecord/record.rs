@@ -6,7 +6,6 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
 use player_proto::client::{ClientOptions, MultiClient};
-use player_proto::recording::Recorder;
 use player_proto::wire::DevAddr;
 
 /// How often progress is printed.
@@ -22,7 +21,7 @@ pub struct Args {
     #[arg(required = true)]
     robots: Vec<String>,
 
-    /// The recording to write (replaced if it exists).
+    /// The recording to write (replaced if it exists): MCAP when it is named `*.mcap`.
     #[arg(short, long)]
     out: PathBuf,
 
@@ -60,7 +59,7 @@ pub fn run(args: Args) -> Result<()> {
                 .with_context(|| format!("device {text:?}"))?,
         );
     }
-    let recorder = Recorder::create(&args.out)?;
+    let recorder = player_mcap::recorder(&args.out)?;
     let options = ClientOptions {
         tap: Some(recorder.tap()),
         // Every message is wanted, not only the newest.
@@ -88,13 +87,18 @@ pub fn run(args: Args) -> Result<()> {
             pending.push((client, device, client.subscribe_async(device)));
         }
     }
+    let mut subscribed = Vec::new();
     for (client, device, reply) in pending {
-        if let Err(e) = reply.wait(options.request_timeout) {
-            let (interf, index) = (device.interf, device.index);
-            let (host, port) = (client.host(), client.port());
-            tracing::warn!("{host}:{port} {interf}:{index} not subscribed: {e}");
+        match reply.wait(options.request_timeout) {
+            Ok(_) => subscribed.push((&**client, device)),
+            Err(e) => {
+                let (interf, index) = (device.interf, device.index);
+                let (host, port) = (client.host(), client.port());
+                tracing::warn!("{host}:{port} {interf}:{index} not subscribed: {e}");
+            }
         }
     }
+    crate::describe::describe(subscribed, options.request_timeout);
     let started = Instant::now();
     let until = args.seconds.map(|s| started + Duration::from_secs_f64(s));
     loop {
