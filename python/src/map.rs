@@ -46,7 +46,7 @@ impl Grid {
 
     fn __repr__(&self) -> String {
         format!(
-            "<Grid {} x {} cells of {} m, origin ({:.2}, {:.2})>",
+            "<Grid {} x {} cells of {:.3} m, origin ({:.2}, {:.2})>",
             self.width, self.height, self.resolution, self.origin.0, self.origin.1
         )
     }

@@ -1,23 +1,12 @@
 """Shared fixtures: the repository's paths, simulated worlds, and player-sim / playerrecord
 run as separate processes (for the replay and the server killed mid-read)."""
 
-import socket
 import subprocess
-import time
-from pathlib import Path
 
 import pytest
 
 import player3
-
-REPO = Path(__file__).resolve().parents[2]
-WORLDS = REPO / "stage-worlds"
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
+from player3_support import REPO, WORLDS, free_port, wait_listening
 
 
 @pytest.fixture(scope="session")
@@ -30,19 +19,6 @@ def binaries():
     )
     target = REPO / "target" / "debug"
     return {"player-sim": target / "player-sim", "playerrecord": target / "playerrecord"}
-
-
-def wait_listening(port, process, limit=20.0):
-    deadline = time.monotonic() + limit
-    while time.monotonic() < deadline:
-        if process.poll() is not None:
-            raise RuntimeError(f"server exited with {process.returncode}")
-        try:
-            socket.create_connection(("127.0.0.1", port), timeout=0.2).close()
-            return
-        except OSError:
-            time.sleep(0.05)
-    raise RuntimeError(f"nothing listening on {port} after {limit} s")
 
 
 @pytest.fixture

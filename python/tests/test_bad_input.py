@@ -8,7 +8,7 @@ import time
 import pytest
 
 import player3
-from conftest import WORLDS, free_port
+from player3_support import WORLDS, free_port
 
 
 def test_a_closed_port_is_a_connection_error_naming_it():

@@ -5,7 +5,7 @@ import threading
 import pytest
 
 import player3
-from conftest import WORLDS
+from player3_support import WORLDS
 
 
 def test_a_robot_lists_its_devices_with_their_drivers(robot):

@@ -5,7 +5,7 @@ import re
 
 import pytest
 
-from conftest import REPO
+from player3_support import REPO
 
 PAGE = REPO / "docs" / "PYTHON.md"
 

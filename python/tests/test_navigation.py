@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import player3
-from conftest import WORLDS
+from player3_support import WORLDS
 
 
 @pytest.fixture(scope="module")

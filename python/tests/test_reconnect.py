@@ -6,7 +6,7 @@ import time
 import pytest
 
 import player3
-from conftest import WORLDS, wait_listening
+from player3_support import WORLDS, wait_listening
 
 
 def test_after_a_server_restart_reads_resume_without_subscribing_again(binaries, sim_process):

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import player3
-from conftest import REPO
+from player3_support import REPO
 
 
 @pytest.fixture
@@ -59,3 +59,27 @@ def test_timeout_zero_only_looks_and_a_paused_server_times_out(sim_process, reco
             laser.read(timeout=0.3)
         assert time.monotonic() - started < 1.0
         assert laser.latest is None
+
+
+def test_other_python_threads_run_while_a_read_waits(sim_process, recording):
+    port, _ = sim_process("--replay", recording, "--paused")
+    with player3.connect("127.0.0.1", port, timeout=3.0) as robot:
+        laser = robot.laser(0)
+        count, running = [0], [True]
+
+        def spin():
+            while running[0]:
+                count[0] += 1
+
+        spinner = threading.Thread(target=spin)
+        spinner.start()
+        try:
+            before = count[0]
+            with pytest.raises(TimeoutError):
+                laser.read(timeout=0.5)
+            during = count[0] - before
+        finally:
+            running[0] = False
+            spinner.join()
+        # Held, the GIL would have let the spinner run not at all during the wait.
+        assert during > 10_000, during
