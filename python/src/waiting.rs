@@ -5,6 +5,7 @@
 //! Python whether a signal (Ctrl-C) is pending, so a blocking read is always interruptible and
 //! other Python threads run meanwhile.
 
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Condvar, Mutex};
 use std::time::{Duration, Instant};
 
@@ -15,9 +16,14 @@ use pyo3::prelude::*;
 const SLICE: Duration = Duration::from_millis(50);
 
 /// A generation counter bumped by the robot thread, with a condition variable to sleep on.
+/// The counter is atomic and the lock is only taken when someone sleeps, so a stream of
+/// hundreds of thousands of messages a second does not make the robot thread and a reader
+/// fight over a mutex.
 #[derive(Default)]
 pub struct Wakeup {
-    generation: Mutex<u64>,
+    generation: AtomicU64,
+    sleepers: AtomicUsize,
+    lock: Mutex<()>,
     changed: Condvar,
 }
 
@@ -28,21 +34,29 @@ impl Wakeup {
     }
 
     fn bump(&self) {
-        let mut generation = self.generation.lock().unwrap_or_else(|e| e.into_inner());
-        *generation += 1;
-        self.changed.notify_all();
+        self.generation.fetch_add(1, Ordering::SeqCst);
+        // A sleeper counted itself before checking the counter under the lock: either it saw
+        // this bump, or it is counted here and gets the notification.
+        if self.sleepers.load(Ordering::SeqCst) > 0 {
+            let _guard = self.lock.lock().unwrap_or_else(|e| e.into_inner());
+            self.changed.notify_all();
+        }
     }
 
     pub fn generation(&self) -> u64 {
-        *self.generation.lock().unwrap_or_else(|e| e.into_inner())
+        self.generation.load(Ordering::SeqCst)
     }
 
-    /// Sleeps until the generation moves past `seen`, or `limit` passes.
+    /// Sleeps until the generation moves past `seen`, or `limit` passes. (Spinning first, to
+    /// save the wake-up, was tried: on two busy cores it starved the robot thread and read
+    /// less, not more.)
     fn wait_past(&self, seen: u64, limit: Duration) {
-        let guard = self.generation.lock().unwrap_or_else(|e| e.into_inner());
+        self.sleepers.fetch_add(1, Ordering::SeqCst);
+        let guard = self.lock.lock().unwrap_or_else(|e| e.into_inner());
         let _ = self
             .changed
-            .wait_timeout_while(guard, limit, |g| *g == seen);
+            .wait_timeout_while(guard, limit, |_| self.generation() == seen);
+        self.sleepers.fetch_sub(1, Ordering::SeqCst);
     }
 }
 
