@@ -42,6 +42,7 @@ from ._player3 import (
     connect,
     simulate,
 )
+from .frame import Frame
 
 __all__ = [
     "Battery",
@@ -53,6 +54,7 @@ __all__ = [
     "Device",
     "Estimate",
     "Fiducial",
+    "Frame",
     "Grid",
     "Gripper",
     "GripperState",

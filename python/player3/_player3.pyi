@@ -7,6 +7,8 @@ from typing import List, Optional, Tuple, Union
 import numpy as np
 import numpy.typing as npt
 
+from .frame import Frame
+
 Pose = Tuple[float, float, float]
 Placement = Tuple[Pose, Tuple[float, float]]
 
@@ -169,8 +171,8 @@ class Gripper:
     def stop(self) -> None: ...
 
 class Camera:
-    latest: Optional[npt.NDArray[np.uint8]]
-    def read(self, timeout: float = 1.0) -> npt.NDArray[np.uint8]:
+    latest: Optional[Frame]
+    def read(self, timeout: float = 1.0) -> Frame:
         """The next frame, height x width x 3 RGB."""
     def png(self, timeout: Optional[float] = None) -> bytes: ...
     def _repr_png_(self) -> bytes: ...

@@ -33,9 +33,12 @@ fn decode(label: &str, frame: &CameraData) -> PyResult<Rgb> {
     })
 }
 
-fn to_array<'py>(py: Python<'py>, rgb: Rgb) -> PyResult<Bound<'py, PyArray3<u8>>> {
+/// The frame as a `player3.frame.Frame`: a numpy array that Jupyter shows as a picture.
+fn to_array<'py>(py: Python<'py>, rgb: Rgb) -> PyResult<Bound<'py, PyAny>> {
     let shape = [rgb.height, rgb.width, 3];
-    PyArray1::from_vec(py, rgb.pixels).reshape(shape)
+    let array: Bound<'py, PyArray3<u8>> = PyArray1::from_vec(py, rgb.pixels).reshape(shape)?;
+    let frame = py.import("player3.frame")?.getattr("Frame")?;
+    array.call_method1("view", (frame,))
 }
 
 /// A `camera`: `read()` gives the next frame as an H x W x 3 `uint8` array.
@@ -48,7 +51,7 @@ pub struct Camera {
 impl Camera {
     /// Waits for the next new frame; `TimeoutError` after `timeout` s.
     #[pyo3(signature = (timeout = 1.0))]
-    fn read<'py>(&self, py: Python<'py>, timeout: f64) -> PyResult<Bound<'py, PyArray3<u8>>> {
+    fn read<'py>(&self, py: Python<'py>, timeout: f64) -> PyResult<Bound<'py, PyAny>> {
         let limit = timeout_arg(timeout, "camera read")?;
         let (frame, _) = self.core.next::<CameraData>(py, limit)?;
         let rgb = py.detach(|| decode(&self.core.label, &frame))?;
@@ -57,7 +60,7 @@ impl Camera {
 
     /// The newest frame, or `None` before the first.
     #[getter]
-    fn latest<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyArray3<u8>>>> {
+    fn latest<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
         match self.core.newest::<CameraData>() {
             Some((frame, _)) => Ok(Some(to_array(py, decode(&self.core.label, &frame)?)?)),
             None => Ok(None),

@@ -22,6 +22,10 @@ def test_a_camera_frame_is_height_by_width_by_3_uint8(r0, index):
     assert frame.shape[0] > 10 and frame.shape[1] > 10
     assert frame.std() > 1, "a picture of the world, not one colour"
     assert r0.camera(index)._repr_png_().startswith(b"\x89PNG")
+    # The frame itself shows as a picture in a notebook, and its PNG holds the same pixels.
+    png = frame._repr_png_()
+    assert png.startswith(b"\x89PNG") and isinstance(frame, player3.Frame)
+    assert png[16:24] == frame.shape[1].to_bytes(4, "big") + frame.shape[0].to_bytes(4, "big")
 
 
 def test_raw_and_jpeg_frames_show_the_same_view(r0):
