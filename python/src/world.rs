@@ -73,7 +73,10 @@ fn start(path: &Path, speedup: f64) -> PyResult<(Running, Vec<PortRobots>)> {
     let mut names: BTreeMap<u16, Vec<String>> = BTreeMap::new();
     for d in &devices {
         let entry = names.entry(d.port).or_default();
+        // A robot is named on its own port, not where a passthrough (a navigation port)
+        // forwards its base.
         if let Source::Position { robot } = d.source
+            && d.driver != "passthrough"
             && let Some(spec) = world.robots.get(robot)
             && !entry.contains(&spec.name)
         {

@@ -1,5 +1,7 @@
 """navigation.world: map, localizer and planner on port 6665, reached through player3."""
 
+import time
+
 import numpy as np
 import pytest
 
@@ -8,10 +10,36 @@ from player3_support import WORLDS
 
 
 @pytest.fixture(scope="module")
-def nav():
+def world():
     with player3.simulate(WORLDS / "navigation.world", speedup=10.0) as world:
-        with world.robot(0) as robot:
-            yield robot
+        yield world
+
+
+@pytest.fixture(scope="module")
+def nav(world):
+    with world.robot(0) as robot:
+        yield robot
+
+
+def test_r2s_blobfinder_and_gripper(world):
+    with world.robot("r2") as r2:
+        blobs = r2.blobfinder(0).read(timeout=5.0)
+        assert isinstance(blobs, list)
+        for blob in blobs:
+            assert blob.left <= blob.x <= blob.right and blob.top <= blob.y <= blob.bottom
+        gripper = r2.gripper(0)
+        gripper.open()
+        deadline = time.monotonic() + 10
+        state = gripper.read(timeout=5.0)
+        while state.state != "open" and time.monotonic() < deadline:
+            state = gripper.read(timeout=5.0)
+        assert state.state == "open", state
+
+
+def test_r0s_power_pack(world):
+    with world.robot("r0") as r0:
+        battery = r0.power(0).read(timeout=5.0)
+        assert 0 <= battery.percent <= 100 and battery.joules > 0
 
 
 def test_the_map_is_the_floor_bitmap(nav):
