@@ -2,6 +2,7 @@
 # Installs what building, running and testing pv3d needs on a fresh Debian machine.
 # Rust (cargo, rustc 1.95) is expected to be there already; everything else comes from Debian.
 set -euo pipefail
+cd "$(dirname "$0")/.."
 
 packages=(
   # xmllint validates configs/ against the Relax NG schema in the tests.
@@ -32,3 +33,6 @@ command -v cargo >/dev/null || { echo "cargo not found: install Rust 1.95 first"
 python3 -m venv .venv
 .venv/bin/python -m pip install -q --upgrade pip
 .venv/bin/python -m pip install -q -r scripts/python-requirements.txt
+# player3, the Python package (python/), built from this checkout into .venv: release, since
+# it is what students' programs and the benchmarks run.
+VIRTUAL_ENV="$PWD/.venv" .venv/bin/maturin develop --release --quiet -m python/Cargo.toml

@@ -1,0 +1,199 @@
+//! `player3.simulate(world_file)`: player-sim in this process, serving a Stage world on free
+//! local ports, so a notebook or a test needs no server of its own. Robots are reached over
+//! real TCP like any Player server.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+
+use player_sim::serve::{Running, ServeOptions, serve};
+use player_sim::served::{DEFAULT_PORT, Source, cfgs_beside, default_devices, from_cfgs};
+use player_sim::sim::Simulation;
+use player_sim::world::World as WorldFile;
+use pyo3::exceptions::{PyKeyError, PyTypeError, PyValueError};
+use pyo3::prelude::*;
+
+use crate::errors::PlayerError;
+use crate::link::Link;
+use crate::robot::Robot;
+use crate::waiting::timeout_arg;
+
+/// A served port and the names of the robots on it.
+type PortRobots = (u16, Vec<String>);
+
+/// A simulated world being served. Use it in a `with` block, or call `close()`.
+#[pyclass(frozen, module = "player3")]
+pub struct World {
+    running: Mutex<Option<Running>>,
+    /// Served ports in configured order, with the robot names on each.
+    robots: Vec<PortRobots>,
+    /// The world file served.
+    #[pyo3(get)]
+    path: PathBuf,
+}
+
+/// Serves the world file (with the `.cfg` files beside it, as player-sim does) on free local
+/// ports. `speedup` is simulated seconds per real second (0: as fast as possible).
+#[pyfunction]
+#[pyo3(signature = (world, speedup = 1.0))]
+pub fn simulate(py: Python<'_>, world: PathBuf, speedup: f64) -> PyResult<World> {
+    if !(speedup >= 0.0 && speedup.is_finite()) {
+        return Err(PyValueError::new_err(format!(
+            "speedup must be 0 or more, got {speedup}"
+        )));
+    }
+    let path = world.clone();
+    let (running, robots) = py.detach(move || start(&world, speedup))?;
+    Ok(World {
+        running: Mutex::new(Some(running)),
+        robots,
+        path,
+    })
+}
+
+fn start(path: &Path, speedup: f64) -> PyResult<(Running, Vec<PortRobots>)> {
+    let failed = |e: &dyn std::fmt::Display| {
+        PlayerError::new_err(format!("cannot simulate {}: {e}", path.display()))
+    };
+    if !path.is_file() {
+        return Err(pyo3::exceptions::PyFileNotFoundError::new_err(format!(
+            "no world file at {}",
+            path.display()
+        )));
+    }
+    let world = WorldFile::load(path).map_err(|e| failed(&e))?;
+    let mut ignored = world.ignored.clone();
+    let cfgs = cfgs_beside(path);
+    let devices = if cfgs.is_empty() {
+        default_devices(&world, DEFAULT_PORT)
+    } else {
+        let paths: Vec<&Path> = cfgs.iter().map(PathBuf::as_path).collect();
+        from_cfgs(&paths, &world, &mut ignored).map_err(|e| failed(&e))?
+    };
+    let mut names: BTreeMap<u16, Vec<String>> = BTreeMap::new();
+    for d in &devices {
+        let entry = names.entry(d.port).or_default();
+        // A robot is named on its own port, not where a passthrough (a navigation port)
+        // forwards its base.
+        if let Source::Position { robot } = d.source
+            && d.driver != "passthrough"
+            && let Some(spec) = world.robots.get(robot)
+            && !entry.contains(&spec.name)
+        {
+            entry.push(spec.name.clone());
+        }
+    }
+    let options = ServeOptions {
+        speedup,
+        free_ports: true,
+        ..ServeOptions::default()
+    };
+    let running = serve(Simulation::new(world), devices, options).map_err(|e| failed(&e))?;
+    let robots = names
+        .into_iter()
+        .map(|(configured, names)| (running.port(configured).unwrap_or(configured), names))
+        .collect();
+    Ok((running, robots))
+}
+
+impl World {
+    fn port_of(&self, which: &Bound<'_, PyAny>) -> PyResult<u16> {
+        if let Ok(index) = which.extract::<i64>() {
+            let found = usize::try_from(index).ok().and_then(|i| self.robots.get(i));
+            return found.map(|(port, _)| *port).ok_or_else(|| {
+                PyKeyError::new_err(format!(
+                    "robot index {index}: {} serves {} robots",
+                    self.path.display(),
+                    self.robots.len()
+                ))
+            });
+        }
+        if let Ok(name) = which.extract::<String>() {
+            return self
+                .robots
+                .iter()
+                .find(|(_, names)| names.contains(&name))
+                .map(|(port, _)| *port)
+                .ok_or_else(|| {
+                    PyKeyError::new_err(format!(
+                        "no robot named {name:?} in {} (it has {:?})",
+                        self.path.display(),
+                        self.names()
+                    ))
+                });
+        }
+        Err(PyTypeError::new_err(
+            "a robot is named by its name (str) or its index (int)",
+        ))
+    }
+
+    fn names(&self) -> Vec<String> {
+        self.robots.iter().flat_map(|(_, n)| n.clone()).collect()
+    }
+}
+
+#[pymethods]
+impl World {
+    /// A connected `Robot`: by name (`"r0"`) or by index (0: the first port served).
+    #[pyo3(signature = (which = None, timeout = 5.0, read_only = false))]
+    fn robot(
+        &self,
+        py: Python<'_>,
+        which: Option<Bound<'_, PyAny>>,
+        timeout: f64,
+        read_only: bool,
+    ) -> PyResult<Robot> {
+        let port = match which {
+            Some(which) => self.port_of(&which)?,
+            None => self.port_of(&0i64.into_pyobject(py)?.into_any())?,
+        };
+        let limit = timeout_arg(timeout, "connecting to the simulated world")?;
+        let link = Link::connect(py, "127.0.0.1", port, limit, read_only)?;
+        Ok(Robot::new(link))
+    }
+
+    /// The names of the robots (those with a `position2d`), in port order.
+    fn robots(&self) -> Vec<String> {
+        self.names()
+    }
+
+    /// The local ports served, one per configured Player port.
+    #[getter]
+    fn ports(&self) -> Vec<u16> {
+        self.robots.iter().map(|(port, _)| *port).collect()
+    }
+
+    /// Stops the simulation and its server.
+    fn close(&self, py: Python<'_>) {
+        let running = self
+            .running
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .take();
+        py.detach(move || drop(running));
+    }
+
+    fn __enter__(slf: Py<Self>) -> Py<Self> {
+        slf
+    }
+
+    fn __exit__(
+        &self,
+        py: Python<'_>,
+        _kind: Option<Bound<'_, PyAny>>,
+        _value: Option<Bound<'_, PyAny>>,
+        _traceback: Option<Bound<'_, PyAny>>,
+    ) -> bool {
+        self.close(py);
+        false
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "<World {} serving {:?} on ports {:?}>",
+            self.path.display(),
+            self.names(),
+            self.ports()
+        )
+    }
+}
