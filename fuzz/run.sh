@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Runs one fuzz target until it has executed RUNS inputs or SECONDS have passed, whichever is
+# first, and prints one figures line for RESULTS.md: target, executions, seconds, executions
+# a second, corpus size, and whether it crashed. New inputs go to target/corpus-work/TARGET
+# (not committed); the committed seeds in corpus/TARGET are read too.
+#
+#   bash fuzz/run.sh TARGET [RUNS] [SECONDS]      # defaults: 10 000 000 runs, 3 600 s
+#
+# Needs a nightly toolchain and cargo-fuzz (`cargo install cargo-fuzz`).
+set -uo pipefail
+cd "$(dirname "$0")"
+target=$1
+runs=${2:-10000000}
+seconds=${3:-3600}
+work=target/corpus-work/$target
+mkdir -p "$work" "corpus/$target"
+log=target/$target.log
+cargo +nightly fuzz run -O "$target" "$work" "corpus/$target" -- \
+  -runs="$runs" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 \
+  -print_final_stats=1 >"$log" 2>&1
+status=$?
+executed=$(grep -a 'stat::number_of_executed_units' "$log" | awk '{print $2}')
+time=$(grep -a -o 'Done [0-9]* runs in [0-9]* second' "$log" | awk '{print $5}')
+corpus=$(find "$work" -type f | wc -l)
+verdict=$([ "$status" -eq 0 ] && echo "no crash" || echo "CRASH (exit $status, see fuzz/$log)")
+echo "$target | ${executed:-?} | ${time:-?} s | $(( ${executed:-0} / (${time:-0} > 0 ? ${time:-1} : 1) ))/s | $corpus | $verdict"
+exit $status
