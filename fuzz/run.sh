@@ -2,7 +2,8 @@
 # Runs one fuzz target until it has executed RUNS inputs or SECONDS have passed, whichever is
 # first, and prints one figures line for RESULTS.md: target, executions, seconds, executions
 # a second, corpus size, and whether it crashed. New inputs go to target/corpus-work/TARGET
-# (not committed); the committed seeds in corpus/TARGET are read too.
+# (not committed); the committed seeds in corpus/TARGET, and the repository's own configs or
+# worlds for the targets that read those, are read too.
 #
 #   bash fuzz/run.sh TARGET [RUNS] [SECONDS]      # defaults: 10 000 000 runs, 3 600 s
 #
@@ -14,8 +15,14 @@ runs=${2:-10000000}
 seconds=${3:-3600}
 work=target/corpus-work/$target
 mkdir -p "$work" "corpus/$target"
+# Targets whose seeds are files the repository already has.
+seeds=()
+case $target in
+  composition | valid_composition) seeds=(../configs) ;;
+  stage_world) seeds=(../stage-worlds) ;;
+esac
 log=target/$target.log
-cargo +nightly fuzz run -O "$target" "$work" "corpus/$target" -- \
+cargo +nightly fuzz run -O "$target" "$work" "corpus/$target" "${seeds[@]}" -- \
   -runs="$runs" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 \
   -print_final_stats=1 >"$log" 2>&1
 status=$?
