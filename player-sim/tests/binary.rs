@@ -58,6 +58,18 @@ fn headless_once_serves_on_the_port_base_then_exits() {
     );
 }
 
+/// player-sim serving `world` for one step on a free port.
+fn one_step(world: &Path) -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_player-sim"));
+    command.arg(world).args([
+        "--headless-once",
+        "1",
+        "--port-base",
+        &free_port().to_string(),
+    ]);
+    command
+}
+
 #[test]
 fn a_broken_world_fails_with_its_position() {
     let dir = tempfile::tempdir().unwrap();
@@ -67,16 +79,7 @@ fn a_broken_world_fails_with_its_position() {
         "interval_sim 100\nposition( name \"r\" pose [ 0 0 0\n",
     )
     .unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_player-sim"))
-        .arg(&world)
-        .args([
-            "--headless-once",
-            "1",
-            "--port-base",
-            &free_port().to_string(),
-        ])
-        .output()
-        .unwrap();
+    let out = one_step(&world).output().unwrap();
     assert!(!out.status.success());
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
@@ -90,14 +93,7 @@ fn a_broken_world_fails_with_its_position() {
 #[test]
 fn a_log_written_to_a_pipe_carries_no_colour_codes() {
     let world = Path::new(env!("CARGO_MANIFEST_DIR")).join("../stage-worlds/simple.world");
-    let out = Command::new(env!("CARGO_BIN_EXE_player-sim"))
-        .arg(&world)
-        .args([
-            "--headless-once",
-            "1",
-            "--port-base",
-            &free_port().to_string(),
-        ])
+    let out = one_step(&world)
         .env_remove("NO_COLOR")
         .env("RUST_LOG", "info")
         .stderr(Stdio::piped())

@@ -278,27 +278,10 @@ fn unusable_weights_fall_back_quietly() {
 
 /// Every `PLAYER_LOCALIZE_DATA_HYPOTHS` real amcl sent in `captures/nav/`.
 fn amcl_estimates() -> Vec<Message> {
-    use player_proto::capture::{Direction, parse_capture, stream};
-    use player_proto::wire::FrameDecoder;
-
-    let path = std::env::var_os("PLAYER_CAPTURES_DIR")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../captures"))
-        .join("nav/localize_hypotheses_setpose.jsonl");
-    let text = std::fs::read_to_string(&path)
-        .unwrap_or_else(|e| panic!("missing capture {}: {e}", path.display()));
-    let bytes = stream(&parse_capture(&text).unwrap(), Direction::ServerToClient);
-    let mut frames = FrameDecoder::default();
-    frames.extend(&bytes);
-    frames.take_banner().unwrap().unwrap();
-    let mut estimates = Vec::new();
-    while let Some(frame) = frames.next_frame().unwrap() {
-        let message = Message::decode(frame.header, frame.body).unwrap();
-        if LocalizeData::KIND.of(&message).is_some() {
-            estimates.push(message);
-        }
-    }
-    estimates
+    support::captured_messages("nav/localize_hypotheses_setpose.jsonl")
+        .into_iter()
+        .filter(|m| LocalizeData::KIND.of(m).is_some())
+        .collect()
 }
 
 #[test]

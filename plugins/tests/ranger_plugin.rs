@@ -247,22 +247,8 @@ fn stamped_ranges_bring_their_own_geometry_and_config() {
 /// The first `PLAYER_RANGER_DATA_RANGE` and the `_INTNS` after it that Stage 4 sent for the
 /// laser of the repository's `captures/ranger_laser_push.jsonl`, or `None` if it has no such pair.
 fn captured_ranges_and_intensities() -> Option<(Message, Message)> {
-    use player_proto::capture::{Direction, parse_capture, stream};
-    use player_proto::wire::FrameDecoder;
-
-    let path = std::env::var_os("PLAYER_CAPTURES_DIR")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../captures"))
-        .join("ranger_laser_push.jsonl");
-    let text = std::fs::read_to_string(&path)
-        .unwrap_or_else(|e| panic!("missing capture {}: {e}", path.display()));
-    let bytes = stream(&parse_capture(&text).unwrap(), Direction::ServerToClient);
-    let mut frames = FrameDecoder::default();
-    frames.extend(&bytes);
-    frames.take_banner().unwrap().unwrap();
     let mut ranges = None;
-    while let Some(frame) = frames.next_frame().unwrap() {
-        let message = Message::decode(frame.header, frame.body).unwrap();
+    for message in support::captured_messages("ranger_laser_push.jsonl") {
         match (&message.body, ranges.is_some()) {
             (player_proto::message::Body::Ranger(Ranger::Ranges(_)), false) => {
                 ranges = Some(message)

@@ -36,3 +36,27 @@ pub fn on_robot(
         ..framework::PluginConfig::default()
     }
 }
+
+/// Every message the server sent in the repository's capture `name` (a path under
+/// `captures/`, or under `PLAYER_CAPTURES_DIR`), decoded, in order.
+pub fn captured_messages(name: &str) -> Vec<player_proto::message::Message> {
+    use player_proto::capture::{Direction, parse_capture, stream};
+    use player_proto::message::Message;
+    use player_proto::wire::FrameDecoder;
+
+    let path = std::env::var_os("PLAYER_CAPTURES_DIR")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../captures"))
+        .join(name);
+    let text = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("missing capture {}: {e}", path.display()));
+    let bytes = stream(&parse_capture(&text).unwrap(), Direction::ServerToClient);
+    let mut frames = FrameDecoder::default();
+    frames.extend(&bytes);
+    frames.take_banner().unwrap().unwrap();
+    let mut messages = Vec::new();
+    while let Some(frame) = frames.next_frame().unwrap() {
+        messages.push(Message::decode(frame.header, frame.body).unwrap());
+    }
+    messages
+}

@@ -10,7 +10,7 @@
 use glam::Vec3;
 
 use crate::render::OrbitCamera;
-use framework::scene::Scene;
+use framework::scene::{NodeId, Object3D, Scene};
 
 /// Tags of what bounds the world: the ground plugin's walls (its floorplan) and a map.
 const WORLD_TAGS: [&str; 2] = ["ground", "map"];
@@ -124,19 +124,8 @@ pub fn framing_target(scene: &Scene) -> Option<Target> {
             continue;
         }
         if WORLD_TAGS.iter().any(|tag| object.has_tag(tag)) {
-            let to_world = scene.world_transform(id);
-            let g = &object.geometry;
-            // Not the triangles: the ground's plane is a backdrop of any size; its walls
-            // (mesh) and the map's picture are the world.
-            let points = g
-                .lines
-                .iter()
-                .chain(&g.points)
-                .map(|v| v.pos)
-                .chain(g.mesh.iter().map(|v| v.pos))
-                .chain(g.images.iter().flat_map(|i| i.corners().map(|(p, _)| p)));
-            for p in points {
-                grow(&mut world, to_world.transform_point3(p));
+            for p in solid_points(scene, id, object) {
+                grow(&mut world, p);
             }
         } else if object.has_tag(ROBOT_TAG) {
             robot_count += 1;
@@ -150,9 +139,40 @@ pub fn framing_target(scene: &Scene) -> Option<Target> {
     world
         .map(|b| target(b, TargetKind::World))
         .or_else(|| robots.map(|b| target(b, TargetKind::Robots(robot_count))))
-        .or_else(|| {
-            crate::render::batch::content_bounds(scene).map(|b| target(b, TargetKind::Content))
-        })
+        .or_else(|| content_bounds(scene).map(|b| target(b, TargetKind::Content)))
+}
+
+/// The corners of everything drawn solid but the grid.
+fn content_bounds(scene: &Scene) -> Option<(Vec3, Vec3)> {
+    let mut bounds = None;
+    for (id, object) in scene.iter() {
+        if object.has_tag("grid") || !scene.is_shown(id) {
+            continue;
+        }
+        for p in solid_points(scene, id, object) {
+            grow(&mut bounds, p);
+        }
+    }
+    bounds
+}
+
+/// Where `object` draws solid things — meshes, lines, points, pictures — in world
+/// coordinates. Not its flat fills: the ground's plane is a backdrop of any size, while its
+/// walls (mesh) and a map's picture are the world.
+fn solid_points<'a>(
+    scene: &Scene,
+    id: NodeId,
+    object: &'a Object3D,
+) -> impl Iterator<Item = Vec3> + 'a {
+    let to_world = scene.world_transform(id);
+    let g = &object.geometry;
+    g.lines
+        .iter()
+        .chain(&g.points)
+        .map(|v| v.pos)
+        .chain(g.mesh.iter().map(|v| v.pos))
+        .chain(g.images.iter().flat_map(|i| i.corners().map(|(p, _)| p)))
+        .map(move |p| to_world.transform_point3(p))
 }
 
 fn grow(bounds: &mut Option<(Vec3, Vec3)>, p: Vec3) {

@@ -204,35 +204,6 @@ fn to_world_space(out: &mut Vec<GpuVertex>, vertices: &[Vertex], to_world: &Affi
     }
 }
 
-/// The lowest and highest corner of the solid things in the scene (meshes, lines, points and
-/// pictures; not flat fills such as the ground plane, nor objects tagged `grid`), for framing
-/// the view.
-pub fn content_bounds(scene: &Scene) -> Option<(Vec3, Vec3)> {
-    let mut bounds: Option<(Vec3, Vec3)> = None;
-    for (id, object) in scene.iter() {
-        if object.has_tag("grid") || !scene.is_shown(id) {
-            continue;
-        }
-        let to_world = scene.world_transform(id);
-        let g = &object.geometry;
-        let points = g
-            .lines
-            .iter()
-            .chain(&g.points)
-            .map(|v| v.pos)
-            .chain(g.mesh.iter().map(|v| v.pos))
-            .chain(g.images.iter().flat_map(|i| i.corners().map(|(p, _)| p)));
-        for p in points {
-            let p = to_world.transform_point3(p);
-            bounds = Some(match bounds {
-                None => (p, p),
-                Some((lo, hi)) => (lo.min(p), hi.max(p)),
-            });
-        }
-    }
-    bounds
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
