@@ -6,7 +6,7 @@ use framework::scene::{
     Facing, FilterChain, FilteredPicture, ImageQuad, Label, Pixels, Sampling, Scene, Vertex,
     VirtualView,
 };
-use glam::{Affine3A, Vec3};
+use glam::Affine3A;
 
 use super::screen_detail::{ScreenDetail, Simplifier};
 
@@ -208,6 +208,7 @@ fn to_world_space(out: &mut Vec<GpuVertex>, vertices: &[Vertex], to_world: &Affi
 mod tests {
     use super::*;
     use framework::scene::{Object3D, Rgba};
+    use glam::Vec3;
 
     #[test]
     fn geometry_lands_in_world_space() {
