@@ -17,6 +17,7 @@ macro_rules! xdr_struct {
         $(#[$meta])*
         #[derive(Debug, Clone, PartialEq, Default)]
         #[cfg_attr(any(test, feature = "proptest"), derive(proptest_derive::Arbitrary))]
+        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
         pub struct $name {
             $( $(#[$field_meta])* pub $field: $ty, )*
         }
@@ -131,6 +132,7 @@ macro_rules! interface_messages {
         $(#[$meta])*
         #[derive(Debug, Clone, PartialEq)]
         #[cfg_attr(any(test, feature = "proptest"), derive(proptest_derive::Arbitrary))]
+        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
         pub enum $name {
             $( $(#[$variant_meta])* $variant($ty), )*
         }

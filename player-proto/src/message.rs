@@ -15,6 +15,7 @@ macro_rules! bodies {
         /// A message body, typed when the interface and subtype are known.
         #[derive(Debug, Clone, PartialEq)]
         #[cfg_attr(any(test, feature = "proptest"), derive(proptest_derive::Arbitrary))]
+        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
         pub enum Body {
             /// No body (`size` 0): "get" requests, empty ACKs and NACKs, SYNCH, data requests.
             Empty,
@@ -23,7 +24,11 @@ macro_rules! bodies {
             $( $(#[$meta])* $variant($ty), )*
             /// A body this crate does not decode (unknown interface or subtype), kept verbatim
             /// so it re-encodes byte for byte.
-            Unknown(#[cfg_attr(any(test, feature = "proptest"), proptest(strategy = "crate::message::arbitrary_bytes()"))] Bytes),
+            Unknown(
+                #[cfg_attr(any(test, feature = "proptest"), proptest(strategy = "crate::message::arbitrary_bytes()"))]
+                #[cfg_attr(feature = "serde", serde(with = "crate::wire::serde_bytes"))]
+                Bytes,
+            ),
         }
 
         impl Body {

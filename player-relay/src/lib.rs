@@ -23,11 +23,12 @@
 pub mod downstream;
 mod relayed_device;
 pub mod robot;
+mod survey;
 
 use std::net::{IpAddr, Ipv4Addr};
 use std::time::{Duration, Instant};
 
-use player_proto::client::{ClientOptions, ConnectError};
+use player_proto::client::{ClientOptions, ConnectError, Tap};
 use player_proto::server::Commanders;
 
 pub use downstream::DownstreamOptions;
@@ -58,7 +59,7 @@ pub struct Route {
 }
 
 /// What to relay, and how.
-#[derive(Debug, Clone)]
+#[derive(Clone)]
 pub struct RelayConfig {
     pub routes: Vec<Route>,
     /// Where observers connect; loopback by default.
@@ -66,9 +67,27 @@ pub struct RelayConfig {
     /// Who may command; nobody by default.
     pub commanders: Commanders,
     pub send_buffer: usize,
-    /// The upstream clients' options (timeouts, backoff); `read_only` and `notifier` are the
-    /// relay's.
+    /// The upstream clients' options (timeouts, backoff); `read_only`, `notifier` and `tap`
+    /// are the relay's.
     pub upstream: ClientOptions,
+    /// Fronts that are not Player clients (the web page, a Foxglove server): each is told
+    /// everything every robot's server sends the relay. With any front, the relay subscribes
+    /// to every device of a robot and asks what describes them (geometries, map tiles) each
+    /// time it connects, since nobody downstream will ask for it.
+    pub fronts: Vec<Tap>,
+}
+
+impl std::fmt::Debug for RelayConfig {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("RelayConfig")
+            .field("routes", &self.routes)
+            .field("bind", &self.bind)
+            .field("commanders", &self.commanders)
+            .field("send_buffer", &self.send_buffer)
+            .field("upstream", &self.upstream)
+            .field("fronts", &self.fronts.len())
+            .finish()
+    }
 }
 
 impl Default for RelayConfig {
@@ -79,6 +98,7 @@ impl Default for RelayConfig {
             commanders: Commanders::Nobody,
             send_buffer: DEFAULT_SEND_BUFFER,
             upstream: ClientOptions::default(),
+            fronts: Vec::new(),
         }
     }
 }
@@ -105,8 +125,10 @@ impl Relay {
             read_only: config.commanders == Commanders::Nobody,
             // The newest scan is all an observer gets: the robot need not queue older ones.
             replace_old_data: true,
+            tap: fan_out(config.fronts.clone()),
             ..config.upstream
         };
+        let survey = !config.fronts.is_empty();
         let robots = config
             .routes
             .iter()
@@ -117,6 +139,7 @@ impl Relay {
                     route.listen_port,
                     upstream.clone(),
                     downstream.clone(),
+                    survey,
                 )
             })
             .collect::<Result<Vec<_>, _>>()?;
@@ -139,5 +162,21 @@ impl Relay {
     /// Observers connected now, over all robots.
     pub fn observers(&self) -> usize {
         self.robots.iter().map(RelayedRobot::observers).sum()
+    }
+}
+
+/// One tap that tells every front, in order; none without fronts.
+fn fan_out(fronts: Vec<Tap>) -> Option<Tap> {
+    match fronts.len() {
+        0 => None,
+        1 => fronts.into_iter().next(),
+        _ => Some(std::sync::Arc::new(move |host: &str, port: u16| {
+            let taps: Vec<_> = fronts.iter().map(|front| front(host, port)).collect();
+            std::sync::Arc::new(move |time, event| {
+                for tap in &taps {
+                    tap(time, event);
+                }
+            })
+        })),
     }
 }

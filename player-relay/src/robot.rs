@@ -60,6 +60,7 @@ impl RelayedRobot {
         listen_port: u16,
         client: ClientOptions,
         downstream: DownstreamOptions,
+        survey: bool,
     ) -> Result<RelayedRobot, RelayError> {
         // One pending wake-up is enough: the thread looks at everything new when it wakes.
         let (wake, woken) = sync_channel(1);
@@ -79,6 +80,7 @@ impl RelayedRobot {
             shared: shared.clone(),
             stop: stop.clone(),
             downstream,
+            survey,
             subscribed: UpstreamSubscriptions::default(),
             forwarded: HashMap::new(),
         };
@@ -143,6 +145,8 @@ struct Follower {
     shared: Arc<Shared>,
     stop: Arc<AtomicBool>,
     downstream: DownstreamOptions,
+    /// Whether to subscribe to everything and describe it on each connection (for fronts).
+    survey: bool,
     subscribed: UpstreamSubscriptions,
     /// The sequence number last passed on, per device and subtype.
     forwarded: HashMap<(Interface, u16, u8), u64>,
@@ -208,6 +212,9 @@ impl Follower {
                     s.server = Some(server.clone());
                 });
                 self.forward(&server);
+                if self.survey {
+                    crate::survey::start(&self.upstream, &self.subscribed);
+                }
                 true
             }
             Err(e) => {

@@ -20,6 +20,7 @@
 //! ```
 
 mod commands;
+pub mod describe;
 mod handle;
 mod handle_commands;
 mod link;

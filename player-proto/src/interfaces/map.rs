@@ -31,10 +31,44 @@ xdr_struct! {
     }
 }
 
+/// The widest and tallest tile a client asks for, cells: the cap Player's own client library
+/// puts on a tile, which every `mapfile` server answers.
+pub const TILE_SIDE: u32 = 640;
+
+/// The most cells a map may have: 64 MB of cells, a 8192 × 8192 grid — a 400 m building at
+/// 5 cm. A larger claim is refused before anything is allocated.
+pub const MAX_MAP_CELLS: u64 = 8192 * 8192;
+
+impl MapInfo {
+    /// The GET_DATA requests (tiles without cells) that cover the map, row by row, each at
+    /// most [`TILE_SIDE`] on a side; none for a map above [`MAX_MAP_CELLS`], whose claim
+    /// nobody should believe.
+    pub fn tile_requests(&self) -> Vec<MapData> {
+        let (w, h) = (self.width, self.height);
+        let mut tiles = Vec::new();
+        if u64::from(w) * u64::from(h) > MAX_MAP_CELLS {
+            return tiles;
+        }
+        for row in (0..h).step_by(TILE_SIDE as usize) {
+            for col in (0..w).step_by(TILE_SIDE as usize) {
+                tiles.push(MapData {
+                    col,
+                    row,
+                    width: TILE_SIDE.min(w - col),
+                    height: TILE_SIDE.min(h - row),
+                    ..MapData::default()
+                });
+            }
+        }
+        tiles
+    }
+}
+
 /// `player_map_data_t`: a tile. Its count, range and bytes are not adjacent (`data_count`,
 /// `data_range`, then the bytes with their own length), so it has its own codec.
 #[derive(Debug, Clone, PartialEq, Default)]
 #[cfg_attr(any(test, feature = "proptest"), derive(proptest_derive::Arbitrary))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MapData {
     pub col: u32,
     pub row: u32,

@@ -5,6 +5,8 @@ pub mod banner;
 pub mod frame;
 pub mod header;
 pub mod interface;
+#[cfg(feature = "serde")]
+mod serde_impls;
 pub mod strings;
 pub mod xdr;
 pub mod xdr_bytes;
@@ -14,5 +16,7 @@ pub use banner::{BANNER_LEN, Banner, BannerError};
 pub use frame::{DEFAULT_MAX_BODY, Frame, FrameDecoder, FrameError};
 pub use header::{HEADER_LEN, Header, HeaderError, MessageClass, MsgType};
 pub use interface::Interface;
+#[cfg(feature = "serde")]
+pub use serde_impls::serde_bytes;
 pub use strings::{Opaque, PlayerString};
 pub use xdr::{FixedBytes, Xdr, XdrElement, XdrError, XdrFault};

@@ -5,9 +5,9 @@
 use std::collections::VecDeque;
 
 use framework::device::{Awaited, DeviceAccess, PendingReply};
-use player_proto::interfaces::map::{Map, MapInfo};
+use player_proto::interfaces::map::{Map, MapData, MapInfo};
 
-use super::grid::{OccupancyGrid, TileRect};
+use super::grid::OccupancyGrid;
 
 /// Tile requests sent before the first reply is waited for: enough to hide the round trip,
 /// few enough that a 4000 × 4000 map (49 tiles) does not sit in one queue.
@@ -29,8 +29,8 @@ pub struct Polled {
 pub struct MapFetch {
     info: Awaited<MapInfo>,
     grid: Option<OccupancyGrid>,
-    waiting: VecDeque<TileRect>,
-    in_flight: VecDeque<(TileRect, PendingReply)>,
+    waiting: VecDeque<MapData>,
+    in_flight: VecDeque<(MapData, PendingReply)>,
     pub tiles_total: usize,
     pub tiles_received: usize,
     pub tiles_failed: usize,
@@ -93,12 +93,12 @@ impl MapFetch {
             let Some(outcome) = pending.try_get() else {
                 break;
             };
-            let rect = *rect;
+            let (col, row) = (rect.col, rect.row);
             self.in_flight.pop_front();
             polled.tiles_answered += 1;
             let applied = outcome
                 .and_then(|reply| Map::REQ_GET_DATA.reply_of(&reply))
-                .map_err(|e| format!("the tile at column {}, row {}: {e}", rect.col, rect.row))
+                .map_err(|e| format!("the tile at column {col}, row {row}: {e}"))
                 .and_then(|tile| grid.apply(&tile).map_err(|e| e.to_string()));
             match applied {
                 Ok(()) => self.tiles_received += 1,
@@ -115,7 +115,7 @@ impl MapFetch {
             while self.in_flight.len() < TILES_IN_FLIGHT
                 && let Some(rect) = self.waiting.pop_front()
             {
-                let body = Map::REQ_GET_DATA.to_body(rect.request());
+                let body = Map::REQ_GET_DATA.to_body(rect.clone());
                 let pending = device.request(Map::REQ_GET_DATA.kind(), body);
                 self.in_flight.push_back((rect, pending));
             }

@@ -7,13 +7,7 @@ use player_proto::interfaces::map::{MapData, MapError, MapInfo};
 use framework::scene::image::MAX_IMAGE_SIDE;
 use framework::scene::{ImageError, PixelFormat, Pixels};
 
-/// The widest and tallest tile asked for, cells: the cap Player's own client library
-/// (`playerc_map_get_map`) puts on a tile, which every `mapfile` server answers.
-pub const TILE_SIDE: u32 = 640;
-
-/// The most cells a map may have: 64 MB of grey, the size of a 8192 × 8192 grid — a 400 m
-/// building at 5 cm. A larger claim is refused before anything is allocated.
-pub const MAX_MAP_CELLS: u64 = 8192 * 8192;
+pub use player_proto::interfaces::map::{MAX_MAP_CELLS, TILE_SIDE};
 
 /// The greys a cell is drawn in: free nearly white, unknown mid grey, occupied nearly black.
 pub const FREE_GREY: u8 = 235;
@@ -52,28 +46,6 @@ pub enum GridError {
     },
 }
 
-/// A rectangle of cells to ask for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct TileRect {
-    pub col: u32,
-    pub row: u32,
-    pub width: u32,
-    pub height: u32,
-}
-
-impl TileRect {
-    /// The GET_DATA request body for this rectangle.
-    pub fn request(&self) -> MapData {
-        MapData {
-            col: self.col,
-            row: self.row,
-            width: self.width,
-            height: self.height,
-            ..MapData::default()
-        }
-    }
-}
-
 /// The grid as drawn: one grey byte per cell, row 0 at the map's origin.
 #[derive(Debug, Clone)]
 pub struct OccupancyGrid {
@@ -105,21 +77,9 @@ impl OccupancyGrid {
         &self.info
     }
 
-    /// The tiles that cover the map, row by row, each at most [`TILE_SIDE`] on a side.
-    pub fn tiles(&self) -> Vec<TileRect> {
-        let (w, h) = (self.info.width, self.info.height);
-        let mut tiles = Vec::new();
-        for row in (0..h).step_by(TILE_SIDE as usize) {
-            for col in (0..w).step_by(TILE_SIDE as usize) {
-                tiles.push(TileRect {
-                    col,
-                    row,
-                    width: TILE_SIDE.min(w - col),
-                    height: TILE_SIDE.min(h - row),
-                });
-            }
-        }
-        tiles
+    /// The GET_DATA requests that cover the map (see [`MapInfo::tile_requests`]).
+    pub fn tiles(&self) -> Vec<MapData> {
+        self.info.tile_requests()
     }
 
     /// Writes a tile's cells into the grid. A tile that lies outside the map or does not
@@ -229,14 +189,10 @@ mod tests {
                 .iter()
                 .all(|t| t.width <= TILE_SIDE && t.height <= TILE_SIDE)
         );
+        let third = &tiles[2];
         assert_eq!(
-            tiles[2],
-            TileRect {
-                col: 1280,
-                row: 0,
-                width: 220,
-                height: 640
-            }
+            (third.col, third.row, third.width, third.height),
+            (1280, 0, 220, 640)
         );
     }
 

@@ -12,7 +12,6 @@
 //! ```
 
 mod capture;
-mod describe;
 mod export;
 mod info;
 mod mcap_file;

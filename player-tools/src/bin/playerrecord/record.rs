@@ -98,7 +98,7 @@ pub fn run(args: Args) -> Result<()> {
             }
         }
     }
-    crate::describe::describe(subscribed, options.request_timeout);
+    player_proto::client::describe::describe(subscribed, options.request_timeout);
     let started = Instant::now();
     let until = args.seconds.map(|s| started + Duration::from_secs_f64(s));
     loop {
