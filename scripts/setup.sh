@@ -15,6 +15,8 @@ packages=(
   espeak-ng
   # Python for the player3 package and the Python-side tests (in a virtual environment).
   python3 python3-venv
+  # The web page's tests drive a real browser (through Playwright, tests/web).
+  chromium
 )
 
 missing=()
@@ -36,3 +38,7 @@ python3 -m venv .venv
 # player3, the Python package (python/), built from this checkout into .venv: release, since
 # it is what students' programs and the benchmarks run.
 VIRTUAL_ENV="$PWD/.venv" .venv/bin/maturin develop --release --quiet -m python/Cargo.toml
+command -v npm >/dev/null || { echo "npm not found: install Node.js 20 or later first" >&2; exit 1; }
+# The browser-side clients of the tests (tests/web): Playwright's driver (it drives Debian's
+# Chromium; it downloads no browser of its own) and Foxglove's WebSocket client, pinned.
+npm ci --prefix tests/web --no-audit --no-fund --loglevel=error
