@@ -35,7 +35,7 @@ pub struct Peer {
 
 /// The server's gate: its policy and, for [`Commanders::FirstToAsk`], who holds control.
 #[derive(Debug, Default)]
-pub(crate) struct CommandGate {
+pub struct CommandGate {
     policy: Commanders,
     holder: Mutex<Option<u64>>,
 }

@@ -49,8 +49,7 @@ use std::sync::{Arc, Condvar, Mutex};
 use std::time::{Duration, Instant};
 
 pub use crate::delivery::{DataMode, ReplaceAction, ReplaceRule};
-use control::CommandGate;
-pub use control::{Commanders, Peer};
+pub use control::{CommandGate, Commanders, Peer};
 pub use device::{Device, Reply};
 pub use publisher::Publisher;
 pub use queue::{OutQueue, QUEUE_LIMIT};

@@ -44,6 +44,11 @@ struct Cli {
     #[arg(long, default_value_t = DEFAULT_SEND_BUFFER)]
     send_buffer: usize,
 
+    /// Serve a live web page of the robots at http://BIND:PORT/ (the controller may drive
+    /// from it; everyone else watches).
+    #[arg(long, value_name = "PORT")]
+    web: Option<u16>,
+
     /// Stop after this many seconds (default: run until killed).
     #[arg(long, value_name = "SECONDS")]
     seconds: Option<f64>,
@@ -108,13 +113,29 @@ fn run(cli: Cli) -> Result<()> {
             route.host, route.port, cli.bind, route.listen_port
         );
     }
+    let mut fronts = Vec::new();
+    let web = match cli.web {
+        Some(port) => {
+            let web = player_web::WebFront::start(cli.bind, port, commanders)?;
+            eprintln!("web page: http://{}:{}/", cli.bind, web.port());
+            fronts.push(web.tap());
+            Some(web)
+        }
+        None => None,
+    };
     let relay = Relay::start(RelayConfig {
         routes,
         bind: cli.bind,
         commanders,
         send_buffer: cli.send_buffer,
+        fronts,
         ..RelayConfig::default()
     })?;
+    if let Some(web) = &web {
+        for robot in relay.robots() {
+            web.add_robot(robot.upstream().clone());
+        }
+    }
     match cli.seconds {
         Some(seconds) => std::thread::sleep(Duration::from_secs_f64(seconds)),
         // Serves until killed; the relay's own threads do the work.
@@ -123,5 +144,6 @@ fn run(cli: Cli) -> Result<()> {
         },
     }
     drop(relay);
+    drop(web);
     Ok(())
 }

@@ -1,0 +1,75 @@
+//! The page's HTTP side: the page and its two assets, compiled into the binary (a classroom
+//! may have no internet, so nothing comes from a CDN), and the WebSocket upgrade.
+
+use std::net::SocketAddr;
+use std::sync::Arc;
+
+use axum::Router;
+use axum::extract::ws::WebSocketUpgrade;
+use axum::extract::{ConnectInfo, State};
+use axum::http::header;
+use axum::response::{IntoResponse, Response};
+use axum::routing::get;
+
+use crate::control::Control;
+use crate::hub::Hub;
+use crate::socket::serve_page;
+
+/// The largest frame a page may send: a command is a few hundred bytes.
+pub const MAX_FROM_PAGE: usize = 16 * 1024;
+
+const INDEX: &str = include_str!("../assets/index.html");
+const SCRIPT: &str = include_str!("../assets/app.js");
+const STYLE: &str = include_str!("../assets/style.css");
+
+#[derive(Clone)]
+struct Shared {
+    hub: Arc<Hub>,
+    control: Arc<Control>,
+}
+
+/// The routes: `/` (the page), `/app.js`, `/style.css`, `/ws` (the live socket).
+pub fn router(hub: Arc<Hub>, control: Arc<Control>) -> Router {
+    Router::new()
+        .route(
+            "/",
+            get(|| async { asset("text/html; charset=utf-8", INDEX) }),
+        )
+        .route(
+            "/app.js",
+            get(|| async { asset("text/javascript; charset=utf-8", SCRIPT) }),
+        )
+        .route(
+            "/style.css",
+            get(|| async { asset("text/css; charset=utf-8", STYLE) }),
+        )
+        .route("/ws", get(upgrade))
+        // Browsers ask; there is none, and saying so quietly keeps their consoles clean.
+        .route(
+            "/favicon.ico",
+            get(|| async { axum::http::StatusCode::NO_CONTENT }),
+        )
+        .with_state(Shared { hub, control })
+}
+
+fn asset(kind: &'static str, text: &'static str) -> Response {
+    (
+        [
+            (header::CONTENT_TYPE, kind),
+            (header::CACHE_CONTROL, "no-cache"),
+        ],
+        text,
+    )
+        .into_response()
+}
+
+async fn upgrade(
+    socket: WebSocketUpgrade,
+    ConnectInfo(from): ConnectInfo<SocketAddr>,
+    State(shared): State<Shared>,
+) -> Response {
+    socket
+        .max_message_size(MAX_FROM_PAGE)
+        .max_frame_size(MAX_FROM_PAGE)
+        .on_upgrade(move |socket| serve_page(socket, from, shared.hub, shared.control))
+}

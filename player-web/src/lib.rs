@@ -1,0 +1,118 @@
+//! # player-web: Player robots in any browser
+//!
+//! `player-relay --web PORT` serves a page at `http://host:PORT/`: a live top view of every
+//! robot the relay carries (bodies, lasers, rangers, sonars, fiducials, the map, localize
+//! estimates, planner goals) and a row per robot (link, rate and age per device), with
+//! nothing to install. The relay's controller (`--controller IP`, `--first-to-command`) may
+//! select a robot and click a goal or drive it with the arrow keys; everyone else watches.
+//!
+//! * [`hub`] — fed by the relay's upstream taps; every message becomes JSON once, in
+//!   player-proto's own types ([`page`]), kept newest-per-device for pages that open later
+//!   and broadcast to those open;
+//! * [`socket`] — one task per page: a page that falls behind gets the newest of everything
+//!   instead of a backlog; one that stops reading is closed after [`socket::SEND_TIMEOUT`];
+//! * [`control`] — the same command rule as the relay's Player ports, and a dead-man stop;
+//! * [`http`] — the page, its script and style, compiled in (no CDN, no internet needed).
+
+pub mod control;
+pub mod http;
+pub mod hub;
+pub mod page;
+pub mod socket;
+
+use std::net::{IpAddr, SocketAddr};
+use std::sync::Arc;
+use std::time::Duration;
+
+use player_proto::client::{Client, Tap};
+use player_proto::server::Commanders;
+
+use control::Control;
+use hub::Hub;
+
+/// How often the pages get their status rows.
+pub const STATUS_EVERY: Duration = Duration::from_secs(1);
+
+/// Why the page cannot be served.
+#[derive(Debug, thiserror::Error)]
+pub enum WebError {
+    #[error("cannot listen for the web page on {addr}: {source}")]
+    Bind {
+        addr: SocketAddr,
+        source: std::io::Error,
+    },
+    #[error("cannot start the web page's runtime: {0}")]
+    Runtime(std::io::Error),
+}
+
+/// The web page, served on its own runtime until dropped.
+pub struct WebFront {
+    hub: Arc<Hub>,
+    control: Arc<Control>,
+    port: u16,
+    runtime: Option<tokio::runtime::Runtime>,
+}
+
+impl WebFront {
+    /// Listens on `bind:port` (0: any free port) and serves the page; robots appear as the
+    /// relay's clients reach them through [`WebFront::tap`].
+    pub fn start(bind: IpAddr, port: u16, rule: Commanders) -> Result<WebFront, WebError> {
+        let runtime = tokio::runtime::Builder::new_multi_thread()
+            .worker_threads(2)
+            .thread_name("web-page")
+            .enable_all()
+            .build()
+            .map_err(WebError::Runtime)?;
+        let addr = SocketAddr::new(bind, port);
+        let listener = runtime
+            .block_on(tokio::net::TcpListener::bind(addr))
+            .map_err(|source| WebError::Bind { addr, source })?;
+        let port = listener.local_addr().map_or(port, |a| a.port());
+        let hub = Arc::new(Hub::default());
+        let control = Arc::new(Control::new(rule));
+        let app = http::router(hub.clone(), control.clone())
+            .into_make_service_with_connect_info::<SocketAddr>();
+        runtime.spawn(async move {
+            if let Err(e) = axum::serve(listener, app).await {
+                tracing::error!("the web page stopped: {e}");
+            }
+        });
+        let ticking = hub.clone();
+        runtime.spawn(async move {
+            let mut tick = tokio::time::interval(STATUS_EVERY);
+            loop {
+                tick.tick().await;
+                ticking.broadcast_rows();
+            }
+        });
+        Ok(WebFront {
+            hub,
+            control,
+            port,
+            runtime: Some(runtime),
+        })
+    }
+
+    /// The port the page is served on.
+    pub fn port(&self) -> u16 {
+        self.port
+    }
+
+    /// The tap to give the relay (`RelayConfig::fronts`).
+    pub fn tap(&self) -> Tap {
+        self.hub.tap()
+    }
+
+    /// Makes a relayed robot commandable from the page (by the controller only).
+    pub fn add_robot(&self, client: Arc<Client>) {
+        self.control.add_robot(client);
+    }
+}
+
+impl Drop for WebFront {
+    fn drop(&mut self) {
+        if let Some(runtime) = self.runtime.take() {
+            runtime.shutdown_background();
+        }
+    }
+}

@@ -1,0 +1,117 @@
+//! One page's WebSocket: the newest of everything first, then every new frame as it comes;
+//! the page's commands checked and carried out. A page that falls behind is sent the newest
+//! of everything again rather than a backlog; one that stops reading altogether is closed,
+//! and nobody else waits for it.
+
+use std::net::SocketAddr;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::time::Duration;
+
+use axum::extract::ws::{CloseFrame, Message, Utf8Bytes, WebSocket};
+use futures_util::{SinkExt, StreamExt};
+use tokio::sync::broadcast::error::RecvError;
+
+use crate::control::{Control, DEAD_MAN, Driven, peer};
+use crate::hub::{Hub, to_json};
+use crate::page::{FromPage, ToPage};
+
+/// How long one frame may take to leave: a page that reads nothing for this long is closed.
+pub const SEND_TIMEOUT: Duration = Duration::from_secs(5);
+
+/// WebSocket close code 1008, policy violation: a page that is not reading.
+const CLOSE_POLICY: u16 = 1008;
+
+static NEXT_PAGE: AtomicU64 = AtomicU64::new(1);
+
+/// Serves one page until it or the server goes.
+pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, control: Arc<Control>) {
+    let page = peer(NEXT_PAGE.fetch_add(1, Ordering::Relaxed), from.ip());
+    let (mut out, mut incoming) = socket.split();
+    // Subscribed before the snapshot is taken: nothing falls between the two.
+    let mut live = hub.subscribe();
+    let (controller, rule) = control.standing(page);
+    let mut first = vec![to_json(&ToPage::Hello { controller, rule })];
+    first.extend(hub.snapshot());
+    let mut driven = Driven::default();
+    let mut dead_man = tokio::time::interval(DEAD_MAN / 2);
+    let why = 'serve: {
+        for frame in first {
+            if let Err(why) = send(&mut out, frame).await {
+                break 'serve why;
+            }
+        }
+        loop {
+            tokio::select! {
+                frame = live.recv() => {
+                    let frames = match frame {
+                        Ok(frame) => vec![frame],
+                        Err(RecvError::Lagged(_)) => hub.snapshot(),
+                        Err(RecvError::Closed) => break 'serve "the server stops".to_string(),
+                    };
+                    for frame in frames {
+                        if let Err(why) = send(&mut out, frame).await {
+                            break 'serve why;
+                        }
+                    }
+                }
+                message = incoming.next() => {
+                    let text = match message {
+                        Some(Ok(Message::Text(text))) => text,
+                        Some(Ok(Message::Binary(_))) => {
+                            refuse(&mut out, "binary frames mean nothing here: send JSON text").await;
+                            continue;
+                        }
+                        Some(Ok(Message::Ping(_) | Message::Pong(_))) => continue,
+                        Some(Ok(Message::Close(_))) | None => break 'serve "the page closed".to_string(),
+                        Some(Err(e)) => break 'serve format!("the socket failed: {e}"),
+                    };
+                    let outcome = serde_json::from_str::<FromPage>(&text)
+                        .map_err(|e| format!("not a command: {e}"))
+                        .and_then(|command| control.execute(page, command, &mut driven));
+                    if let Err(why) = outcome {
+                        refuse(&mut out, &why).await;
+                    }
+                }
+                _ = dead_man.tick() => {
+                    control.stop_stale(page, &mut driven, false);
+                }
+            }
+        }
+    };
+    tracing::debug!(page = page.id, %from, "page gone: {why}");
+    control.stop_stale(page, &mut driven, true);
+    control.left(page);
+}
+
+type Out = futures_util::stream::SplitSink<WebSocket, Message>;
+
+async fn send(out: &mut Out, frame: crate::hub::Frame) -> Result<(), String> {
+    match tokio::time::timeout(SEND_TIMEOUT, out.send(Message::Text(frame))).await {
+        Ok(Ok(())) => Ok(()),
+        Ok(Err(e)) => Err(format!("cannot send: {e}")),
+        Err(_) => {
+            let reason = format!("not reading for {} s", SEND_TIMEOUT.as_secs());
+            let close = CloseFrame {
+                code: CLOSE_POLICY,
+                reason: Utf8Bytes::from(reason.as_str()),
+            };
+            // Best effort: the page is not reading, so the close frame may not get out either.
+            let _ = tokio::time::timeout(
+                Duration::from_millis(100),
+                out.send(Message::Close(Some(close))),
+            )
+            .await;
+            Err(reason)
+        }
+    }
+}
+
+async fn refuse(out: &mut Out, why: &str) {
+    let frame = to_json(&ToPage::Refused {
+        why: why.to_string(),
+    });
+    if let Err(e) = send(out, frame).await {
+        tracing::debug!("refusal not sent: {e}");
+    }
+}
