@@ -81,6 +81,7 @@ impl RelayedRobot {
             stop: stop.clone(),
             downstream,
             survey,
+            surveyed: false,
             subscribed: UpstreamSubscriptions::default(),
             forwarded: HashMap::new(),
         };
@@ -147,6 +148,8 @@ struct Follower {
     downstream: DownstreamOptions,
     /// Whether to subscribe to everything and describe it on each connection (for fronts).
     survey: bool,
+    /// Whether this connection was surveyed.
+    surveyed: bool,
     subscribed: UpstreamSubscriptions,
     /// The sequence number last passed on, per device and subtype.
     forwarded: HashMap<(Interface, u16, u8), u64>,
@@ -170,6 +173,12 @@ impl Follower {
             }
             retry_at = None;
             let connected = self.upstream.state() == ConnectionState::Connected;
+            // The fronts' survey does not wait for the downstream port: a port that cannot be
+            // bound keeps Player observers out, not the web page.
+            if connected && self.survey && !self.surveyed {
+                crate::survey::start(&self.upstream, &self.subscribed);
+            }
+            self.surveyed = connected;
             let server = self.shared.lock().server.clone();
             match (connected, server) {
                 (true, None) => {
@@ -212,9 +221,6 @@ impl Follower {
                     s.server = Some(server.clone());
                 });
                 self.forward(&server);
-                if self.survey {
-                    crate::survey::start(&self.upstream, &self.subscribed);
-                }
                 true
             }
             Err(e) => {

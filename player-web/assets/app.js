@@ -201,7 +201,8 @@ function drawRobot(name, robot) {
       const r = d.Ranges.ranges, c = d.config;
       const poses = d.geom && d.geom.element_poses;
       if (poses && poses.length === r.length && r.length > 1) {
-        r.forEach((range, i) => beam(compose(base, mount({ pose: poses[i] })), range, colour));
+        const max = c ? c.max_range : Infinity;
+        r.forEach((range, i) => { if (range < max) beam(compose(base, mount({ pose: poses[i] })), range, colour); });
       } else if (c) {
         rays(sensor, r.map((range, i) => [c.min_angle + i * c.angular_res, range]), c.max_range, colour);
       }
@@ -292,7 +293,7 @@ function rays(sensor, bearings, maxRange, colour) {
 
 function beam(at, range, colour) {
   if (range === null || !(range > 0)) return;
-  ctx.strokeStyle = colour;
+  ctx.strokeStyle = colour.replace("hsl", "hsla").replace(")", ",0.45)");
   ctx.lineWidth = 1.5 / view.zoom;
   ctx.beginPath();
   ctx.moveTo(at.x, at.y);
@@ -320,10 +321,12 @@ function frame() {
       grow(info.origin.px + info.width * info.scale, info.origin.py + info.height * info.scale);
     }
   }
+  const mapBox = box;
   if (!box) for (const robot of robots.values()) for (const { d } of bases(robot)) grow(d.State.pos.px, d.State.pos.py);
   if (!box || canvas.width === 0) return;
-  // A lone robot is shown with 10 m around it, not filling the view.
-  const margin = 1, least = 10;
+  // Robots alone are framed with room for what their sensors reach (a map frames itself);
+  // a lone robot gets 10 m around it rather than filling the view.
+  const margin = box === mapBox ? 1 : 3, least = 10;
   const w = Math.max(box[2] - box[0] + 2 * margin, least), h = Math.max(box[3] - box[1] + 2 * margin, least);
   view.x = (box[0] + box[2]) / 2;
   view.y = (box[1] + box[3]) / 2;

@@ -71,5 +71,9 @@ async fn upgrade(
     socket
         .max_message_size(MAX_FROM_PAGE)
         .max_frame_size(MAX_FROM_PAGE)
+        // Commands are small, and every frame out is flushed on its own: a page's socket needs
+        // kilobytes, not tungstenite's default 128 KiB each way (500 pages: 125 MB).
+        .read_buffer_size(4 * 1024)
+        .write_buffer_size(0)
         .on_upgrade(move |socket| serve_page(socket, from, shared.hub, shared.control))
 }

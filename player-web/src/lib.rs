@@ -64,14 +64,23 @@ impl WebFront {
             .build()
             .map_err(WebError::Runtime)?;
         let addr = SocketAddr::new(bind, port);
-        let listener = runtime
-            .block_on(tokio::net::TcpListener::bind(addr))
+        let listener = listen(addr)
+            .and_then(|std| {
+                let _entered = runtime.enter();
+                tokio::net::TcpListener::from_std(std)
+            })
             .map_err(|source| WebError::Bind { addr, source })?;
         let port = listener.local_addr().map_or(port, |a| a.port());
         let hub = Arc::new(Hub::default());
         let control = Arc::new(Control::new(rule));
         let app = http::router(hub.clone(), control.clone())
             .into_make_service_with_connect_info::<SocketAddr>();
+        // Small frames (poses, commands) go out at once rather than waiting for company.
+        let listener = axum::serve::ListenerExt::tap_io(listener, |tcp| {
+            if let Err(e) = tcp.set_nodelay(true) {
+                tracing::debug!("a page's socket keeps Nagle: {e}");
+            }
+        });
         runtime.spawn(async move {
             if let Err(e) = axum::serve(listener, app).await {
                 tracing::error!("the web page stopped: {e}");
@@ -108,6 +117,24 @@ impl WebFront {
         self.control.add_robot(client);
     }
 }
+
+/// A listener whose connections start with a small kernel send buffer (Linux hands the
+/// listener's to each accepted socket): a page that stops reading fills it in a moment and is
+/// closed (see [`socket::SEND_TIMEOUT`]) instead of holding megabytes of stale frames.
+fn listen(addr: SocketAddr) -> std::io::Result<std::net::TcpListener> {
+    use socket2::{Domain, Socket, Type};
+    let socket = Socket::new(Domain::for_address(addr), Type::STREAM, None)?;
+    socket.set_reuse_address(true)?;
+    socket.set_send_buffer_size(PAGE_SEND_BUFFER)?;
+    socket.bind(&addr.into())?;
+    // Hundreds of pages may open at once (a class told the address at the same moment).
+    socket.listen(1024)?;
+    socket.set_nonblocking(true)?;
+    Ok(socket.into())
+}
+
+/// Kernel send buffer per page: a few frames of a few robots.
+pub const PAGE_SEND_BUFFER: usize = 64 * 1024;
 
 impl Drop for WebFront {
     fn drop(&mut self) {

@@ -19,8 +19,11 @@ use crate::page::{FromPage, ToPage};
 /// How long one frame may take to leave: a page that reads nothing for this long is closed.
 pub const SEND_TIMEOUT: Duration = Duration::from_secs(5);
 
-/// WebSocket close code 1008, policy violation: a page that is not reading.
+/// WebSocket close codes: 1002 protocol error, 1008 policy violation (a page that is not
+/// reading), 1009 message too big.
+const CLOSE_PROTOCOL: u16 = 1002;
 const CLOSE_POLICY: u16 = 1008;
+const CLOSE_TOO_BIG: u16 = 1009;
 
 static NEXT_PAGE: AtomicU64 = AtomicU64::new(1);
 
@@ -64,7 +67,11 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
                         }
                         Some(Ok(Message::Ping(_) | Message::Pong(_))) => continue,
                         Some(Ok(Message::Close(_))) | None => break 'serve "the page closed".to_string(),
-                        Some(Err(e)) => break 'serve format!("the socket failed: {e}"),
+                        Some(Err(e)) => {
+                            let why = format!("the socket failed: {e}");
+                            close(&mut out, close_code(&e), &why).await;
+                            break 'serve why;
+                        }
                     };
                     let outcome = serde_json::from_str::<FromPage>(&text)
                         .map_err(|e| format!("not a command: {e}"))
@@ -92,18 +99,40 @@ async fn send(out: &mut Out, frame: crate::hub::Frame) -> Result<(), String> {
         Ok(Err(e)) => Err(format!("cannot send: {e}")),
         Err(_) => {
             let reason = format!("not reading for {} s", SEND_TIMEOUT.as_secs());
-            let close = CloseFrame {
-                code: CLOSE_POLICY,
-                reason: Utf8Bytes::from(reason.as_str()),
-            };
-            // Best effort: the page is not reading, so the close frame may not get out either.
-            let _ = tokio::time::timeout(
-                Duration::from_millis(100),
-                out.send(Message::Close(Some(close))),
-            )
-            .await;
+            close(out, CLOSE_POLICY, &reason).await;
             Err(reason)
         }
+    }
+}
+
+/// Says why the socket closes, best effort: a page that is not reading may not get it either.
+async fn close(out: &mut Out, code: u16, why: &str) {
+    // A close frame's reason is at most 123 bytes.
+    let reason: String = why
+        .chars()
+        .scan(0, |len, c| {
+            *len += c.len_utf8();
+            (*len <= 123).then_some(c)
+        })
+        .collect();
+    let frame = CloseFrame {
+        code,
+        reason: Utf8Bytes::from(reason),
+    };
+    let _ = tokio::time::timeout(
+        Duration::from_millis(100),
+        out.send(Message::Close(Some(frame))),
+    )
+    .await;
+}
+
+/// 1009 (message too big) for a frame over the limit, else 1002 (protocol error).
+fn close_code(error: &axum::Error) -> u16 {
+    let text = error.to_string();
+    if text.contains("too long") || text.contains("too big") || text.contains("Space limit") {
+        CLOSE_TOO_BIG
+    } else {
+        CLOSE_PROTOCOL
     }
 }
 

@@ -196,17 +196,17 @@ fn an_observers_clicks_and_keys_change_nothing() {
 
 #[test]
 fn a_restarted_robot_server_shows_reconnecting_then_resumes() {
-    let mut running = Some(serve_world("simple.world", None));
-    let ports = running.as_ref().unwrap().ports.clone();
-    let front = Front::start(running.as_ref().unwrap(), Commanders::Nobody);
-    let name = robot_name(running.as_ref().unwrap(), 6665);
+    let running = serve_world("simple.world", None);
+    let ports = running.ports.clone();
+    let front = Front::start(&running, Commanders::Nobody);
+    let name = robot_name(&running, 6665);
     let url = front.url();
     let watcher = std::thread::spawn(move || page(&["link", &url, &name, "25"]));
     // The page settles (Chromium starts, the robot is drawn) before its server goes.
     std::thread::sleep(Duration::from_secs(6));
-    running = None;
+    drop(running);
     std::thread::sleep(Duration::from_millis(1500));
-    running = Some(serve_world("simple.world", Some(&ports)));
+    let _restarted = serve_world("simple.world", Some(&ports));
     let seen = watcher.join().unwrap();
     let states: Vec<&str> = seen["states"]
         .as_array()
@@ -219,5 +219,4 @@ fn a_restarted_robot_server_shows_reconnecting_then_resumes() {
     let last = seen["states"].as_array().unwrap().last().unwrap();
     assert_eq!(last["state"], "connected", "and back: {seen}");
     assert_eq!(last["posed"], Value::Bool(true), "with fresh data: {seen}");
-    drop(running);
 }

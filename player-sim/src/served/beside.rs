@@ -5,6 +5,10 @@
 
 use std::path::{Path, PathBuf};
 
+use super::{DEFAULT_PORT, ServedDevice, default_devices, from_cfgs};
+use crate::world::World;
+use crate::worldfile::WorldFileError;
+
 /// The suffix of the file of what only player-sim serves: `navigation-sim.cfg`.
 const SIM_SUFFIX: &str = "-sim";
 /// The suffix of a navigation half's file name: `navigation.world` → `navigation-nav.cfg`.
@@ -29,6 +33,22 @@ pub fn cfgs_beside(world: &Path) -> Vec<PathBuf> {
         .chain(beside(NAV_SUFFIX))
         .filter(|p| p.exists())
         .collect()
+}
+
+/// The devices `world` (loaded from `world_file`) is served with when nothing else is said:
+/// those of the `.cfg` files beside it ([`cfgs_beside`]), else one port per robot from
+/// Player's default port. What the files ask that is not simulated goes to `ignored`.
+pub fn devices_beside(
+    world_file: &Path,
+    world: &World,
+    ignored: &mut Vec<String>,
+) -> Result<Vec<ServedDevice>, WorldFileError> {
+    let cfgs = cfgs_beside(world_file);
+    if cfgs.is_empty() {
+        return Ok(default_devices(world, DEFAULT_PORT));
+    }
+    let paths: Vec<&Path> = cfgs.iter().map(PathBuf::as_path).collect();
+    from_cfgs(&paths, world, ignored)
 }
 
 #[cfg(test)]

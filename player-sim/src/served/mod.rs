@@ -14,7 +14,7 @@ use std::path::Path;
 
 use player_proto::wire::{DevAddr, Interface};
 
-pub use beside::cfgs_beside;
+pub use beside::{cfgs_beside, devices_beside};
 pub use defaults::{default_devices, shift_ports};
 
 use crate::mapfile::SharedMap;

@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 use player_proto::server::Commanders;
 use player_relay::{Relay, RelayConfig, Route};
 use player_sim::serve::{Running, ServeOptions, serve};
-use player_sim::served::{cfgs_beside, from_cfgs};
+use player_sim::served::devices_beside;
 use player_sim::sim::Simulation;
 use player_sim::world::World;
 use player_web::WebFront;
@@ -27,9 +27,7 @@ pub fn repo_root() -> PathBuf {
 pub fn serve_world(world: &str, ports: Option<&[(u16, u16)]>) -> Running {
     let path = repo_root().join("stage-worlds").join(world);
     let loaded = World::load(&path).expect("the world loads");
-    let cfgs = cfgs_beside(&path);
-    let cfgs: Vec<&Path> = cfgs.iter().map(PathBuf::as_path).collect();
-    let mut devices = from_cfgs(&cfgs, &loaded, &mut Vec::new()).expect("its .cfg loads");
+    let mut devices = devices_beside(&path, &loaded, &mut Vec::new()).expect("its .cfg loads");
     if let Some(ports) = ports {
         for device in &mut devices {
             if let Some((_, actual)) = ports.iter().find(|(c, _)| *c == device.port) {

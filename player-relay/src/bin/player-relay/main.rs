@@ -11,6 +11,8 @@ use clap::Parser;
 use player_proto::server::Commanders;
 use player_relay::{DEFAULT_SEND_BUFFER, Relay, RelayConfig, Route};
 
+mod demo;
+
 /// Where observers of a robot on port P connect by default, when the relay shares the robots'
 /// machine: P + 1000 (6665 → 7665).
 const DEFAULT_PORT_OFFSET: u16 = 1000;
@@ -20,8 +22,13 @@ const DEFAULT_PORT_OFFSET: u16 = 1000;
 #[command(version, about)]
 struct Cli {
     /// Robot servers, `HOST:PORT` or `HOST:PORT=LISTEN`.
-    #[arg(required = true, value_parser = parse_robot)]
+    #[arg(required_unless_present = "demo", value_parser = parse_robot)]
     robots: Vec<(String, u16, Option<u16>)>,
+
+    /// Relay the demo's robots instead: stage-worlds/multirobot.world simulated in-process by
+    /// player-sim on free ports (no Player server needed).
+    #[arg(long, conflicts_with = "robots")]
+    demo: bool,
 
     /// Address observers connect to (0.0.0.0 for every interface).
     #[arg(long, default_value = "127.0.0.1")]
@@ -85,8 +92,18 @@ fn run(cli: Cli) -> Result<()> {
     if cli.seconds.is_some_and(|s| !(0.0..=1e9).contains(&s)) {
         bail!("--seconds must be from 0 to 1e9");
     }
+    let demo = cli.demo.then(demo::serve).transpose()?;
+    let mut robots = cli.robots;
+    if let Some(demo) = &demo {
+        // The demo's ports are wherever the system put them: observers get free ports too.
+        robots = demo
+            .ports
+            .iter()
+            .map(|&(_, port)| ("127.0.0.1".to_string(), port, Some(0)))
+            .collect();
+    }
     let mut routes = Vec::new();
-    for (host, port, listen) in cli.robots {
+    for (host, port, listen) in robots {
         let listen_port = match listen {
             Some(listen) => listen,
             None => port.checked_add(cli.port_offset).ok_or_else(|| {
@@ -107,7 +124,7 @@ fn run(cli: Cli) -> Result<()> {
         (None, true) => Commanders::FirstToAsk,
         (None, false) => Commanders::Nobody,
     };
-    for route in &routes {
+    for route in routes.iter().filter(|r| r.listen_port != 0) {
         eprintln!(
             "{}:{} → {}:{}",
             route.host, route.port, cli.bind, route.listen_port
@@ -136,6 +153,20 @@ fn run(cli: Cli) -> Result<()> {
             web.add_robot(robot.upstream().clone());
         }
     }
+    if demo.is_some() {
+        relay.wait_serving(Duration::from_secs(5));
+        for robot in relay.robots() {
+            let upstream = robot.upstream();
+            if let Some(port) = robot.listen_port() {
+                eprintln!(
+                    "{}:{} → {}:{port}",
+                    upstream.host(),
+                    upstream.port(),
+                    cli.bind
+                );
+            }
+        }
+    }
     match cli.seconds {
         Some(seconds) => std::thread::sleep(Duration::from_secs_f64(seconds)),
         // Serves until killed; the relay's own threads do the work.
@@ -145,5 +176,6 @@ fn run(cli: Cli) -> Result<()> {
     }
     drop(relay);
     drop(web);
+    drop(demo);
     Ok(())
 }
