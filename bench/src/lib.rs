@@ -24,7 +24,9 @@
 
 pub mod clock;
 pub mod cpu;
+pub mod crowd;
 pub mod observers;
+pub mod pages;
 pub mod plot;
 pub mod polling;
 pub mod process_stats;

@@ -18,6 +18,11 @@ use crate::socket::serve_page;
 /// The largest frame a page may send: a command is a few hundred bytes.
 pub const MAX_FROM_PAGE: usize = 16 * 1024;
 
+/// What a page's socket gathers before writing, and the most it may hold (a burst after a
+/// page fell behind is the newest of everything: a few hundred kilobytes with a map).
+const WRITE_BUFFER: usize = 32 * 1024;
+const MAX_WRITE_BUFFER: usize = 2 * 1024 * 1024;
+
 const INDEX: &str = include_str!("../assets/index.html");
 const SCRIPT: &str = include_str!("../assets/app.js");
 const STYLE: &str = include_str!("../assets/style.css");
@@ -71,9 +76,10 @@ async fn upgrade(
     socket
         .max_message_size(MAX_FROM_PAGE)
         .max_frame_size(MAX_FROM_PAGE)
-        // Commands are small, and every frame out is flushed on its own: a page's socket needs
-        // kilobytes, not tungstenite's default 128 KiB each way (500 pages: 125 MB).
+        // Commands are small, and frames out are written a burst at a time: a page's socket
+        // needs kilobytes, not tungstenite's default 128 KiB each way (500 pages: 125 MB).
         .read_buffer_size(4 * 1024)
-        .write_buffer_size(0)
+        .write_buffer_size(WRITE_BUFFER)
+        .max_write_buffer_size(MAX_WRITE_BUFFER)
         .on_upgrade(move |socket| serve_page(socket, from, shared.hub, shared.control))
 }

@@ -10,7 +10,7 @@ use std::time::Duration;
 
 use axum::extract::ws::{CloseFrame, Message, Utf8Bytes, WebSocket};
 use futures_util::{SinkExt, StreamExt};
-use tokio::sync::broadcast::error::RecvError;
+use tokio::sync::broadcast::error::{RecvError, TryRecvError};
 
 use crate::control::{Control, DEAD_MAN, Driven, peer};
 use crate::hub::{Hub, to_json};
@@ -24,6 +24,9 @@ pub const SEND_TIMEOUT: Duration = Duration::from_secs(5);
 const CLOSE_PROTOCOL: u16 = 1002;
 const CLOSE_POLICY: u16 = 1008;
 const CLOSE_TOO_BIG: u16 = 1009;
+
+/// The most frames written at once.
+const BATCH: usize = 64;
 
 static NEXT_PAGE: AtomicU64 = AtomicU64::new(1);
 
@@ -39,23 +42,28 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
     let mut driven = Driven::default();
     let mut dead_man = tokio::time::interval(DEAD_MAN / 2);
     let why = 'serve: {
-        for frame in first {
-            if let Err(why) = send(&mut out, frame).await {
-                break 'serve why;
-            }
+        if let Err(why) = send_all(&mut out, first).await {
+            break 'serve why;
         }
         loop {
             tokio::select! {
                 frame = live.recv() => {
-                    let frames = match frame {
+                    let mut frames = match frame {
                         Ok(frame) => vec![frame],
                         Err(RecvError::Lagged(_)) => hub.snapshot(),
                         Err(RecvError::Closed) => break 'serve "the server stops".to_string(),
                     };
-                    for frame in frames {
-                        if let Err(why) = send(&mut out, frame).await {
-                            break 'serve why;
+                    // Whatever else is already waiting goes in the same write: one system
+                    // call for a burst rather than one per frame.
+                    while frames.len() < BATCH {
+                        match live.try_recv() {
+                            Ok(frame) => frames.push(frame),
+                            Err(TryRecvError::Lagged(_)) => frames.extend(hub.snapshot()),
+                            Err(_) => break,
                         }
+                    }
+                    if let Err(why) = send_all(&mut out, frames).await {
+                        break 'serve why;
                     }
                 }
                 message = incoming.next() => {
@@ -94,7 +102,19 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
 type Out = futures_util::stream::SplitSink<WebSocket, Message>;
 
 async fn send(out: &mut Out, frame: crate::hub::Frame) -> Result<(), String> {
-    match tokio::time::timeout(SEND_TIMEOUT, out.send(Message::Text(frame))).await {
+    send_all(out, vec![frame]).await
+}
+
+/// Writes `frames` and flushes them, all within [`SEND_TIMEOUT`]; a page that takes longer
+/// is not reading, and is closed.
+async fn send_all(out: &mut Out, frames: Vec<crate::hub::Frame>) -> Result<(), String> {
+    let write = async {
+        for frame in frames {
+            out.feed(Message::Text(frame)).await?;
+        }
+        out.flush().await
+    };
+    match tokio::time::timeout(SEND_TIMEOUT, write).await {
         Ok(Ok(())) => Ok(()),
         Ok(Err(e)) => Err(format!("cannot send: {e}")),
         Err(_) => {

@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
 use bench::clock::SharedWindow;
-use bench::observers::Observers;
+use bench::observers::connect_observers;
 use bench::recorder::LatencySummary;
 use player_proto::client::{Backoff, Client, ClientOptions, ConnectionState};
 
@@ -54,7 +54,7 @@ fn vanishing_observers(args: &Args, relay: &RoleProcess) -> Result<()> {
     let mib = |b: u64| b as f64 / (1024.0 * 1024.0);
     let mut after_rounds = Vec::new();
     for round in 1..=VANISH_ROUNDS {
-        let crowd = Observers::connect(
+        let crowd = connect_observers(
             &relay.ports,
             args.observers,
             SharedWindow::default(),

@@ -13,13 +13,14 @@
 //! ends it. Loopback only.
 
 mod faults;
+mod fronts;
 mod roles;
 
 use std::time::Duration;
 
 use anyhow::{Result, bail};
 use bench::clock::{SharedWindow, unix_seconds};
-use bench::observers::Observers;
+use bench::observers::connect_observers;
 use bench::process_stats::ProcessSample;
 use bench::recorder::LatencySummary;
 use bench::traffic::DEVICES;
@@ -29,7 +30,7 @@ use roles::RoleProcess;
 /// How long observers and relay may take to come up before the run is called off.
 pub(crate) const SETUP_TIMEOUT: Duration = Duration::from_secs(60);
 /// Time after the window closes for messages sent inside it to arrive.
-const DRAIN: Duration = Duration::from_millis(500);
+pub(crate) const DRAIN: Duration = Duration::from_millis(500);
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum Role {
@@ -52,6 +53,13 @@ pub(crate) struct Args {
     /// Instead of the load phases: kill the relay mid-stream and let observers vanish.
     #[arg(long)]
     pub(crate) faults: bool,
+    /// Instead of the load phases: the relay's fronts (web pages, Foxglove clients) under
+    /// load, against one direct Player observer per robot (for the relay role: start them).
+    #[arg(long)]
+    pub(crate) fronts: bool,
+    /// Web pages, with --fronts.
+    #[arg(long, default_value_t = 200)]
+    pub(crate) pages: usize,
     #[arg(long, default_value_t = 8)]
     pub(crate) robots: usize,
     #[arg(long, default_value_t = 1000)]
@@ -86,6 +94,7 @@ fn main() -> Result<()> {
         Role::Robots => roles::serve_robots(&args),
         Role::Relay => roles::serve_relay(&args),
         Role::Orchestrator if args.faults => faults::run(&args),
+        Role::Orchestrator if args.fronts => fronts::run(&args),
         Role::Orchestrator => orchestrate(&args),
     }
 }
@@ -114,7 +123,7 @@ fn run_phase(
 ) -> Result<Phase> {
     let window = SharedWindow::default();
     let (robots0, relay0) = (robots.sample()?, relay.sample()?);
-    let observers = Observers::connect(ports, args.observers, window.clone(), SETUP_TIMEOUT)?;
+    let observers = connect_observers(ports, args.observers, window.clone(), SETUP_TIMEOUT)?;
     std::thread::sleep(Duration::from_secs_f64(args.warmup));
     let (robots1, relay1) = (robots.sample()?, relay.sample()?);
     let start = unix_seconds();

@@ -12,9 +12,13 @@ use anyhow::{Context, Result, bail};
 use bench::clock::unix_seconds;
 use bench::process_stats::ProcessSample;
 use bench::traffic::{DEVICES, PUBLISHED, bodies};
+use player_proto::server::Commanders;
 use player_proto::server::{Server, ServerConfig};
 use player_proto::wire::DevAddr;
 use player_relay::{Relay, RelayConfig, Route};
+use player_web::WebFront;
+
+const LOCALHOST: std::net::IpAddr = std::net::IpAddr::V4(std::net::Ipv4Addr::LOCALHOST);
 
 use crate::{Args, SETUP_TIMEOUT};
 
@@ -101,8 +105,14 @@ pub fn serve_relay(args: &Args) -> Result<()> {
             listen_port: args.listen.get(i).copied().unwrap_or(0),
         })
         .collect();
+    let web = if args.fronts {
+        Some(WebFront::start(LOCALHOST, 0, Commanders::Nobody)?)
+    } else {
+        None
+    };
     let relay = Relay::start(RelayConfig {
         routes,
+        fronts: web.iter().map(WebFront::tap).collect(),
         ..RelayConfig::default()
     })?;
     let serving = relay.wait_serving(SETUP_TIMEOUT);
@@ -112,11 +122,13 @@ pub fn serve_relay(args: &Args) -> Result<()> {
             args.upstream.len()
         );
     }
-    let ports: Vec<u16> = relay
+    let mut ports: Vec<u16> = relay
         .robots()
         .iter()
         .filter_map(|r| r.listen_port())
         .collect();
+    // The fronts' ports follow the robots'.
+    ports.extend(web.as_ref().map(WebFront::port));
     announce(&ports)?;
     until_stdin_closes();
     Ok(())
@@ -135,6 +147,7 @@ impl RoleProcess {
             .args(["--robots", &args.robots.to_string()])
             .args(["--beams", &args.beams.to_string()])
             .args(["--rate-hz", &args.rate_hz.to_string()])
+            .args(args.fronts.then_some("--fronts"))
             .args(extra)
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
