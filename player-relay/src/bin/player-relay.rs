@@ -8,6 +8,7 @@ use std::time::Duration;
 
 use anyhow::{Result, bail};
 use clap::Parser;
+use player_foxglove::live::FoxgloveLive;
 use player_proto::server::Commanders;
 use player_relay::{DEFAULT_SEND_BUFFER, Relay, RelayConfig, Route};
 
@@ -43,6 +44,11 @@ struct Cli {
     /// Kernel send buffer per observer, bytes: what a slow observer may have waiting.
     #[arg(long, default_value_t = DEFAULT_SEND_BUFFER)]
     send_buffer: usize,
+
+    /// Also serve every robot to Foxglove Studio and Lichtblick over the Foxglove WebSocket
+    /// protocol on this port (on --bind): ws://HOST:PORT.
+    #[arg(long, value_name = "PORT")]
+    foxglove: Option<u16>,
 
     /// Stop after this many seconds (default: run until killed).
     #[arg(long, value_name = "SECONDS")]
@@ -108,11 +114,23 @@ fn run(cli: Cli) -> Result<()> {
             route.host, route.port, cli.bind, route.listen_port
         );
     }
+    let mut fronts = Vec::new();
+    // Declared before the relay, so dropped after it: no robot thread outlives its front.
+    let foxglove = match cli.foxglove {
+        Some(port) => {
+            let live = FoxgloveLive::start(cli.bind, port)?;
+            eprintln!("Foxglove WebSocket → ws://{}:{}", cli.bind, live.port());
+            fronts.push(live.tap());
+            Some(live)
+        }
+        None => None,
+    };
     let relay = Relay::start(RelayConfig {
         routes,
         bind: cli.bind,
         commanders,
         send_buffer: cli.send_buffer,
+        fronts,
         ..RelayConfig::default()
     })?;
     match cli.seconds {
@@ -123,5 +141,6 @@ fn run(cli: Cli) -> Result<()> {
         },
     }
     drop(relay);
+    drop(foxglove);
     Ok(())
 }
