@@ -12,6 +12,9 @@
 //   node foxglove_client.mjs many URL COUNT HOLD_MS TIMEOUT_MS
 //     COUNT clients connect at once and each waits for its first scan; prints "CONNECTED"
 //     (for the test to measure the server then), holds them HOLD_MS, then the JSON.
+//   node foxglove_client.mjs stall URL COUNT HOLD_MS TIMEOUT_MS
+//     COUNT clients subscribe to every channel, and once each has a message, stop reading
+//     (their socket paused); prints "STALLED", holds them HOLD_MS, then the JSON.
 
 import wsProtocol from "@foxglove/ws-protocol";
 import protobuf from "protobufjs";
@@ -31,7 +34,11 @@ function connect() {
   return new FoxgloveClient({ ws: new WebSocket(url, [PROTOCOL]) });
 }
 
+// Prints the one result and exits, once: events still queued before the exit are ignored.
+let finished = false;
 function finish(result, ok) {
+  if (finished) return;
+  finished = true;
   process.stdout.write(JSON.stringify(result) + "\n", () => process.exit(ok ? 0 : 1));
 }
 
@@ -215,6 +222,28 @@ async function many(count, holdMs, timeoutMs) {
   finish({ count, elapsedMs, ...tally() }, true);
 }
 
+async function stall(count, holdMs, timeoutMs) {
+  const timer = setTimeout(() => finish({ timedOut: true }, false), timeoutMs);
+  const sockets = [];
+  const stalled = [];
+  for (let i = 0; i < count; i++) {
+    const ws = new WebSocket(url, [PROTOCOL]);
+    const client = new FoxgloveClient({ ws });
+    sockets.push(ws);
+    stalled.push(new Promise((resolve) => {
+      client.on("advertise", (channels) => channels.forEach((c) => client.subscribe(c.id)));
+      client.on("message", () => { ws.pause(); resolve(); });
+    }));
+  }
+  await Promise.all(stalled);
+  process.stdout.write("STALLED\n");
+  await new Promise((r) => setTimeout(r, holdMs));
+  clearTimeout(timer);
+  const open = sockets.filter((ws) => ws.readyState === WebSocket.OPEN).length;
+  for (const ws of sockets) ws.terminate();
+  finish({ count, open }, true);
+}
+
 switch (mode) {
   case "observe":
     observe(JSON.parse(args[0]), Number(args[1]));
@@ -224,6 +253,9 @@ switch (mode) {
     break;
   case "many":
     many(Number(args[0]), Number(args[1]), Number(args[2]));
+    break;
+  case "stall":
+    stall(Number(args[0]), Number(args[1]), Number(args[2]));
     break;
   default:
     console.error(`unknown mode ${mode}`);
