@@ -21,9 +21,14 @@
 //! per position2d device (`<robot>` for index 0, `<robot>#<i>` for others: Stage serves several
 //! robots on one port), then one per device (`<robot>/laser/0`), a child of the position2d
 //! of the same index when there is one, else of index 0's.
+//!
+//! With the `live` feature, [`live::FoxgloveLive`] serves the conversion over Foxglove's
+//! WebSocket protocol to Foxglove Studio and Lichtblick, fed by Player client taps.
 
 pub mod camera;
 pub mod frames;
+#[cfg(feature = "live")]
+pub mod live;
 pub mod map;
 pub mod message;
 pub mod scans;

@@ -19,6 +19,15 @@
 //! When a robot's server goes away, the relay drops that robot's observers and stops
 //! listening on its port until the robot is back: observers see their server go and come back,
 //! as they would without the relay.
+//!
+//! ## Foxglove and Lichtblick
+//!
+//! `player-relay --foxglove PORT` also serves every robot over Foxglove's WebSocket protocol
+//! (`player_foxglove::live::FoxgloveLive`, given to [`RelayConfig::fronts`] as a client tap):
+//! in Foxglove or Lichtblick, *Open connection* → *Foxglove WebSocket* → `ws://HOST:PORT`
+//! (HOST the relay's `--bind`). Each device is a channel in Foxglove's well-known schemas
+//! (`LaserScan`, `PoseInFrame`, `FrameTransform`, `Grid`, images, `SceneUpdate`, `Log`), with
+//! the frame tree `world` → robot → sensor; what comes once is re-sent to each new subscriber.
 
 pub mod downstream;
 mod relayed_device;

@@ -8,6 +8,7 @@ use std::time::Duration;
 
 use anyhow::{Result, bail};
 use clap::Parser;
+use player_foxglove::live::FoxgloveLive;
 use player_proto::server::Commanders;
 use player_relay::{DEFAULT_SEND_BUFFER, Relay, RelayConfig, Route};
 
@@ -55,6 +56,11 @@ struct Cli {
     /// from it; everyone else watches).
     #[arg(long, value_name = "PORT")]
     web: Option<u16>,
+
+    /// Also serve every robot to Foxglove Studio and Lichtblick over the Foxglove WebSocket
+    /// protocol on this port (on --bind): ws://HOST:PORT.
+    #[arg(long, value_name = "PORT")]
+    foxglove: Option<u16>,
 
     /// Stop after this many seconds (default: run until killed).
     #[arg(long, value_name = "SECONDS")]
@@ -131,6 +137,16 @@ fn run(cli: Cli) -> Result<()> {
         );
     }
     let mut fronts = Vec::new();
+    // Declared before the relay, so dropped after it: no robot thread outlives its front.
+    let foxglove = match cli.foxglove {
+        Some(port) => {
+            let live = FoxgloveLive::start(cli.bind, port)?;
+            eprintln!("Foxglove WebSocket → ws://{}:{}", cli.bind, live.port());
+            fronts.push(live.tap());
+            Some(live)
+        }
+        None => None,
+    };
     let web = match cli.web {
         Some(port) => {
             let web = player_web::WebFront::start(cli.bind, port, commanders)?;
@@ -177,5 +193,6 @@ fn run(cli: Cli) -> Result<()> {
     drop(relay);
     drop(web);
     drop(demo);
+    drop(foxglove);
     Ok(())
 }
