@@ -25,6 +25,7 @@
 pub mod clock;
 pub mod cpu;
 pub mod crowd;
+pub mod foxglove_clients;
 pub mod observers;
 pub mod pages;
 pub mod plot;

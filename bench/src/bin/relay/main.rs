@@ -60,6 +60,9 @@ pub(crate) struct Args {
     /// Web pages, with --fronts.
     #[arg(long, default_value_t = 200)]
     pub(crate) pages: usize,
+    /// Foxglove clients, with --fronts.
+    #[arg(long, default_value_t = 200)]
+    pub(crate) foxglove_clients: usize,
     #[arg(long, default_value_t = 8)]
     pub(crate) robots: usize,
     #[arg(long, default_value_t = 1000)]
@@ -79,7 +82,9 @@ pub(crate) struct Args {
 }
 
 fn main() -> Result<()> {
-    program_edge::logging::init("warn");
+    // The Foxglove SDK logs an error per queued message when a client vanishes (every
+    // client does, at the end): not what the figures are about.
+    program_edge::logging::init("warn,foxglove::websocket=off");
     let args = Args::parse();
     if args.robots == 0 || args.observers == 0 || args.beams == 0 {
         bail!("--robots, --observers and --beams must be positive");

@@ -12,6 +12,7 @@ use anyhow::{Context, Result, bail};
 use bench::clock::unix_seconds;
 use bench::process_stats::ProcessSample;
 use bench::traffic::{DEVICES, PUBLISHED, bodies};
+use player_foxglove::live::FoxgloveLive;
 use player_proto::server::Commanders;
 use player_proto::server::{Server, ServerConfig};
 use player_proto::wire::DevAddr;
@@ -105,14 +106,19 @@ pub fn serve_relay(args: &Args) -> Result<()> {
             listen_port: args.listen.get(i).copied().unwrap_or(0),
         })
         .collect();
-    let web = if args.fronts {
-        Some(WebFront::start(LOCALHOST, 0, Commanders::Nobody)?)
+    let (web, foxglove) = if args.fronts {
+        (
+            Some(WebFront::start(LOCALHOST, 0, Commanders::Nobody)?),
+            Some(FoxgloveLive::start(LOCALHOST, 0)?),
+        )
     } else {
-        None
+        (None, None)
     };
+    let mut fronts: Vec<_> = web.iter().map(WebFront::tap).collect();
+    fronts.extend(foxglove.iter().map(FoxgloveLive::tap));
     let relay = Relay::start(RelayConfig {
         routes,
-        fronts: web.iter().map(WebFront::tap).collect(),
+        fronts,
         ..RelayConfig::default()
     })?;
     let serving = relay.wait_serving(SETUP_TIMEOUT);
@@ -129,6 +135,7 @@ pub fn serve_relay(args: &Args) -> Result<()> {
         .collect();
     // The fronts' ports follow the robots'.
     ports.extend(web.as_ref().map(WebFront::port));
+    ports.extend(foxglove.as_ref().map(FoxgloveLive::port));
     announce(&ports)?;
     until_stdin_closes();
     Ok(())
