@@ -135,14 +135,37 @@ fn run(cli: Cli) -> Result<()> {
         range_sd: cli.range_noise,
     };
     let running = serve(sim, devices, options)?;
-    let ports: Vec<String> = running.ports.iter().map(|(_, p)| p.to_string()).collect();
+    let ports: Vec<u16> = running.ports.iter().map(|&(_, p)| p).collect();
     eprintln!(
         "player-sim: serving {} on port(s) {}",
         world_path.display(),
-        ports.join(", ")
+        port_ranges(&ports)
     );
     running.wait();
     Ok(())
+}
+
+/// Ports as runs (`6665–7688`): a thousand robots make one line, not a screenful.
+fn port_ranges(ports: &[u16]) -> String {
+    let mut sorted = ports.to_vec();
+    sorted.sort_unstable();
+    let mut runs: Vec<(u16, u16)> = Vec::new();
+    for port in sorted {
+        match runs.last_mut() {
+            Some((_, end)) if end.checked_add(1) == Some(port) => *end = port,
+            _ => runs.push((port, port)),
+        }
+    }
+    runs.iter()
+        .map(|&(a, b)| {
+            if a == b {
+                a.to_string()
+            } else {
+                format!("{a}–{b}")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn replay(path: &Path, cli: &Cli) -> Result<()> {
@@ -174,4 +197,17 @@ fn replay(path: &Path, cli: &Cli) -> Result<()> {
     );
     replaying.wait();
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn ports_are_said_as_runs() {
+        assert_eq!(
+            super::port_ranges(&[6667, 6665, 6666, 7000]),
+            "6665–6667, 7000"
+        );
+        assert_eq!(super::port_ranges(&[6665]), "6665");
+        assert_eq!(super::port_ranges(&[65534, 65535]), "65534–65535");
+    }
 }
