@@ -1,4 +1,5 @@
-//! Simulation steps per second of `stage-worlds/swarm.world` (256 robots with lasers), each step
+//! Simulation steps per second of `stage-worlds/swarm.world` (256 robots with lasers) and
+//! `swarm1024.world` (1 024), each step
 //! with what a served step computes: motion and collisions of every robot, then every laser's
 //! scan (as when every laser is subscribed). The target is 10 steps/s on 2 cores.
 //! "unpruned" casts every beam against every robot, as player-sim did before the pruning: the
@@ -13,8 +14,14 @@ use player_sim::sim::{Command, Simulation, ranger_scan, ranger_scan_exhaustive};
 use player_sim::world::{RangerSpec, World};
 
 fn swarm() -> Simulation {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../stage-worlds/swarm.world");
-    let mut sim = Simulation::new(World::load(&path).expect("swarm.world loads"));
+    swarm_of("swarm.world")
+}
+
+fn swarm_of(file: &str) -> Simulation {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../stage-worlds")
+        .join(file);
+    let mut sim = Simulation::new(World::load(&path).expect("the swarm world loads"));
     // Every robot drives and turns, so collision checks run for all of them.
     for (i, robot) in sim.robots.iter_mut().enumerate() {
         robot.command = Command::Velocity {
@@ -55,6 +62,15 @@ fn bench(c: &mut Criterion) {
     });
     let mut sim = swarm();
     group.bench_function("step without sensors", |b| b.iter(|| sim.step()));
+    group.finish();
+    // The scale target: 1 024 robots, each scan pruned to the boxes near its robot.
+    let mut group = c.benchmark_group("swarm1024.world");
+    group.throughput(Throughput::Elements(1));
+    group.sample_size(10);
+    let mut sim = swarm_of("swarm1024.world");
+    group.bench_function("step with 1024 laser scans", |b| {
+        b.iter(|| std::hint::black_box(step_with_sensors(&mut sim, ranger_scan)))
+    });
     group.finish();
 }
 

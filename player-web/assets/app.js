@@ -343,17 +343,23 @@ function showRows(rows) {
     tr.dataset.robot = row.robot;
     if (selected && selected.robot === row.robot) tr.className = "selected";
     const link = row.link.state + (row.link.why ? `: ${row.link.why}` : "");
-    const devices = row.devices
-      .sort((a, b) => a.device.localeCompare(b.device))
-      .map((d) => {
-        const age = d.age === null ? "no data" : `${d.age.toFixed(1)} s`;
-        const stale = d.age === null || d.age > 2 ? " stale" : "";
-        const hz = d.hz >= 10 ? d.hz.toFixed(0) : d.hz.toFixed(1);
-        return `<span class="device${stale}">${d.device} ${hz} Hz · ${age}</span>`;
-      })
-      .join("");
-    tr.innerHTML = `<td>${row.robot}</td><td class="link-${row.link.state}"></td><td>${devices}</td>`;
-    tr.children[1].textContent = link;
+    // Text from the wire goes in as text, never as markup.
+    const cell = (text, className) => {
+      const td = document.createElement("td");
+      td.textContent = text;
+      if (className) td.className = className;
+      return td;
+    };
+    const devices = document.createElement("td");
+    for (const d of row.devices.sort((a, b) => a.device.localeCompare(b.device))) {
+      const age = d.age === null ? "no data" : `${d.age.toFixed(1)} s`;
+      const hz = d.hz >= 10 ? d.hz.toFixed(0) : d.hz.toFixed(1);
+      const span = document.createElement("span");
+      span.className = "device" + (d.age === null || d.age > 2 ? " stale" : "");
+      span.textContent = `${d.device} ${hz} Hz · ${age}`;
+      devices.append(span);
+    }
+    tr.append(cell(row.robot), cell(link, `link-${row.link.state}`), devices);
     tr.addEventListener("click", () => select(row.robot, 0));
     body.append(tr);
   }

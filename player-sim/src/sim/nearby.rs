@@ -96,9 +96,12 @@ impl<'a> NearbyBoxes<'a> {
         let boxes = robots
             .chain(obstacles)
             .filter_map(|(pose, size, color, ranger_return, shape)| {
-                let radius = size[0].hypot(size[1]) / 2.0;
-                let centre_distance = (pose.x - x).hypot(pose.y - y);
-                (centre_distance - radius <= reach).then(|| {
+                // Every sensor asks this of every robot: squares, not `hypot` (a thousand
+                // robots make a million of these a step).
+                let radius = (size[0] * size[0] + size[1] * size[1]).sqrt() / 2.0;
+                let (ex, ey) = (pose.x - x, pose.y - y);
+                let within = reach + radius;
+                (within >= 0.0 && ex * ex + ey * ey <= within * within).then(|| {
                     let (sin, cos) = pose.a.sin_cos();
                     SolidBox {
                         x: pose.x,
@@ -142,6 +145,19 @@ impl<'a> NearbyBoxes<'a> {
         counts: impl Fn(&SolidBox<'a>) -> bool,
     ) -> Option<(f64, &SolidBox<'a>)> {
         let (dy, dx) = angle.sin_cos();
+        self.nearest_along(x, y, dx, dy, max, counts)
+    }
+
+    /// [`NearbyBoxes::nearest_where`] along the unit direction `(dx, dy)`.
+    pub fn nearest_along(
+        &self,
+        x: f64,
+        y: f64,
+        dx: f64,
+        dy: f64,
+        max: f64,
+        counts: impl Fn(&SolidBox<'a>) -> bool,
+    ) -> Option<(f64, &SolidBox<'a>)> {
         let mut best: Option<(f64, &SolidBox<'a>)> = None;
         for b in self.boxes.iter().filter(|b| counts(b)) {
             let limit = best.map_or(max, |(d, _)| d);

@@ -38,13 +38,18 @@ fn cast(
     angle: f64,
     max: f64,
 ) -> Option<Hit> {
+    // One sine and cosine per beam, for the walls and the boxes alike.
+    let (dy, dx) = angle.sin_cos();
     let floor = (sim.world.floor_ranger_return >= 0.0)
-        .then(|| floor_distance(sim, x, y, angle, max))
+        .then(|| {
+            let grid = sim.world.floor.as_ref()?;
+            grid.raycast_along(x, y, dx, dy, max).map(|(d, _)| d)
+        })
         .flatten()
         .map(|d| (d, sim.world.floor_ranger_return));
     let limit = floor.map_or(max, |(d, _)| d);
     let thing = boxes
-        .nearest_where(x, y, angle, limit, |b| b.ranger_return >= 0.0)
+        .nearest_along(x, y, dx, dy, limit, |b| b.ranger_return >= 0.0)
         .map(|(d, b)| (d, b.ranger_return));
     thing.or(floor)
 }

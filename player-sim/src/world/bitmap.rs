@@ -99,7 +99,13 @@ impl OccupancyGrid {
     /// when the ray crossed a vertical cell edge, [`Face::NorthSouth`] a horizontal one (the
     /// camera shades them apart, so that corners show).
     pub fn raycast_face(&self, x: f64, y: f64, angle: f64, max: f64) -> Option<(f64, Face)> {
-        let (dx, dy) = (angle.cos(), angle.sin());
+        let (dy, dx) = angle.sin_cos();
+        self.raycast_along(x, y, dx, dy, max)
+    }
+
+    /// [`Self::raycast_face`] along the unit direction `(dx, dy)`: a caster that also tests
+    /// boxes along the same beam computes its sine and cosine once.
+    pub fn raycast_along(&self, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<(f64, Face)> {
         let (mut cx, mut cy) = self.cell_of(x, y);
         if self.is_wall(cx, cy) {
             return Some((0.0, Face::EastWest));
