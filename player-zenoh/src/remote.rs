@@ -16,6 +16,7 @@ use zenoh::Session;
 use zenoh::Wait;
 use zenoh::pubsub::Subscriber;
 use zenoh::qos::CongestionControl;
+use zenoh::query::ConsolidationMode;
 
 use crate::cache::CachedReply;
 use crate::commands::decode_raw;
@@ -45,7 +46,12 @@ fn ask(
     key: String,
     request: Option<(Bytes, Vec<u8>)>,
 ) -> Result<Vec<(Bytes, Option<Bytes>)>, ZenohError> {
-    let mut get = session.get(key).timeout(QUERY_WAIT);
+    // Several answers share one key (a device list, then driver names): Zenoh's default
+    // consolidation would keep only the last.
+    let mut get = session
+        .get(key)
+        .consolidation(ConsolidationMode::None)
+        .timeout(QUERY_WAIT);
     if let Some((payload, attachment)) = request {
         get = get.payload(payload).attachment(attachment);
     }
