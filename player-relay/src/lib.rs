@@ -84,6 +84,9 @@ pub struct RelayConfig {
     /// to every device of a robot and asks what describes them (geometries, map tiles) each
     /// time it connects, since nobody downstream will ask for it.
     pub fronts: Vec<Tap>,
+    /// Whether a front passes commands on to the robots (Zenoh's authorised controller), so
+    /// the upstream clients must not be read-only even when no observer may command.
+    pub fronts_command: bool,
 }
 
 impl std::fmt::Debug for RelayConfig {
@@ -95,6 +98,7 @@ impl std::fmt::Debug for RelayConfig {
             .field("send_buffer", &self.send_buffer)
             .field("upstream", &self.upstream)
             .field("fronts", &self.fronts.len())
+            .field("fronts_command", &self.fronts_command)
             .finish()
     }
 }
@@ -108,6 +112,7 @@ impl Default for RelayConfig {
             send_buffer: DEFAULT_SEND_BUFFER,
             upstream: ClientOptions::default(),
             fronts: Vec::new(),
+            fronts_command: false,
         }
     }
 }
@@ -131,7 +136,7 @@ impl Relay {
         };
         let upstream = ClientOptions {
             // A relay nobody may command cannot move a robot, whatever goes wrong above it.
-            read_only: config.commanders == Commanders::Nobody,
+            read_only: config.commanders == Commanders::Nobody && !config.fronts_command,
             // The newest scan is all an observer gets: the robot need not queue older ones.
             replace_old_data: true,
             tap: fan_out(config.fronts.clone()),

@@ -13,6 +13,7 @@ use player_proto::server::Commanders;
 use player_relay::{DEFAULT_SEND_BUFFER, Relay, RelayConfig, Route};
 
 mod demo;
+mod zenoh;
 
 /// Where observers of a robot on port P connect by default, when the relay shares the robots'
 /// machine: P + 1000 (6665 → 7665).
@@ -23,7 +24,7 @@ const DEFAULT_PORT_OFFSET: u16 = 1000;
 #[command(version, about)]
 struct Cli {
     /// Robot servers, `HOST:PORT` or `HOST:PORT=LISTEN`.
-    #[arg(required_unless_present = "demo", value_parser = parse_robot)]
+    #[arg(required_unless_present_any = ["demo", "from_zenoh"], value_parser = parse_robot)]
     robots: Vec<(String, u16, Option<u16>)>,
 
     /// Relay the demo's robots instead: stage-worlds/multirobot.world simulated in-process by
@@ -61,6 +62,9 @@ struct Cli {
     /// protocol on this port (on --bind): ws://HOST:PORT.
     #[arg(long, value_name = "PORT")]
     foxglove: Option<u16>,
+
+    #[command(flatten)]
+    zenoh: zenoh::ZenohArgs,
 
     /// Stop after this many seconds (default: run until killed).
     #[arg(long, value_name = "SECONDS")]
@@ -156,20 +160,33 @@ fn run(cli: Cli) -> Result<()> {
         }
         None => None,
     };
-    let relay = Relay::start(RelayConfig {
-        routes,
-        bind: cli.bind,
-        commanders,
-        send_buffer: cli.send_buffer,
-        fronts,
-        ..RelayConfig::default()
-    })?;
+    let zenoh = cli.zenoh.start(cli.bind, commanders)?;
+    if let Some(front) = &zenoh.front {
+        fronts.push(front.tap());
+    }
+    // With --from-zenoh alone there is nothing to relay from here.
+    let relay = match routes.is_empty() && zenoh.bridge.is_some() {
+        true => None,
+        false => Some(Relay::start(RelayConfig {
+            routes,
+            bind: cli.bind,
+            commanders,
+            send_buffer: cli.send_buffer,
+            fronts,
+            fronts_command: cli.zenoh.fronts_command(),
+            ..RelayConfig::default()
+        })?),
+    };
+    let robots = relay.as_ref().map_or(&[][..], Relay::robots);
     if let Some(web) = &web {
-        for robot in relay.robots() {
+        for robot in robots {
             web.add_robot(robot.upstream().clone());
         }
     }
-    if demo.is_some() {
+    if let Some(relay) = &relay {
+        zenoh.add_robots(relay);
+    }
+    if let Some(relay) = relay.as_ref().filter(|_| demo.is_some()) {
         relay.wait_serving(Duration::from_secs(5));
         for robot in relay.robots() {
             let upstream = robot.upstream();
@@ -191,6 +208,7 @@ fn run(cli: Cli) -> Result<()> {
         },
     }
     drop(relay);
+    drop(zenoh);
     drop(web);
     drop(demo);
     drop(foxglove);

@@ -1,0 +1,205 @@
+//! The publishing side: a relay front ([`ZenohFront::tap`] goes in the relay's `fronts`) that
+//! puts every robot of the relay into Zenoh under `player/<site>/<host>_<port>/…` (see
+//! [`crate::keys`]), answers the `devices` and `replies` queryables from what it saw, keeps a
+//! liveliness token per connected robot, and passes commands from the one authorised
+//! controller to the robot's upstream client.
+
+use std::collections::HashMap;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex, MutexGuard};
+
+use player_proto::capture::Direction;
+use player_proto::client::{Client, ConnectionTap, Tap, TapEvent};
+use player_proto::wire::MsgType;
+use zenoh::Session;
+use zenoh::Wait;
+use zenoh::liveliness::LivelinessToken;
+use zenoh::pubsub::Subscriber;
+use zenoh::query::Queryable;
+
+use crate::cache::ReplyCache;
+use crate::error::ZenohError;
+use crate::keys::RobotKey;
+use crate::queue::{EventQueue, FrontEvent};
+
+/// Events waiting for the publishing task, at most: about a second of a busy relay's data.
+pub const DEFAULT_QUEUE: usize = 4096;
+
+/// How the front publishes.
+#[derive(Debug, Clone)]
+pub struct FrontConfig {
+    /// The `<site>` of every key.
+    pub site: String,
+    /// The identity whose commands reach the robots; `None`: nobody's do.
+    pub controller: Option<String>,
+    /// See [`DEFAULT_QUEUE`].
+    pub queue: usize,
+}
+
+impl FrontConfig {
+    pub fn new(site: &str) -> FrontConfig {
+        FrontConfig {
+            site: site.into(),
+            controller: None,
+            queue: DEFAULT_QUEUE,
+        }
+    }
+}
+
+/// One robot, as the front knows it.
+#[derive(Default)]
+pub(crate) struct RobotEntry {
+    /// The relay's upstream client, for commands and requests (see [`ZenohFront::add_robot`]).
+    pub client: Option<Arc<Client>>,
+    pub cache: ReplyCache,
+    pub connected: bool,
+    pub token: Option<LivelinessToken>,
+}
+
+/// What the publishing task, the taps and the Zenoh callbacks share.
+pub(crate) struct FrontShared {
+    pub config: FrontConfig,
+    pub session: Session,
+    pub queue: EventQueue,
+    pub robots: Mutex<HashMap<RobotKey, RobotEntry>>,
+    pub runtime: tokio::runtime::Handle,
+    /// Commands and requests refused (not the controller, stale, malformed).
+    pub refused: AtomicU64,
+}
+
+impl FrontShared {
+    pub fn robots(&self) -> MutexGuard<'_, HashMap<RobotKey, RobotEntry>> {
+        self.robots.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// The upstream client of a robot of this front that is connected now.
+    pub fn client(&self, robot: &RobotKey) -> Option<Arc<Client>> {
+        let robots = self.robots();
+        let entry = robots.get(robot)?;
+        entry.connected.then(|| entry.client.clone()).flatten()
+    }
+}
+
+/// A running front; stops publishing, and withdraws its robots, when dropped.
+pub struct ZenohFront {
+    shared: Arc<FrontShared>,
+    runtime: Option<tokio::runtime::Runtime>,
+    _commands: Subscriber<()>,
+    _queryables: Vec<Queryable<()>>,
+}
+
+impl ZenohFront {
+    /// Starts publishing on `session`; robots appear as the relay's taps report them.
+    pub fn start(session: Session, config: FrontConfig) -> Result<ZenohFront, ZenohError> {
+        let runtime = tokio::runtime::Builder::new_multi_thread()
+            .worker_threads(1)
+            .thread_name("zenoh-front")
+            .enable_all()
+            .build()?;
+        let shared = Arc::new(FrontShared {
+            queue: EventQueue::new(config.queue),
+            config,
+            session,
+            robots: Mutex::new(HashMap::new()),
+            runtime: runtime.handle().clone(),
+            refused: AtomicU64::new(0),
+        });
+        runtime.spawn(crate::publish::run(shared.clone()));
+        let commands = crate::commands::declare_commands(&shared)?;
+        let queryables = vec![
+            crate::commands::declare_requests(&shared)?,
+            crate::answers::declare_devices(&shared)?,
+            crate::answers::declare_replies(&shared)?,
+        ];
+        tracing::info!(site = %shared.config.site, controller = ?shared.config.controller,
+            "publishing the relay's robots in Zenoh");
+        Ok(ZenohFront {
+            shared,
+            runtime: Some(runtime),
+            _commands: commands,
+            _queryables: queryables,
+        })
+    }
+
+    /// The tap to put in `RelayConfig::fronts`.
+    pub fn tap(&self) -> Tap {
+        let shared = self.shared.clone();
+        Arc::new(move |host: &str, port: u16| -> ConnectionTap {
+            let robot = RobotKey::new(&shared.config.site, host, port);
+            let shared = shared.clone();
+            Arc::new(move |time, event| {
+                let event = match event {
+                    TapEvent::Opened(_) => FrontEvent::Opened(robot.clone()),
+                    TapEvent::Closed(why) => FrontEvent::Closed(robot.clone(), why.into()),
+                    TapEvent::Frame {
+                        direction,
+                        header,
+                        body,
+                    } => {
+                        // Only requests matter of what the relay sends: their replies are
+                        // paired with them in the cache.
+                        if direction == Direction::ClientToServer && header.msg_type != MsgType::Req
+                        {
+                            return;
+                        }
+                        FrontEvent::Frame {
+                            robot: robot.clone(),
+                            time,
+                            direction,
+                            header: *header,
+                            body: body.clone(),
+                        }
+                    }
+                };
+                shared.queue.push(event);
+            })
+        })
+    }
+
+    /// Lets commands reach this robot through its relay client (whose host and port name it).
+    pub fn add_robot(&self, client: Arc<Client>) {
+        let robot = RobotKey::new(&self.shared.config.site, client.host(), client.port());
+        self.shared.robots().entry(robot).or_default().client = Some(client);
+    }
+
+    /// The key of a robot of this front.
+    pub fn robot_key(&self, host: &str, port: u16) -> RobotKey {
+        RobotKey::new(&self.shared.config.site, host, port)
+    }
+
+    /// DATA messages dropped because Zenoh could not take them fast enough.
+    pub fn dropped(&self) -> u64 {
+        self.shared.queue.dropped()
+    }
+
+    /// Commands and requests refused so far.
+    pub fn refused(&self) -> u64 {
+        self.shared.refused.load(Ordering::Relaxed)
+    }
+
+    /// Robots announced (connected, described, with a liveliness token) now.
+    pub fn announced(&self) -> usize {
+        self.shared
+            .robots()
+            .values()
+            .filter(|r| r.token.is_some())
+            .count()
+    }
+}
+
+impl Drop for ZenohFront {
+    fn drop(&mut self) {
+        if let Some(runtime) = self.runtime.take() {
+            runtime.shutdown_background();
+        }
+        let tokens: Vec<_> = self
+            .shared
+            .robots()
+            .values_mut()
+            .filter_map(|r| r.token.take())
+            .collect();
+        for token in tokens {
+            let _ = token.undeclare().wait();
+        }
+    }
+}
