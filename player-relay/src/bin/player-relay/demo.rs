@@ -1,5 +1,5 @@
-//! `player-relay --demo`: the demo's world served in-process, so that one command shows
-//! robots in a browser (`--web`) or in Foxglove with nothing else running.
+//! `player-relay --demo` and `--world FILE`: a world served in-process, so that one command
+//! shows robots in a browser (`--web`), in Foxglove or in Zenoh with nothing else running.
 
 use std::path::{Path, PathBuf};
 
@@ -11,7 +11,7 @@ use player_sim::world::World;
 
 /// The demo's world: from the current directory when it is a checkout, else from the
 /// checkout this program was built from.
-fn world_file() -> PathBuf {
+pub fn world_file() -> PathBuf {
     let here = Path::new("stage-worlds/multirobot.world");
     if here.exists() {
         return here.to_path_buf();
@@ -23,9 +23,9 @@ fn world_file() -> PathBuf {
     .to_path_buf()
 }
 
-/// Serves the demo's robots on free local ports.
-pub fn serve() -> Result<Running> {
-    let path = world_file();
+/// Serves the robots of the world at `path` on free local ports.
+pub fn serve(path: &Path) -> Result<Running> {
+    let path = path.to_path_buf();
     let world = World::load(&path).with_context(|| format!("loading {}", path.display()))?;
     let mut ignored = Vec::new();
     let devices = devices_beside(&path, &world, &mut ignored)?;
@@ -37,6 +37,10 @@ pub fn serve() -> Result<Running> {
         ..ServeOptions::default()
     };
     let running = player_sim::serve::serve(Simulation::new(world), devices, options)?;
-    eprintln!("demo: {} robots of {}", running.ports.len(), path.display());
+    eprintln!(
+        "simulating {} robots of {}",
+        running.ports.len(),
+        path.display()
+    );
     Ok(running)
 }

@@ -24,13 +24,18 @@ const DEFAULT_PORT_OFFSET: u16 = 1000;
 #[command(version, about)]
 struct Cli {
     /// Robot servers, `HOST:PORT` or `HOST:PORT=LISTEN`.
-    #[arg(required_unless_present_any = ["demo", "from_zenoh"], value_parser = parse_robot)]
+    #[arg(required_unless_present_any = ["demo", "world", "from_zenoh"], value_parser = parse_robot)]
     robots: Vec<(String, u16, Option<u16>)>,
 
     /// Relay the demo's robots instead: stage-worlds/multirobot.world simulated in-process by
     /// player-sim on free ports (no Player server needed).
     #[arg(long, conflicts_with = "robots")]
     demo: bool,
+
+    /// Relay the robots of this Stage world, simulated in-process by player-sim on free ports
+    /// (`--demo` is stage-worlds/multirobot.world).
+    #[arg(long, value_name = "WORLD", conflicts_with_all = ["robots", "demo"])]
+    world: Option<std::path::PathBuf>,
 
     /// Address observers connect to (0.0.0.0 for every interface).
     #[arg(long, default_value = "127.0.0.1")]
@@ -102,7 +107,11 @@ fn run(cli: Cli) -> Result<()> {
     if cli.seconds.is_some_and(|s| !(0.0..=1e9).contains(&s)) {
         bail!("--seconds must be from 0 to 1e9");
     }
-    let demo = cli.demo.then(demo::serve).transpose()?;
+    let demo = match (&cli.world, cli.demo) {
+        (Some(world), _) => Some(demo::serve(world)?),
+        (None, true) => Some(demo::serve(&demo::world_file())?),
+        (None, false) => None,
+    };
     let mut robots = cli.robots;
     if let Some(demo) = &demo {
         // The demo's ports are wherever the system put them: observers get free ports too.
