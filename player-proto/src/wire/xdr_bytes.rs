@@ -4,7 +4,6 @@
 //! received body where possible.
 
 use bytes::{BufMut, Bytes};
-use nom::number::complete::be_u32;
 
 use super::strings::{Opaque, PlayerString};
 use super::xdr::{Xdr, XdrFault, XdrResult, fail};
@@ -18,8 +17,8 @@ pub const fn pad4(len: usize) -> usize {
 /// Decodes a counted byte array (`uint32_t x_count; uint8_t *x;`): count, length, packed
 /// bytes, padding. The bytes come back as a zero-copy slice of `body` when possible.
 pub fn decode_counted_bytes<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, Bytes> {
-    let (after_count, count) = be_u32(input)?;
-    let (rest, length) = be_u32(after_count)?;
+    let (after_count, count) = u32::decode(input, body)?;
+    let (rest, length) = u32::decode(after_count, body)?;
     if length > count {
         return fail(after_count, XdrFault::LengthAboveCount { count, length });
     }
