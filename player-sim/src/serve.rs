@@ -11,8 +11,10 @@ use player_proto::server::{Server, ServerConfig, ServerError};
 use player_proto::wire::DevAddr;
 
 use crate::devices::SimDevice;
-use crate::served::ServedDevice;
+use crate::served::{ServedDevice, devices_beside};
 use crate::sim::Simulation;
+use crate::world::World;
+use crate::worldfile::WorldFileError;
 
 /// How a simulation is served.
 #[derive(Debug, Clone)]
@@ -75,6 +77,35 @@ impl Drop for Running {
     fn drop(&mut self) {
         self.stop();
     }
+}
+
+/// Why a world file could not be served.
+#[derive(Debug, thiserror::Error)]
+pub enum ServeWorldError {
+    #[error(transparent)]
+    World(#[from] WorldFileError),
+    #[error(transparent)]
+    Serve(#[from] ServerError),
+}
+
+/// Serves the world at `path` with the devices its .cfg files name
+/// ([`devices_beside`]). A configured port listed in `moved` is served on the port it maps
+/// to (a server restarted where it was); what the files ask that is not simulated is added
+/// to `ignored`.
+pub fn serve_world_file(
+    path: &std::path::Path,
+    options: ServeOptions,
+    moved: &[(u16, u16)],
+    ignored: &mut Vec<String>,
+) -> Result<Running, ServeWorldError> {
+    let world = World::load(path)?;
+    let mut devices = devices_beside(path, &world, ignored)?;
+    for device in &mut devices {
+        if let Some(&(_, actual)) = moved.iter().find(|(c, _)| *c == device.port) {
+            device.port = actual;
+        }
+    }
+    Ok(serve(Simulation::new(world), devices, options)?)
 }
 
 /// Starts serving `sim` with `devices`.

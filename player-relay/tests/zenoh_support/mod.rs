@@ -12,10 +12,7 @@ use player_proto::client::{Backoff, Client, ClientOptions};
 use player_proto::interfaces::laser::Laser;
 use player_proto::wire::{DevAddr, Interface};
 use player_relay::{Relay, RelayConfig, Route};
-use player_sim::serve::{Running, ServeOptions, serve};
-use player_sim::served::devices_beside;
-use player_sim::sim::Simulation;
-use player_sim::world::World;
+use player_sim::serve::{Running, ServeOptions, serve_world_file};
 use player_zenoh::zenoh::Session;
 use player_zenoh::{FrontConfig, Mode, ZenohFront, ZenohOptions};
 
@@ -52,20 +49,12 @@ pub fn serve_world(world: &str, ports: Option<&[(u16, u16)]>) -> Running {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../stage-worlds")
         .join(world);
-    let loaded = World::load(&path).expect("the world loads");
-    let mut devices = devices_beside(&path, &loaded, &mut Vec::new()).expect("its .cfg loads");
-    if let Some(ports) = ports {
-        for device in &mut devices {
-            if let Some((_, actual)) = ports.iter().find(|(c, _)| *c == device.port) {
-                device.port = *actual;
-            }
-        }
-    }
     let options = ServeOptions {
         free_ports: ports.is_none(),
         ..ServeOptions::default()
     };
-    serve(Simulation::new(loaded), devices, options).expect("the world is served")
+    serve_world_file(&path, options, ports.unwrap_or_default(), &mut Vec::new())
+        .expect("the world is served")
 }
 
 /// Client options that notice and retry quickly.

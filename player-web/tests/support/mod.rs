@@ -10,10 +10,7 @@ use std::time::{Duration, Instant};
 
 use player_proto::server::Commanders;
 use player_relay::{Relay, RelayConfig, Route};
-use player_sim::serve::{Running, ServeOptions, serve};
-use player_sim::served::devices_beside;
-use player_sim::sim::Simulation;
-use player_sim::world::World;
+use player_sim::serve::{Running, ServeOptions, serve_world_file};
 use player_web::WebFront;
 
 pub const LOCALHOST: IpAddr = IpAddr::V4(Ipv4Addr::LOCALHOST);
@@ -25,21 +22,15 @@ pub fn repo_root() -> PathBuf {
 /// Serves `world` (from stage-worlds/) with its .cfg files; every port free, or each robot on
 /// the port `ports` gives for its configured one (a server restarted on its old port).
 pub fn serve_world(world: &str, ports: Option<&[(u16, u16)]>) -> Running {
-    let path = repo_root().join("stage-worlds").join(world);
-    let loaded = World::load(&path).expect("the world loads");
-    let mut devices = devices_beside(&path, &loaded, &mut Vec::new()).expect("its .cfg loads");
-    if let Some(ports) = ports {
-        for device in &mut devices {
-            if let Some((_, actual)) = ports.iter().find(|(c, _)| *c == device.port) {
-                device.port = *actual;
-            }
-        }
-    }
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../stage-worlds")
+        .join(world);
     let options = ServeOptions {
         free_ports: ports.is_none(),
         ..ServeOptions::default()
     };
-    serve(Simulation::new(loaded), devices, options).expect("the world is served")
+    serve_world_file(&path, options, ports.unwrap_or_default(), &mut Vec::new())
+        .expect("the world is served")
 }
 
 /// The relay in front of `running`'s robots, with the web page.

@@ -4,10 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
-use player_sim::serve::{Running, ServeOptions};
-use player_sim::served::devices_beside;
-use player_sim::sim::Simulation;
-use player_sim::world::World;
+use player_sim::serve::{Running, ServeOptions, serve_world_file};
 
 /// The demo's world: from the current directory when it is a checkout, else from the
 /// checkout this program was built from.
@@ -25,18 +22,16 @@ pub fn world_file() -> PathBuf {
 
 /// Serves the robots of the world at `path` on free local ports.
 pub fn serve(path: &Path) -> Result<Running> {
-    let path = path.to_path_buf();
-    let world = World::load(&path).with_context(|| format!("loading {}", path.display()))?;
-    let mut ignored = Vec::new();
-    let devices = devices_beside(&path, &world, &mut ignored)?;
-    for note in ignored {
-        tracing::info!("{}: {note}", path.display());
-    }
     let options = ServeOptions {
         free_ports: true,
         ..ServeOptions::default()
     };
-    let running = player_sim::serve::serve(Simulation::new(world), devices, options)?;
+    let mut ignored = Vec::new();
+    let running = serve_world_file(path, options, &[], &mut ignored)
+        .with_context(|| format!("simulating {}", path.display()))?;
+    for note in ignored {
+        tracing::info!("{}: {note}", path.display());
+    }
     eprintln!(
         "simulating {} robots of {}",
         running.ports.len(),
