@@ -236,6 +236,11 @@ fn a_robot_at_site_a_is_watched_and_driven_from_site_c_through_a_router_at_b() {
             "tcp/0.0.0.0:7447",
         ],
     );
+    // Zenoh clients give up when their router is not there yet: start them once it listens.
+    let listening = wait_until(Duration::from_secs(30), || {
+        TcpStream::connect((B_TO_C, 7447)).is_ok()
+    });
+    assert!(listening.is_some(), "the router at B listens within 30 s");
     // A: the robot, published on site "a"; only "teacher" may drive it.
     hosts.relay(
         Some(&a),
