@@ -54,8 +54,15 @@ async function draw(page, out) {
     for (const [name, robot] of w.robots) {
       const d = robot.devices.get("position2d:0");
       const [sx, sy] = w.screenOf(name, 0);
-      const pixel = [...ctx.getImageData(Math.round(sx * ratio), Math.round(sy * ratio), 1, 1).data].slice(0, 3);
-      seen[name] = { pose: [d.State.pos.px, d.State.pos.py, d.State.pos.pa], css: [sx + box.left, sy + box.top], pixel, maps: robot.maps.size };
+      // The body's colour around its centre (the heading line is drawn white through it).
+      const pixels = [];
+      for (const dx of [-4, 0, 4]) {
+        for (const dy of [-4, 0, 4]) {
+          const x = Math.round(sx * ratio) + dx, y = Math.round(sy * ratio) + dy;
+          pixels.push([...ctx.getImageData(x, y, 1, 1).data].slice(0, 3));
+        }
+      }
+      seen[name] = { pose: [d.State.pos.px, d.State.pos.py, d.State.pos.pa], css: [sx + box.left, sy + box.top], pixels, maps: robot.maps.size };
     }
     return seen;
   });
