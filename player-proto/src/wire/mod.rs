@@ -10,6 +10,7 @@ mod serde_impls;
 pub mod strings;
 pub mod xdr;
 pub mod xdr_bytes;
+mod xdr_numbers;
 
 pub use address::{AddrParseError, DevAddr};
 pub use banner::{BANNER_LEN, Banner, BannerError};
