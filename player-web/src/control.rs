@@ -90,11 +90,13 @@ impl Control {
             .get(&robot)
             .cloned()
             .ok_or_else(|| format!("no robot {robot:?} here"))?;
-        if !client
-            .devices()
-            .iter()
-            .any(|d| (d.addr.interf, d.addr.index) == (device.interf, device.index))
-        {
+        let devices = client.devices();
+        let has = |interf: Interface| {
+            devices
+                .iter()
+                .any(|d| (d.addr.interf, d.addr.index) == (interf, device.index))
+        };
+        if !has(device.interf) {
             return Err(format!("{robot} has no {device}"));
         }
         let (addr, body) = match command {
@@ -109,11 +111,7 @@ impl Control {
                 (device, Body::Position2d(Position2d::Velocity(command)))
             }
             FromPage::Goal { goal, .. } => {
-                let planner = client
-                    .devices()
-                    .iter()
-                    .any(|d| d.addr.interf == Interface::PLANNER && d.addr.index == device.index);
-                if planner {
+                if has(Interface::PLANNER) {
                     let addr = DevAddr::local(Interface::PLANNER, device.index);
                     (addr, Body::Planner(Planner::Goal(PlannerCmd { goal })))
                 } else {
