@@ -1,194 +1,29 @@
 //! Four hosts on one machine, in network namespaces joined by veth pairs: site A simulates a
 //! robot and publishes it into Zenoh (`player-relay --world … --zenoh`), host B is a Zenoh
 //! router (`player-relay --from-zenoh --zenoh-mode router`), this test's own namespace is
-//! observer site C (`player-relay --from-zenoh`, a client of the router), where plain Player
-//! clients watch and drive the robot, and site D a second observer site whose commands the
-//! robot refuses (D is not its controller; its clients reach D's relay routed through B). Then the link between B and C is cut for 5 s and healed:
-//! C's observers resume, and a command sent during the cut is not replayed.
+//! observer site C, and site D a second observer site whose commands the robot refuses (D is
+//! not its controller; its clients reach D's relay routed through B). At C the robot is
+//! watched by `pv3d --zenoh` (recording what it gets), by `playerprint` and by Player clients
+//! of a `player-relay --from-zenoh`, and driven by those clients and by a second pv3d's
+//! spoken "go to". Then the link between B and C is cut for 5 s and healed: C's observers
+//! resume, and a command sent during the cut is not replayed.
 //!
 //! Needs root (`ip netns`), as CI has; anywhere else it says so and passes without running.
 
-use std::net::TcpStream;
-use std::process::{Child, Command, Stdio};
-use std::time::{Duration, Instant};
+mod netns_hosts;
 
+use std::io::{BufRead, BufReader};
+use std::net::TcpStream;
+use std::process::Stdio;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
+
+use netns_hosts::*;
 use player_proto::client::{Client, ClientOptions};
 use player_proto::interfaces::common::Pose2d;
 use player_proto::interfaces::position2d::{Position2d, Position2dCmdVel};
-use player_proto::wire::Interface;
-
-const RELAY: &str = env!("CARGO_BIN_EXE_player-relay");
-
-/// Addresses: A–B on 10.77.1.0/24, B–C on 10.77.2.0/24 (C is this namespace).
-const A: &str = "10.77.1.1";
-const B_TO_A: &str = "10.77.1.2";
-const B_TO_C: &str = "10.77.2.1";
-const C: &str = "10.77.2.2";
-/// B–D on 10.77.3.0/24; B forwards between C and D so that this namespace reaches D's relay.
-const B_TO_D: &str = "10.77.3.1";
-const D: &str = "10.77.3.2";
-
-fn ip(args: &[&str]) {
-    let status = Command::new("ip").args(args).status().expect("ip runs");
-    assert!(status.success(), "ip {}", args.join(" "));
-}
-
-/// The namespaces and links, and the processes in them; all removed when dropped.
-struct Hosts {
-    a: String,
-    b: String,
-    d: String,
-    /// B's end of the B–C link (cut and healed by the test).
-    b_to_c: String,
-    c_end: String,
-    children: Vec<Child>,
-}
-
-impl Hosts {
-    fn build() -> Hosts {
-        let tag = std::process::id() % 100_000;
-        let hosts = Hosts {
-            a: format!("pz-a-{tag}"),
-            b: format!("pz-b-{tag}"),
-            d: format!("pz-d-{tag}"),
-            b_to_c: format!("pzbc{tag}"),
-            c_end: format!("pzc{tag}"),
-            children: Vec::new(),
-        };
-        let (a_end, b_to_a) = (format!("pza{tag}"), format!("pzba{tag}"));
-        ip(&["netns", "add", &hosts.a]);
-        ip(&["netns", "add", &hosts.b]);
-        ip(&["netns", "add", &hosts.d]);
-        let (d_end, b_to_d) = (format!("pzd{tag}"), format!("pzbd{tag}"));
-        ip(&[
-            "link", "add", &d_end, "type", "veth", "peer", "name", &b_to_d,
-        ]);
-        ip(&["link", "set", &d_end, "netns", &hosts.d]);
-        ip(&["link", "set", &b_to_d, "netns", &hosts.b]);
-        ip(&[
-            "link", "add", &a_end, "type", "veth", "peer", "name", &b_to_a,
-        ]);
-        ip(&["link", "set", &a_end, "netns", &hosts.a]);
-        ip(&["link", "set", &b_to_a, "netns", &hosts.b]);
-        ip(&[
-            "link",
-            "add",
-            &hosts.c_end,
-            "type",
-            "veth",
-            "peer",
-            "name",
-            &hosts.b_to_c,
-        ]);
-        ip(&["link", "set", &hosts.b_to_c, "netns", &hosts.b]);
-        for (ns, dev, addr) in [
-            (&hosts.a, &a_end, A),
-            (&hosts.b, &b_to_a, B_TO_A),
-            (&hosts.b, &hosts.b_to_c, B_TO_C),
-            (&hosts.b, &b_to_d, B_TO_D),
-            (&hosts.d, &d_end, D),
-        ] {
-            ip(&["-n", ns, "addr", "add", &format!("{addr}/24"), "dev", dev]);
-            ip(&["-n", ns, "link", "set", dev, "up"]);
-            ip(&["-n", ns, "link", "set", "lo", "up"]);
-        }
-        ip(&["addr", "add", &format!("{C}/24"), "dev", &hosts.c_end]);
-        ip(&["link", "set", &hosts.c_end, "up"]);
-        // C reaches D's relay through B, as one site reaches another through its router.
-        ip(&["route", "add", "10.77.3.0/24", "via", B_TO_C]);
-        ip(&["-n", &hosts.d, "route", "add", "default", "via", B_TO_D]);
-        let forward = Command::new("ip")
-            .args([
-                "netns",
-                "exec",
-                &hosts.b,
-                "sysctl",
-                "-qw",
-                "net.ipv4.ip_forward=1",
-            ])
-            .status()
-            .expect("sysctl runs");
-        assert!(forward.success(), "B forwards");
-        hosts
-    }
-
-    /// Runs the relay with `args` in namespace `ns` (this one with `None`).
-    fn relay(&mut self, ns: Option<&str>, args: &[&str]) {
-        let mut command = match ns {
-            Some(ns) => {
-                let mut c = Command::new("ip");
-                c.args(["netns", "exec", ns, RELAY]);
-                c
-            }
-            None => Command::new(RELAY),
-        };
-        let child = command
-            .args(args)
-            .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-            .stdin(Stdio::null())
-            .stdout(Stdio::null())
-            .env("RUST_LOG", "warn")
-            .spawn()
-            .expect("the relay starts");
-        self.children.push(child);
-    }
-
-    fn set_b_to_c(&self, up: bool) {
-        ip(&[
-            "-n",
-            &self.b,
-            "link",
-            "set",
-            &self.b_to_c,
-            if up { "up" } else { "down" },
-        ]);
-    }
-}
-
-impl Drop for Hosts {
-    fn drop(&mut self) {
-        for child in &mut self.children {
-            let _ = child.kill();
-            let _ = child.wait();
-        }
-        let _ = Command::new("ip")
-            .args(["link", "del", &self.c_end])
-            .status();
-        for ns in [&self.a, &self.b, &self.d] {
-            let _ = Command::new("ip").args(["netns", "del", ns]).status();
-        }
-    }
-}
-
-fn is_root() -> bool {
-    std::fs::read_to_string("/proc/self/status")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("Uid:"))
-                .map(|l| l.split_whitespace().nth(1) == Some("0"))
-        })
-        .unwrap_or(false)
-}
-
-/// A free port on this namespace's loopback, for C's Player server.
-fn free_port() -> u16 {
-    std::net::TcpListener::bind("127.0.0.1:0")
-        .and_then(|l| l.local_addr())
-        .map(|a| a.port())
-        .expect("a free port")
-}
-
-fn wait_until(timeout: Duration, mut done: impl FnMut() -> bool) -> Option<Duration> {
-    let start = Instant::now();
-    while start.elapsed() < timeout {
-        if done() {
-            return Some(start.elapsed());
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    None
-}
+use player_proto::recording::{Event, RecordingReader};
+use player_proto::wire::{Interface, MsgType};
 
 fn pose(robot: &Client) -> Option<(f64, f64)> {
     robot
@@ -214,6 +49,47 @@ fn velocity(robot: &Client, vx: f64) {
     robot
         .try_command(addr, Position2d::Velocity(go))
         .expect("a command leaves");
+}
+
+/// Unix time in nanoseconds, the recordings' clock.
+fn now_ns() -> u64 {
+    SystemTime::now()
+        .duration_since(UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos() as u64)
+}
+
+/// The receive times (Unix ns) of the laser scans in a pv3d recording.
+fn recorded_scan_times(path: &std::path::Path) -> Vec<u64> {
+    let file = std::fs::File::open(path).expect("pv3d wrote its recording");
+    let reader = RecordingReader::new(std::io::BufReader::new(file)).expect("a recording");
+    reader
+        .filter_map(Result::ok)
+        .filter_map(|record| match record.event {
+            Event::Message { header, .. }
+                if header.msg_type == MsgType::Data && header.addr.interf == Interface::LASER =>
+            {
+                Some(record.time_ns)
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+/// playerprint's lines as they come, with their arrival time (Unix ns).
+fn print_lines(program: &mut Program) -> Arc<Mutex<Vec<(u64, String)>>> {
+    let lines = Arc::new(Mutex::new(Vec::new()));
+    let out = program
+        .0
+        .stdout
+        .take()
+        .expect("playerprint's output is piped");
+    let kept = lines.clone();
+    std::thread::spawn(move || {
+        for line in BufReader::new(out).lines().map_while(Result::ok) {
+            kept.lock().unwrap().push((now_ns(), line));
+        }
+    });
+    lines
 }
 
 #[test]
@@ -315,6 +191,51 @@ fn a_robot_at_site_a_is_watched_and_driven_from_site_c_through_a_router_at_b() {
         served.is_some(),
         "site D serves site A's robot on {D}:7665 within 30 s"
     );
+    // pv3d at C, straight from Zenoh through the router, watching and recording all along;
+    // and playerprint, a plain Player program, on C's relay.
+    let scratch = std::env::temp_dir().join(format!("zenoh-hosts-{}", std::process::id()));
+    std::fs::create_dir_all(&scratch).unwrap();
+    let recording = scratch.join("pv3d-at-c.prec");
+    let router_from_c = format!("tcp/{B_TO_C}:7447");
+    let pv3d = program("pv3d");
+    let mut watcher = Program(
+        hosts
+            .command(
+                None,
+                &pv3d,
+                &[
+                    "--zenoh",
+                    &router_from_c,
+                    "--zenoh-site",
+                    "a",
+                    "--connect-timeout",
+                    "20",
+                    "--observe",
+                    "--headless",
+                    "--quit-after",
+                    "45",
+                    "--record",
+                    recording.to_str().unwrap(),
+                ],
+            )
+            .stdout(Stdio::null())
+            .spawn()
+            .expect("pv3d starts"),
+    );
+    let mut printer = Program(
+        hosts
+            .command(
+                None,
+                &program("playerprint"),
+                &["--host", "127.0.0.1", "--port", &port_text, "position2d:0"],
+            )
+            .stdout(Stdio::piped())
+            .spawn()
+            .expect("playerprint starts"),
+    );
+    let printed = print_lines(&mut printer);
+    let watching_since = now_ns();
+
     let pupil = Client::connect(D, 7665, ClientOptions::default()).expect("a Player client of D");
     pupil.position2d(0).subscribe().expect("position2d at D");
     pupil.laser(0).subscribe().expect("laser at D");
@@ -353,6 +274,13 @@ fn a_robot_at_site_a_is_watched_and_driven_from_site_c_through_a_router_at_b() {
     assert!(driven.is_some(), "site C drove the robot at site A");
     std::thread::sleep(Duration::from_millis(500));
 
+    let printed_before_cut = printed.lock().unwrap().len();
+    assert!(
+        printed_before_cut > 10,
+        "playerprint at C printed the robot's poses: {:?}",
+        printed.lock().unwrap().last()
+    );
+
     // The cut: B–C down for 5 s. A command sent meanwhile must not move the robot once healed.
     hosts.set_b_to_c(false);
     std::thread::sleep(Duration::from_millis(300));
@@ -361,6 +289,7 @@ fn a_robot_at_site_a_is_watched_and_driven_from_site_c_through_a_router_at_b() {
     std::thread::sleep(Duration::from_secs(5));
     let seen_before_heal = newest_scan_seq(&robot);
     hosts.set_b_to_c(true);
+    let healed_at = now_ns();
     let resumed = wait_until(Duration::from_secs(10), || {
         newest_scan_seq(&robot) != seen_before_heal
     });
@@ -379,4 +308,96 @@ fn a_robot_at_site_a_is_watched_and_driven_from_site_c_through_a_router_at_b() {
         resumed < Duration::from_secs(2),
         "resumed within 2 s: {resumed:?}"
     );
+    let printed_after_heal = printed
+        .lock()
+        .unwrap()
+        .iter()
+        .filter(|(at, _)| *at > healed_at)
+        .count();
+    assert!(
+        printed_after_heal > 5,
+        "playerprint at C prints again after the heal ({printed_after_heal} lines)"
+    );
+
+    // pv3d saw the robot before the cut and again after it; its recording says so.
+    assert!(
+        watcher.wait_exit(Duration::from_secs(60)),
+        "pv3d --zenoh at C ran to its --quit-after and exited cleanly"
+    );
+    let scans = recorded_scan_times(&recording);
+    let before = scans
+        .iter()
+        .filter(|&&t| t < healed_at - 5_000_000_000)
+        .count();
+    let after: Vec<_> = scans.iter().filter(|&&t| t > healed_at).collect();
+    eprintln!(
+        "pv3d at C recorded {} scans, {before} before the cut, {} after the heal (first {:.2} s after it)",
+        scans.len(),
+        after.len(),
+        after
+            .first()
+            .map_or(f64::NAN, |&&t| (t - healed_at) as f64 / 1e9)
+    );
+    assert!(
+        scans.first().is_some_and(|&t| t > watching_since) && before > 10,
+        "pv3d at C got the robot's scans from Zenoh before the cut ({before})"
+    );
+    assert!(
+        after.len() > 10
+            && after
+                .first()
+                .is_some_and(|&&t| t - healed_at < 2_000_000_000),
+        "pv3d at C got scans again within 2 s of the heal ({} after it)",
+        after.len()
+    );
+
+    // A second pv3d at C drives the robot, as a person would: "all robots go to point x y".
+    let from = pose(&robot).unwrap();
+    let goal = (from.0 + 1.0, from.1);
+    let script = scratch.join("drive.txt");
+    std::fs::write(
+        &script,
+        format!("1 all robots go to point {} {}\n", goal.0, goal.1),
+    )
+    .unwrap();
+    let mut driver = Program(
+        hosts
+            .command(
+                None,
+                &pv3d,
+                &[
+                    "--zenoh",
+                    &router_from_c,
+                    "--zenoh-site",
+                    "a",
+                    "--zenoh-id",
+                    "teacher",
+                    "--connect-timeout",
+                    "20",
+                    "--headless",
+                    "--quit-after",
+                    "12",
+                    "--script",
+                    script.to_str().unwrap(),
+                ],
+            )
+            .stdout(Stdio::null())
+            .spawn()
+            .expect("pv3d starts"),
+    );
+    let distance = |p: (f64, f64)| (p.0 - goal.0).hypot(p.1 - goal.1);
+    let reached = wait_until(Duration::from_secs(40), || {
+        pose(&robot).is_some_and(|p| distance(p) < 0.3)
+    });
+    assert!(
+        reached.is_some(),
+        "pv3d's \"go to\" at C brought the robot at A to {goal:?}: from {from:?}, now {:?}",
+        pose(&robot)
+    );
+    assert!(
+        driver.wait_exit(Duration::from_secs(40)),
+        "the driving pv3d exited cleanly"
+    );
+    drop(printer);
+    let _ = std::fs::remove_dir_all(&scratch);
 }

@@ -26,6 +26,13 @@ pub fn world_file() -> PathBuf {
     demo_root().join("stage-worlds/multirobot.world")
 }
 
+/// Every robot's position2d, lasers, sonars, fiducials, cameras and batteries, whatever
+/// servers it is given: what `--world` shows of a world with no composition of its own, and
+/// `--zenoh` of the robots it finds.
+pub fn any_robots_composition_file() -> PathBuf {
+    demo_root().join("configs/stage-world.pv3d.xml")
+}
+
 /// The composition for a world given with `--world` and no composition: the world's own,
 /// `configs/<world>.pv3d.xml`, when there is one that loads (`navigation.world` gets its map,
 /// localizer and planner, `classroom.world` its zones; the servers it names are the world's
@@ -43,7 +50,7 @@ pub fn world_composition_file(world: &Path) -> PathBuf {
         Composition::load_files(std::slice::from_ref(path), &ParserRegistry::standard()).is_ok()
     };
     own.filter(loads)
-        .unwrap_or_else(|| demo_root().join("configs/stage-world.pv3d.xml"))
+        .unwrap_or_else(any_robots_composition_file)
 }
 
 #[cfg(test)]

@@ -14,3 +14,4 @@ pub mod embedded_world;
 pub mod headless;
 pub mod render;
 pub mod robots;
+pub mod zenoh_robots;

@@ -15,6 +15,7 @@ use pv3d::embedded_world::serve_world;
 use pv3d::headless::{HeadlessRun, ScreenshotRun, run_headless, write_screenshot};
 use pv3d::render::Projection;
 use pv3d::robots::recording::Recording;
+use pv3d::zenoh_robots::{ZenohSource, open_zenoh_robots};
 
 /// Player Viewer 3D: compose Player devices into a 3D viewer and tele-operation tool.
 #[derive(Parser, Debug)]
@@ -33,6 +34,26 @@ struct Cli {
     /// configs/stage-world.pv3d.xml, unless compositions are given.
     #[arg(long, value_name = "WORLD", conflicts_with = "demo")]
     world: Option<PathBuf>,
+
+    /// Open the robots found in Zenoh through this endpoint (a router's or a robot relay's,
+    /// e.g. tcp/10.0.0.1:7447; repeatable): each is served on a free loopback port, as
+    /// `player-relay --from-zenoh` does, and shown with configs/stage-world.pv3d.xml unless
+    /// compositions are given.
+    #[arg(long, value_name = "ENDPOINT", conflicts_with_all = ["demo", "world"])]
+    zenoh: Vec<String>,
+
+    /// With --zenoh: the site whose robots are opened (every site by default).
+    #[arg(long, value_name = "NAME", default_value = "*", requires = "zenoh")]
+    zenoh_site: String,
+
+    /// With --zenoh: the identity sent with commands; the robots' relays execute those of
+    /// their `--zenoh-controller` only (default: this Zenoh session's id).
+    #[arg(long, value_name = "ID", requires = "zenoh")]
+    zenoh_id: Option<String>,
+
+    /// With --zenoh: Zenoh's own JSON5 configuration file, amended by the endpoints.
+    #[arg(long, value_name = "FILE", requires = "zenoh")]
+    zenoh_config: Option<PathBuf>,
 
     /// Record every message of every server to this file (docs/RECORDING-FORMAT.md): MCAP,
     /// with Foxglove's schemas, when it is named `*.mcap`; replay it with `player-sim --replay
@@ -87,7 +108,8 @@ struct Cli {
     #[arg(long)]
     frame_stats: bool,
 
-    /// Seconds to wait for the Player servers' device lists before building the scene.
+    /// Seconds to wait for the Player servers' device lists before building the scene (and,
+    /// with --zenoh, for the first robot to be found).
     #[arg(long, default_value_t = 3.0, value_name = "SECONDS")]
     connect_timeout: f64,
 
@@ -141,6 +163,9 @@ fn main() -> Result<()> {
     if let Some(world) = cli.world.as_deref().filter(|_| cli.files.is_empty()) {
         cli.files.push(pv3d::demo::world_composition_file(world));
     }
+    if !cli.zenoh.is_empty() && cli.files.is_empty() {
+        cli.files.push(pv3d::demo::any_robots_composition_file());
+    }
     if !(0.0..=1000.0).contains(&cli.speedup) {
         bail!("--speedup must be from 0 (as fast as possible) to 1000");
     }
@@ -186,6 +211,19 @@ fn main() -> Result<()> {
             Some(serve_world(world, &mut composition, options)?)
         }
         None => None,
+    };
+    let _zenoh = match cli.zenoh.is_empty() {
+        false => {
+            let source = ZenohSource {
+                connect: cli.zenoh.clone(),
+                config_file: cli.zenoh_config.clone(),
+                site: cli.zenoh_site.clone(),
+                identity: cli.zenoh_id.clone(),
+            };
+            let wait = Duration::from_secs_f64(cli.connect_timeout);
+            Some(open_zenoh_robots(&source, &mut composition, wait)?)
+        }
+        true => None,
     };
     let waker = UiWaker::default();
     // Declared before the viewer, so dropped after it: the robots hold the recording's tap.
