@@ -3,6 +3,7 @@
 //!
 //! ```sh
 //! cargo run --release -p bench --bin relay
+//! cargo run --release -p bench --bin relay -- --zenoh     # and through Zenoh, 4 remote bridges
 //! ```
 //!
 //! The robots and the relay are child processes (this binary again, with `--role`), so that
@@ -15,6 +16,9 @@
 mod faults;
 mod fronts;
 mod roles;
+mod uplink;
+mod zenoh;
+mod zenoh_roles;
 
 use std::time::Duration;
 
@@ -37,6 +41,9 @@ enum Role {
     Orchestrator,
     Robots,
     Relay,
+    ZenohRouter,
+    ZenohSite,
+    ZenohBridge,
 }
 
 #[derive(Parser, Debug)]
@@ -63,6 +70,16 @@ pub(crate) struct Args {
     /// Foxglove clients, with --fronts.
     #[arg(long, default_value_t = 200)]
     pub(crate) foxglove_clients: usize,
+    /// Instead of the load phases: direct, player-relay alone, and through a Zenoh router to
+    /// `--bridges` remote processes serving the robots as Player servers.
+    #[arg(long)]
+    pub(crate) zenoh: bool,
+    /// Remote bridge processes the observers are spread over, with --zenoh.
+    #[arg(long, default_value_t = 4)]
+    pub(crate) bridges: usize,
+    /// The Zenoh router's port (or the site's way to it), for the Zenoh roles.
+    #[arg(long, default_value_t = 0, hide = true)]
+    pub(crate) router: u16,
     #[arg(long, default_value_t = 8)]
     pub(crate) robots: usize,
     #[arg(long, default_value_t = 1000)]
@@ -98,8 +115,12 @@ fn main() -> Result<()> {
     match args.role {
         Role::Robots => roles::serve_robots(&args),
         Role::Relay => roles::serve_relay(&args),
+        Role::ZenohRouter => zenoh_roles::serve_router(),
+        Role::ZenohSite => zenoh_roles::serve_site(&args),
+        Role::ZenohBridge => zenoh_roles::serve_bridge(&args),
         Role::Orchestrator if args.faults => faults::run(&args),
         Role::Orchestrator if args.fronts => fronts::run(&args),
+        Role::Orchestrator if args.zenoh => zenoh::run(&args),
         Role::Orchestrator => orchestrate(&args),
     }
 }

@@ -24,7 +24,7 @@ const LOCALHOST: std::net::IpAddr = std::net::IpAddr::V4(std::net::Ipv4Addr::LOC
 use crate::{Args, SETUP_TIMEOUT};
 
 /// Prints the ports on a line of their own for the orchestrator.
-fn announce(ports: &[u16]) -> Result<()> {
+pub(crate) fn announce(ports: &[u16]) -> Result<()> {
     let list: Vec<String> = ports.iter().map(u16::to_string).collect();
     let mut out = std::io::stdout().lock();
     writeln!(out, "PORTS {}", list.join(","))?;
@@ -33,7 +33,7 @@ fn announce(ports: &[u16]) -> Result<()> {
 }
 
 /// Blocks until the orchestrator closes our standard input (or goes away).
-fn until_stdin_closes() {
+pub(crate) fn until_stdin_closes() {
     let mut sink = String::new();
     while std::io::stdin().read_line(&mut sink).is_ok_and(|n| n > 0) {
         sink.clear();
