@@ -112,7 +112,8 @@ fn a_robot_at_site_a_is_watched_and_driven_from_site_c_through_a_router_at_b() {
             "tcp/0.0.0.0:7447",
         ],
     );
-    // Zenoh clients give up when their router is not there yet: start them once it listens.
+    // The relays would wait for their router (player-zenoh's options test shows it); starting
+    // them once it listens keeps the timings below about the network, not the start-up.
     let listening = wait_until(Duration::from_secs(30), || {
         TcpStream::connect((B_TO_C, 7447)).is_ok()
     });

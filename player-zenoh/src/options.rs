@@ -4,6 +4,7 @@
 
 use std::path::PathBuf;
 use std::str::FromStr;
+use std::time::Duration;
 
 use crate::error::ZenohError;
 
@@ -55,6 +56,11 @@ pub struct ZenohOptions {
     /// Turns multicast and gossip scouting off: only the endpoints given are used. Tests
     /// need it (peers on one machine would otherwise find each other by themselves).
     pub no_scouting: bool,
+    /// How long opening the session keeps trying `connect` endpoints that do not answer
+    /// (`Duration::MAX`: until one does); `None` keeps Zenoh's default, under which a client
+    /// gives up at once. A relay started before its router should wait for it, as a daemon
+    /// waits for its network; a viewer waits a while, then says what it could not reach.
+    pub connect_patience: Option<Duration>,
 }
 
 impl ZenohOptions {
@@ -72,6 +78,13 @@ impl ZenohOptions {
         }
         if !self.listen.is_empty() {
             config.insert_json5("listen/endpoints", &json_list(&self.listen))?;
+        }
+        if let Some(patience) = self.connect_patience {
+            let ms = match patience {
+                Duration::MAX => -1,
+                d => i64::try_from(d.as_millis()).unwrap_or(i64::MAX),
+            };
+            config.insert_json5("connect/timeout_ms", &ms.to_string())?;
         }
         if self.no_scouting {
             config.insert_json5("scouting/multicast/enabled", "false")?;
@@ -112,5 +125,58 @@ mod tests {
         options.config().expect("Zenoh accepts it");
         assert_eq!("router".parse(), Ok(Mode::Router));
         assert!("hub".parse::<Mode>().is_err());
+    }
+
+    fn free_port() -> u16 {
+        std::net::TcpListener::bind("127.0.0.1:0")
+            .and_then(|l| l.local_addr())
+            .expect("a free port")
+            .port()
+    }
+
+    fn client_of(port: u16, patience: Duration) -> ZenohOptions {
+        ZenohOptions {
+            mode: Some(Mode::Client),
+            connect: vec![format!("tcp/127.0.0.1:{port}")],
+            no_scouting: true,
+            connect_patience: Some(patience),
+            ..ZenohOptions::default()
+        }
+    }
+
+    #[test]
+    fn a_client_started_before_its_router_waits_for_it() {
+        let port = free_port();
+        let client = std::thread::spawn(move || client_of(port, Duration::MAX).open());
+        std::thread::sleep(Duration::from_millis(1500));
+        assert!(!client.is_finished(), "the client is still waiting");
+        let _router = ZenohOptions {
+            mode: Some(Mode::Router),
+            listen: vec![format!("tcp/127.0.0.1:{port}")],
+            no_scouting: true,
+            ..ZenohOptions::default()
+        }
+        .open()
+        .expect("the router opens");
+        let session = client.join().expect("no panic");
+        assert!(
+            session.is_ok(),
+            "joined once the router listened: {session:?}"
+        );
+    }
+
+    #[test]
+    fn a_client_whose_patience_runs_out_says_where_it_could_not_connect() {
+        let port = free_port();
+        let started = std::time::Instant::now();
+        let error = client_of(port, Duration::from_millis(800))
+            .open()
+            .expect_err("nobody listens there");
+        assert!(
+            started.elapsed() < Duration::from_secs(10),
+            "{:?}",
+            started.elapsed()
+        );
+        assert!(error.to_string().contains(&port.to_string()), "{error}");
     }
 }

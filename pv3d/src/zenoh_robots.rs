@@ -31,7 +31,7 @@ pub struct ZenohSource {
 /// Why robots could not be had from Zenoh.
 #[derive(Debug, thiserror::Error)]
 pub enum ZenohRobotsError {
-    #[error("cannot join Zenoh at {endpoints}: {source}")]
+    #[error("cannot join Zenoh at {endpoints}")]
     Join {
         endpoints: String,
         source: ZenohError,
@@ -59,7 +59,7 @@ impl ZenohRobots {
     }
 }
 
-/// Joins Zenoh, waits up to `wait` for robots (then until discovery has been quiet for a
+/// Joins Zenoh (trying the endpoints for up to `wait`), waits up to `wait` for robots (then until discovery has been quiet for a
 /// moment), and points `composition` at them: a composition that names servers by their
 /// address on the robots' network (`<client host="10.0.0.5" port="6665"/>`) gets those
 /// robots; one that names none gets every robot found. Robots that appear later are served
@@ -85,6 +85,7 @@ pub fn open_zenoh_robots(
         connect: source.connect.clone(),
         listen: Vec::new(),
         no_scouting: false,
+        connect_patience: Some(wait),
     };
     let session = options.open().map_err(join)?;
     let identity = source

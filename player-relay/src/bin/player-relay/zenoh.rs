@@ -84,7 +84,15 @@ impl ZenohArgs {
             connect: self.zenoh_connect.clone(),
             listen: self.zenoh_listen.clone(),
             no_scouting: false,
+            // A relay started before its router (or its peer) waits for it.
+            connect_patience: Some(std::time::Duration::MAX),
         };
+        if !self.zenoh_connect.is_empty() {
+            eprintln!(
+                "Zenoh: joining through {} (waiting until it answers)",
+                self.zenoh_connect.join(", ")
+            );
+        }
         let session = options.open().context("cannot join Zenoh")?;
         let mut zenoh = Zenoh::default();
         if self.zenoh {
