@@ -335,9 +335,29 @@ function frame() {
 
 // ---- rows -----------------------------------------------------------------------------
 
+// At most this many rows are listed: with a thousand robots, the selected one, those the
+// Find field matches and a summary of the rest are what a person can use.
+const MAX_ROWS = 60;
+let lastRows = [];
+document.getElementById("find").addEventListener("input", () => showRows(lastRows));
+
 function showRows(rows) {
+  lastRows = rows;
+  const words = document.getElementById("find").value.toLowerCase().split(/\s+/).filter(Boolean);
+  const said = (row) => [row.robot, row.link.state, ...row.devices.map((d) => d.device)].join(" ").toLowerCase();
+  const matching = rows.filter((row) => words.every((w) => said(row).includes(w)));
+  const first = (row) => (selected && selected.robot === row.robot ? 0 : 1);
+  matching.sort((a, b) => first(a) - first(b)); // stable: the relay's order otherwise
+  const states = new Map();
+  for (const row of rows) states.set(row.link.state, (states.get(row.link.state) || 0) + 1);
+  const parts = [...states].map(([state, n]) => `${n} ${state}`);
+  let summary = `${rows.length} robot${rows.length === 1 ? "" : "s"}` + (parts.length ? `: ${parts.join(", ")}` : "");
+  if (words.length) summary += ` · ${matching.length} found`;
+  if (matching.length > MAX_ROWS) summary += ` · the first ${MAX_ROWS} listed, Find narrows`;
+  document.getElementById("summary").textContent = summary;
   const body = document.querySelector("#rows tbody");
   body.replaceChildren();
+  rows = matching.slice(0, MAX_ROWS);
   for (const row of rows) {
     const tr = document.createElement("tr");
     tr.dataset.robot = row.robot;
@@ -378,8 +398,10 @@ function setRole(rule) {
 // ---- input ----------------------------------------------------------------------------
 
 function select(robot, index) {
+  const changed = !selected || selected.robot !== robot;
   selected = { robot, index };
   dirty = true;
+  if (changed) showRows(lastRows); // the selected robot's row comes first
   for (const tr of document.querySelectorAll("#rows tr[data-robot]")) {
     tr.classList.toggle("selected", tr.dataset.robot === robot);
   }

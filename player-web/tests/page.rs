@@ -93,6 +93,29 @@ fn on_a_phone_the_rows_sit_below_the_view() {
 }
 
 #[test]
+fn the_rows_are_summed_up_and_a_robot_is_found_by_what_its_row_says() {
+    let running = serve_world("multirobot.world", None);
+    let front = Front::start(&running, Commanders::Nobody);
+    let name = robot_name(&running, running.ports[2].0);
+    let seen = page(&["find", &front.url(), &name]);
+    let robots = running.ports.len();
+    let listed = |when: &str| seen[when]["rows"].as_array().unwrap().len();
+    let summary = |when: &str| seen[when]["summary"].as_str().unwrap().to_string();
+    assert_eq!(listed("before"), robots, "every robot listed: {seen}");
+    assert!(
+        summary("before").starts_with(&format!("{robots} robots: {robots} connected")),
+        "the summary counts the robots by link: {seen}"
+    );
+    assert_eq!(
+        seen["after"]["rows"],
+        serde_json::json!([name]),
+        "Find lists the robot named: {seen}"
+    );
+    assert!(summary("after").ends_with("· 1 found"), "{seen}");
+    assert_eq!(seen["errors"], serde_json::json!([]), "{seen}");
+}
+
+#[test]
 fn a_robot_that_moves_in_the_simulation_moves_on_the_page() {
     let running = serve_world("simple.world", None);
     let front = Front::start(&running, Commanders::Nobody);

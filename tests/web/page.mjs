@@ -7,6 +7,7 @@
 //   node page.mjs follow  URL ROBOT SECONDS           the page's pose of ROBOT, sampled
 //   node page.mjs command URL ROBOT X Y KEYS          click ROBOT, click (X, Y) unless X is -; with KEYS 1 hold ← 1 s
 //   node page.mjs link    URL ROBOT SECONDS           ROBOT's link states as the page showed them
+//   node page.mjs find    URL TEXT                    the summary and rows listed, before and after typing TEXT in Find
 import { chromium } from "playwright-core";
 
 const CHROMIUM = process.env.CHROMIUM || "/usr/bin/chromium";
@@ -24,7 +25,7 @@ try {
   page.on("pageerror", (e) => errors.push(e.message));
   page.on("console", (m) => { if (m.type() === "error") errors.push(m.text()); });
   await page.goto(url);
-  const result = await ({ draw, follow, command, link })[scenario](page, ...args);
+  const result = await ({ draw, follow, command, link, find })[scenario](page, ...args);
   console.log(JSON.stringify({ ...result, errors }));
 } finally {
   await browser.close();
@@ -131,4 +132,17 @@ async function link(page, robot, seconds) {
     await page.waitForTimeout(100);
   }
   return { states };
+}
+
+async function find(page, text) {
+  await settle(page);
+  const listed = () => page.evaluate(() => ({
+    summary: document.getElementById("summary").textContent,
+    rows: [...document.querySelectorAll("#rows tbody tr")].map((tr) => tr.dataset.robot),
+  }));
+  const before = await listed();
+  await page.fill("#find", text);
+  await page.waitForTimeout(200);
+  const after = await listed();
+  return { before, after };
 }
