@@ -67,6 +67,18 @@ pub struct Route {
     pub listen_port: u16,
 }
 
+impl Route {
+    /// A robot server on this machine, relayed on any free port: what tests and benchmarks
+    /// with a simulation beside them want.
+    pub fn loopback(port: u16) -> Route {
+        Route {
+            host: "127.0.0.1".into(),
+            port,
+            listen_port: 0,
+        }
+    }
+}
+
 /// What to relay, and how.
 #[derive(Clone)]
 pub struct RelayConfig {

@@ -75,6 +75,28 @@ fn recorded_scan_times(path: &std::path::Path) -> Vec<u64> {
         .collect()
 }
 
+/// `pv3d --zenoh` at site C, through the router, site A's robots only, offscreen.
+fn pv3d_at_c(hosts: &Hosts, args: &[&str]) -> Program {
+    let router = format!("tcp/{B_TO_C}:7447");
+    let mut all = vec![
+        "--zenoh",
+        &router,
+        "--zenoh-site",
+        "a",
+        "--connect-timeout",
+        "20",
+    ];
+    all.push("--headless");
+    all.extend(args);
+    Program(
+        hosts
+            .command(None, &program("pv3d"), &all)
+            .stdout(Stdio::null())
+            .spawn()
+            .expect("pv3d starts"),
+    )
+}
+
 /// playerprint's lines as they come, with their arrival time (Unix ns).
 fn print_lines(program: &mut Program) -> Arc<Mutex<Vec<(u64, String)>>> {
     let lines = Arc::new(Mutex::new(Vec::new()));
@@ -197,31 +219,15 @@ fn a_robot_at_site_a_is_watched_and_driven_from_site_c_through_a_router_at_b() {
     let scratch = std::env::temp_dir().join(format!("zenoh-hosts-{}", std::process::id()));
     std::fs::create_dir_all(&scratch).unwrap();
     let recording = scratch.join("pv3d-at-c.prec");
-    let router_from_c = format!("tcp/{B_TO_C}:7447");
-    let pv3d = program("pv3d");
-    let mut watcher = Program(
-        hosts
-            .command(
-                None,
-                &pv3d,
-                &[
-                    "--zenoh",
-                    &router_from_c,
-                    "--zenoh-site",
-                    "a",
-                    "--connect-timeout",
-                    "20",
-                    "--observe",
-                    "--headless",
-                    "--quit-after",
-                    "45",
-                    "--record",
-                    recording.to_str().unwrap(),
-                ],
-            )
-            .stdout(Stdio::null())
-            .spawn()
-            .expect("pv3d starts"),
+    let mut watcher = pv3d_at_c(
+        &hosts,
+        &[
+            "--observe",
+            "--quit-after",
+            "45",
+            "--record",
+            recording.to_str().unwrap(),
+        ],
     );
     let mut printer = Program(
         hosts
@@ -361,30 +367,16 @@ fn a_robot_at_site_a_is_watched_and_driven_from_site_c_through_a_router_at_b() {
         format!("1 all robots go to point {} {}\n", goal.0, goal.1),
     )
     .unwrap();
-    let mut driver = Program(
-        hosts
-            .command(
-                None,
-                &pv3d,
-                &[
-                    "--zenoh",
-                    &router_from_c,
-                    "--zenoh-site",
-                    "a",
-                    "--zenoh-id",
-                    "teacher",
-                    "--connect-timeout",
-                    "20",
-                    "--headless",
-                    "--quit-after",
-                    "12",
-                    "--script",
-                    script.to_str().unwrap(),
-                ],
-            )
-            .stdout(Stdio::null())
-            .spawn()
-            .expect("pv3d starts"),
+    let mut driver = pv3d_at_c(
+        &hosts,
+        &[
+            "--zenoh-id",
+            "teacher",
+            "--quit-after",
+            "12",
+            "--script",
+            script.to_str().unwrap(),
+        ],
     );
     let distance = |p: (f64, f64)| (p.0 - goal.0).hypot(p.1 - goal.1);
     let reached = wait_until(Duration::from_secs(40), || {

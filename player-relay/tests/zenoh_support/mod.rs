@@ -87,11 +87,7 @@ impl Site {
         let routes = running
             .ports
             .iter()
-            .map(|&(_, port)| Route {
-                host: "127.0.0.1".into(),
-                port,
-                listen_port: 0,
-            })
+            .map(|&(_, port)| Route::loopback(port))
             .collect();
         let relay = Relay::start(RelayConfig {
             routes,

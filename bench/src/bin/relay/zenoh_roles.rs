@@ -53,11 +53,7 @@ pub fn serve_site(args: &Args) -> Result<()> {
     let routes = args
         .upstream
         .iter()
-        .map(|&port| Route {
-            host: "127.0.0.1".into(),
-            port,
-            listen_port: 0,
-        })
+        .map(|&port| Route::loopback(port))
         .collect();
     let relay = Relay::start(RelayConfig {
         routes,
