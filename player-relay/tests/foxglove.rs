@@ -287,6 +287,25 @@ fn bad_input_is_refused_and_others_are_still_served() {
 }
 
 #[test]
+fn both_names_of_the_protocol_are_accepted() {
+    let sim = serve_world("stage-worlds/simple.world");
+    let port = sim.port(6665).expect("simple.world serves 6665");
+    let (_relay, live) = relay_with_front(port, &format!("/127.0.0.1:{port}/laser/0/scan"));
+    let seen = run_node(&["protocols", &live_url(&live), "60000"]);
+    eprintln!("{seen:#}");
+    // Older Lichtblick builds offer only the spec's name; the Foxglove app the SDK's.
+    for (case, chosen) in [
+        ("spec", "foxglove.websocket.v1"),
+        ("sdk", "foxglove.sdk.v1"),
+        ("both", "foxglove.websocket.v1"),
+    ] {
+        assert_eq!(seen[case]["protocol"], chosen, "{case}: {seen:#}");
+        assert_eq!(seen[case]["firstOp"], "serverInfo", "{case}: {seen:#}");
+    }
+    assert_eq!(seen["other"]["refused"], 400, "{seen:#}");
+}
+
+#[test]
 fn hundreds_of_viewers_connect_at_once() {
     const VIEWERS: usize = 300;
     let sim = serve_world("stage-worlds/simple.world");

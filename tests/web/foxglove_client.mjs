@@ -15,6 +15,10 @@
 //   node foxglove_client.mjs stall URL COUNT HOLD_MS TIMEOUT_MS
 //     COUNT clients subscribe to every channel, and once each has a message, stop reading
 //     (their socket paused); prints "STALLED", holds them HOLD_MS, then the JSON.
+//   node foxglove_client.mjs protocols URL TIMEOUT_MS
+//     opens sockets offering each subprotocol alone (the spec's, as Lichtblick and
+//     FoxgloveClient.SUPPORTED_SUBPROTOCOL name it, and the SDK's), both, and an unrelated
+//     one; reports the protocol the server chose and its first message's op, or the refusal.
 
 import wsProtocol from "@foxglove/ws-protocol";
 import protobuf from "protobufjs";
@@ -25,9 +29,10 @@ import WebSocket from "ws";
 const { FoxgloveClient } = wsProtocol;
 
 const [mode, url, ...args] = process.argv.slice(2);
-// The SDK's server negotiates only "foxglove.sdk.v1" (and v1.1): the same protocol as
-// FoxgloveClient's "foxglove.websocket.v1" under a new name. The client has checked no name
-// since ws-protocol 0.7.5, so it speaks it as is.
+// The relay accepts both names of the protocol: the spec's "foxglove.websocket.v1" (what
+// FoxgloveClient and Lichtblick offer) and the SDK's "foxglove.sdk.v1" (newer Foxglove
+// clients); the "protocols" mode checks each. The other modes use the SDK's name, as the
+// Foxglove app does.
 const PROTOCOL = "foxglove.sdk.v1";
 
 function connect() {
@@ -244,7 +249,43 @@ async function stall(count, holdMs, timeoutMs) {
   finish({ count, open }, true);
 }
 
+// One socket offering `offered`: what the server chose and its first message, or how the
+// connection failed.
+function handshake(offered, ms) {
+  return new Promise((resolve) => {
+    const outcome = { offered, protocol: null, firstOp: null, refused: null };
+    const ws = new WebSocket(url, offered);
+    const done = () => { clearTimeout(timer); ws.terminate(); resolve(outcome); };
+    const timer = setTimeout(done, ms);
+    ws.on("open", () => outcome.protocol = ws.protocol);
+    ws.on("message", (data, isBinary) => {
+      if (!isBinary) outcome.firstOp ??= JSON.parse(data.toString()).op;
+      done();
+    });
+    ws.on("unexpected-response", (_request, response) => {
+      outcome.refused = response.statusCode;
+      done();
+    });
+    ws.on("error", (e) => { outcome.refused ??= String(e.message ?? e); done(); });
+  });
+}
+
+async function protocols(timeoutMs) {
+  const timer = setTimeout(() => finish({ timedOut: true }, false), timeoutMs);
+  const result = {
+    spec: await handshake([FoxgloveClient.SUPPORTED_SUBPROTOCOL], 3000),
+    sdk: await handshake(["foxglove.sdk.v1"], 3000),
+    both: await handshake(["foxglove.websocket.v1", "foxglove.sdk.v1"], 3000),
+    other: await handshake(["chat"], 3000),
+  };
+  clearTimeout(timer);
+  finish(result, true);
+}
+
 switch (mode) {
+  case "protocols":
+    protocols(Number(args[0]));
+    break;
   case "observe":
     observe(JSON.parse(args[0]), Number(args[1]));
     break;

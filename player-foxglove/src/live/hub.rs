@@ -1,0 +1,221 @@
+//! What the robots' taps and the viewers share: the conversion, the channels, and who is
+//! subscribed to what. Every frame from every server goes through one [`Converter`] (it keeps
+//! per-robot state: which devices are robots, ranger geometry, map tiles being assembled);
+//! each [`Output`] is encoded once and its shared bytes queued to every subscriber, with the
+//! Player timestamp as log time. Subscribing, latching and publishing happen under one lock,
+//! so a new subscriber gets what was latched and then everything after it, nothing twice or
+//! lost between the two.
+
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, MutexGuard};
+use std::time::{SystemTime, UNIX_EPOCH};
+
+use bytes::Bytes;
+use foxglove::messages::log::Level;
+use player_proto::capture::Direction;
+use player_proto::client::TapEvent;
+use player_proto::wire::Header;
+
+use super::channels::Channels;
+use super::outbox::{Data, Outbox};
+use super::wire::{ChannelId, SubscriptionId};
+use crate::frames::timestamp;
+use crate::{Converter, Output, log};
+
+/// A connected viewer, numbered from 1.
+pub type ViewerId = u64;
+
+struct Viewer {
+    outbox: Arc<Outbox>,
+    subscriptions: HashMap<SubscriptionId, ChannelId>,
+}
+
+struct Subscriber {
+    viewer: ViewerId,
+    subscription: SubscriptionId,
+    outbox: Arc<Outbox>,
+}
+
+#[derive(Default)]
+struct State {
+    converter: Converter,
+    channels: Channels,
+    viewers: HashMap<ViewerId, Viewer>,
+    subscribers: HashMap<ChannelId, Vec<Subscriber>>,
+    next_viewer: ViewerId,
+}
+
+#[derive(Default)]
+pub struct Hub {
+    state: Mutex<State>,
+}
+
+impl Hub {
+    fn lock(&self) -> MutexGuard<'_, State> {
+        // Every change is whole under the lock: a poisoned lock still guards a usable value.
+        self.state.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// One tap event of the connection to `robot`, on its robot thread: converting and
+    /// queueing for the viewers never waits on them.
+    pub fn event(&self, robot: &str, time: SystemTime, event: TapEvent<'_>) {
+        let (level, text) = match event {
+            TapEvent::Opened(banner) => (
+                Level::Info,
+                format!("connected (Player {})", banner.version),
+            ),
+            TapEvent::Closed(reason) => (Level::Warning, format!("connection closed: {reason}")),
+            TapEvent::Frame {
+                direction: Direction::ServerToClient,
+                header,
+                body,
+            } => return self.frame(robot, header, body),
+            TapEvent::Frame { .. } => return,
+        };
+        let time = system_timestamp(time);
+        let output = log(robot, time, level, &text);
+        self.lock().publish(output, time.total_nanos());
+    }
+
+    fn frame(&self, robot: &str, header: &Header, body: &Bytes) {
+        let mut state = self.lock();
+        let outputs = state.converter.server_message(robot, header, body);
+        let log_time = timestamp(header.timestamp).total_nanos();
+        for output in outputs {
+            state.publish(output, log_time);
+        }
+    }
+
+    /// A new viewer: its id, with the channels so far advertised to it.
+    pub fn join(&self, outbox: Arc<Outbox>) -> ViewerId {
+        let mut state = self.lock();
+        state.next_viewer += 1;
+        let id = state.next_viewer;
+        if let Some(advertise) = state.channels.advertise_all() {
+            outbox.push_control(advertise);
+        }
+        let viewer = Viewer {
+            outbox,
+            subscriptions: HashMap::new(),
+        };
+        state.viewers.insert(id, viewer);
+        id
+    }
+
+    /// The viewer is gone: so are its subscriptions.
+    pub fn leave(&self, viewer: ViewerId) {
+        let mut state = self.lock();
+        if let Some(gone) = state.viewers.remove(&viewer) {
+            for channel in gone.subscriptions.values() {
+                state.unlist(*channel, viewer);
+            }
+        }
+    }
+
+    /// Subscribes the viewer (the latched messages of the channel first), or says why not.
+    pub fn subscribe(
+        &self,
+        viewer: ViewerId,
+        subscription: SubscriptionId,
+        channel: ChannelId,
+    ) -> Result<(), String> {
+        let mut state = self.lock();
+        let state = &mut *state;
+        if !state.channels.contains(channel) {
+            return Err(format!("Unknown channel ID {channel}"));
+        }
+        let Some(entry) = state.viewers.get_mut(&viewer) else {
+            return Ok(());
+        };
+        if entry.subscriptions.contains_key(&subscription) {
+            return Err(format!("Subscription ID {subscription} is already in use"));
+        }
+        if entry.subscriptions.values().any(|c| *c == channel) {
+            return Err(format!("Already subscribed to channel ID {channel}"));
+        }
+        entry.subscriptions.insert(subscription, channel);
+        for (payload, log_time) in state.channels.latched(channel) {
+            entry.outbox.push_data(Data {
+                subscription,
+                log_time: *log_time,
+                payload: payload.clone(),
+            });
+        }
+        let subscriber = Subscriber {
+            viewer,
+            subscription,
+            outbox: entry.outbox.clone(),
+        };
+        state
+            .subscribers
+            .entry(channel)
+            .or_default()
+            .push(subscriber);
+        Ok(())
+    }
+
+    pub fn unsubscribe(
+        &self,
+        viewer: ViewerId,
+        subscription: SubscriptionId,
+    ) -> Result<(), String> {
+        let mut state = self.lock();
+        let channel = state
+            .viewers
+            .get_mut(&viewer)
+            .and_then(|v| v.subscriptions.remove(&subscription))
+            .ok_or_else(|| format!("Unknown subscription ID {subscription}"))?;
+        state.unlist(channel, viewer);
+        Ok(())
+    }
+
+    pub fn viewers(&self) -> usize {
+        self.lock().viewers.len()
+    }
+
+    pub fn topics(&self) -> Vec<String> {
+        let mut topics: Vec<String> = self.lock().channels.topics().map(String::from).collect();
+        topics.sort();
+        topics
+    }
+
+    /// Closes every viewer (the server stops).
+    pub fn close_all(&self) {
+        for viewer in self.lock().viewers.values() {
+            viewer.outbox.close();
+        }
+    }
+}
+
+impl State {
+    fn publish(&mut self, output: Output, log_time: u64) {
+        let (channel, advertise) = self.channels.channel_of(&output);
+        if let Some(advertise) = advertise {
+            for viewer in self.viewers.values() {
+                viewer.outbox.push_control(advertise.clone());
+            }
+        }
+        let payload = Bytes::from(output.message.encode());
+        self.channels.latch(channel, &output, &payload, log_time);
+        for subscriber in self.subscribers.get(&channel).into_iter().flatten() {
+            subscriber.outbox.push_data(Data {
+                subscription: subscriber.subscription,
+                log_time,
+                payload: payload.clone(),
+            });
+        }
+    }
+
+    fn unlist(&mut self, channel: ChannelId, viewer: ViewerId) {
+        if let Some(list) = self.subscribers.get_mut(&channel) {
+            list.retain(|s| s.viewer != viewer);
+        }
+    }
+}
+
+fn system_timestamp(time: SystemTime) -> foxglove::messages::Timestamp {
+    timestamp(
+        time.duration_since(UNIX_EPOCH)
+            .map_or(0.0, |d| d.as_secs_f64()),
+    )
+}

@@ -1,0 +1,125 @@
+//! A live Foxglove WebSocket server fed by Player client taps: what Player servers send
+//! becomes channels Foxglove Studio and Lichtblick show. `player-relay --foxglove PORT` is its
+//! user; anything holding Player clients can be.
+//!
+//! The schemas and the protobuf encoding are the `foxglove` crate's; the transport is this
+//! module's own, the server side of the public protocol (github.com/foxglove/ws-protocol,
+//! docs/spec.md) that a live viewer needs: both subprotocol names (`foxglove.websocket.v1`,
+//! `foxglove.sdk.v1`), `serverInfo`, `advertise`, `subscribe`/`unsubscribe`, `Message Data`,
+//! and error `status`es. It replaced the SDK's WebSocket server because of a measurement
+//! (BENCHMARKS.md, "Web page and Foxglove clients through one relay"): the SDK writes and
+//! flushes one WebSocket message per subscribed message per viewer; here each message is
+//! encoded once for all, and a viewer's queued messages leave in one write. The SDK's server
+//! also refuses viewers that offer only `foxglove.websocket.v1` (older Lichtblick builds).
+//!
+//! * [`hub`] — the conversion, the channels and the subscriptions, fed by the taps;
+//! * [`channels`] — one channel per topic, and what is latched on it for later subscribers;
+//! * [`outbox`] — a viewer's bounded queue (oldest dropped, in count and bytes);
+//! * [`session`] — a viewer's socket: bursts out, requests in;
+//! * [`server`] — the listener and the upgrade;
+//! * [`wire`] — the protocol's messages.
+
+mod channels;
+mod hub;
+pub mod outbox;
+pub mod server;
+pub mod session;
+pub mod wire;
+
+use std::net::{IpAddr, SocketAddr};
+use std::sync::Arc;
+use std::time::{SystemTime, UNIX_EPOCH};
+
+use player_proto::client::{ConnectionTap, Tap};
+
+use hub::Hub;
+pub use outbox::{BACKLOG_BYTES, MESSAGE_BACKLOG};
+
+/// Why the live server could not start.
+#[derive(Debug, thiserror::Error)]
+pub enum LiveError {
+    #[error("cannot start the Foxglove WebSocket server on {address}:{port}: {source}")]
+    Start {
+        address: IpAddr,
+        port: u16,
+        source: std::io::Error,
+    },
+}
+
+/// A running Foxglove WebSocket server, on its own runtime; stops when dropped.
+pub struct FoxgloveLive {
+    hub: Arc<Hub>,
+    port: u16,
+    runtime: Option<tokio::runtime::Runtime>,
+}
+
+impl FoxgloveLive {
+    /// Starts serving on `address:port` (0: any free port, see [`FoxgloveLive::port`]).
+    pub fn start(address: IpAddr, port: u16) -> Result<FoxgloveLive, LiveError> {
+        let error = |source| LiveError::Start {
+            address,
+            port,
+            source,
+        };
+        let runtime = tokio::runtime::Builder::new_multi_thread()
+            .worker_threads(2)
+            .thread_name("foxglove-ws")
+            .enable_all()
+            .build()
+            .map_err(error)?;
+        let listener = server::listen(SocketAddr::new(address, port))
+            .and_then(|std| {
+                let _entered = runtime.enter();
+                tokio::net::TcpListener::from_std(std)
+            })
+            .map_err(error)?;
+        let port = listener.local_addr().map_err(error)?.port();
+        let hub = Arc::new(Hub::default());
+        let session_id = SystemTime::now()
+            .duration_since(UNIX_EPOCH)
+            .map_or(0, |d| d.as_nanos())
+            .to_string();
+        runtime.spawn(server::serve(listener, hub.clone(), session_id));
+        tracing::info!(port, "serving Foxglove WebSocket");
+        Ok(FoxgloveLive {
+            hub,
+            port,
+            runtime: Some(runtime),
+        })
+    }
+
+    /// The port viewers connect to.
+    pub fn port(&self) -> u16 {
+        self.port
+    }
+
+    /// Viewers connected now.
+    pub fn clients(&self) -> usize {
+        self.hub.viewers()
+    }
+
+    /// Topics with a channel so far.
+    pub fn topics(&self) -> Vec<String> {
+        self.hub.topics()
+    }
+
+    /// The tap to give each Player client (e.g. `RelayConfig::fronts`): everything the
+    /// servers send goes to the viewers.
+    pub fn tap(&self) -> Tap {
+        let hub = self.hub.clone();
+        Arc::new(move |host: &str, port: u16| -> ConnectionTap {
+            let hub = hub.clone();
+            let robot = format!("{host}:{port}");
+            Arc::new(move |time, event| hub.event(&robot, time, event))
+        })
+    }
+}
+
+impl Drop for FoxgloveLive {
+    fn drop(&mut self) {
+        self.hub.close_all();
+        if let Some(runtime) = self.runtime.take() {
+            runtime.shutdown_background();
+        }
+    }
+}

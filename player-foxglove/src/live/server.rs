@@ -1,0 +1,78 @@
+//! Accepting viewers: one listener (a small send buffer per socket, Nagle off), the WebSocket
+//! upgrade on any path with the protocol's subprotocol negotiated, one task per viewer.
+
+use std::net::SocketAddr;
+use std::sync::Arc;
+
+use axum::Router;
+use axum::extract::ws::WebSocketUpgrade;
+use axum::extract::{ConnectInfo, State};
+use axum::http::StatusCode;
+use axum::response::{IntoResponse, Response};
+
+use super::hub::Hub;
+use super::session::serve_viewer;
+use super::wire::SUBPROTOCOLS;
+
+/// The largest message a viewer may send: its requests are small JSON (a subscription is
+/// some 30 bytes); anything bigger closes the connection (1009).
+pub const MAX_INCOMING: usize = 1 << 20;
+
+/// Kernel send buffer per viewer: a few bursts of a few robots. A viewer that stops reading
+/// fills it in a moment, and its outbox then drops its oldest messages.
+pub const VIEWER_SEND_BUFFER: usize = 256 * 1024;
+
+#[derive(Clone)]
+struct Shared {
+    hub: Arc<Hub>,
+    session_id: String,
+}
+
+/// Serves viewers on `listener` until the runtime stops.
+pub async fn serve(listener: tokio::net::TcpListener, hub: Arc<Hub>, session_id: String) {
+    let app = Router::new()
+        .fallback(upgrade)
+        .with_state(Shared { hub, session_id })
+        .into_make_service_with_connect_info::<SocketAddr>();
+    // Small messages (poses) go out at once rather than waiting for company.
+    let listener = axum::serve::ListenerExt::tap_io(listener, |tcp| {
+        if let Err(e) = tcp.set_nodelay(true) {
+            tracing::debug!("a Foxglove viewer's socket keeps Nagle: {e}");
+        }
+    });
+    if let Err(e) = axum::serve(listener, app).await {
+        tracing::error!("the Foxglove WebSocket server stopped: {e}");
+    }
+}
+
+async fn upgrade(
+    State(shared): State<Shared>,
+    ConnectInfo(from): ConnectInfo<SocketAddr>,
+    upgrade: WebSocketUpgrade,
+) -> Response {
+    let upgrade = upgrade
+        .protocols(SUBPROTOCOLS)
+        .max_message_size(MAX_INCOMING)
+        .max_frame_size(MAX_INCOMING);
+    if upgrade.selected_protocol().is_none() {
+        let why = format!(
+            "a Foxglove WebSocket client offers subprotocol {}",
+            SUBPROTOCOLS.join(" or ")
+        );
+        return (StatusCode::BAD_REQUEST, why).into_response();
+    }
+    upgrade.on_upgrade(move |socket| serve_viewer(socket, from, shared.hub, shared.session_id))
+}
+
+/// A listener whose connections start with a small kernel send buffer (Linux hands the
+/// listener's to each accepted socket), for hundreds of viewers connecting at once.
+pub fn listen(addr: SocketAddr) -> std::io::Result<std::net::TcpListener> {
+    use socket2::{Domain, Socket, Type};
+    let socket = Socket::new(Domain::for_address(addr), Type::STREAM, None)?;
+    socket.set_reuse_address(true)?;
+    socket.set_send_buffer_size(VIEWER_SEND_BUFFER)?;
+    socket.bind(&addr.into())?;
+    socket.listen(1024)?;
+    socket.set_nonblocking(true)?;
+    Ok(socket.into())
+}
