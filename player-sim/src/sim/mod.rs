@@ -7,6 +7,7 @@ mod beams;
 mod blobfinder;
 mod body_index;
 mod camera;
+mod drivers;
 mod geometry;
 mod gripper;
 mod nearby;
@@ -20,6 +21,7 @@ pub use battery::BatteryState;
 pub use blobfinder::{Blob, blobs};
 pub use body_index::BodyIndex;
 pub use camera::{Frame, render_camera};
+pub use drivers::{Drivers, NoDrivers};
 pub use geometry::GroundBox;
 pub use gripper::{BEAM_BITS, GripperCommand, GripperState, Paddles};
 pub use nearby::{NearbyBoxes, SolidBox};
@@ -33,7 +35,6 @@ pub use wander::WanderState;
 
 use body_index::IndexCache;
 
-use crate::nav::Navigation;
 use crate::world::{Controller, Drive, Pose, World};
 
 /// What a robot is told to do.
@@ -74,8 +75,8 @@ pub struct Simulation {
     pub noise: Noise,
     /// For each obstacle, the (robot, gripper) holding it.
     pub carried_by: Vec<Option<(usize, usize)>>,
-    /// The navigation drivers (localizers, planners) the served `.cfg` files run.
-    pub nav: Navigation,
+    /// The drivers stepped with it (the navigation drivers the served `.cfg` files run).
+    pub drivers: Box<dyn Drivers>,
     /// One per `world.people`: where each walking person is.
     pub walkers: Vec<WalkerState>,
     /// The robots bucketed by where they stand, for the sensors of this step.
@@ -119,7 +120,7 @@ impl Simulation {
             steps: 0,
             noise: Noise::default(),
             carried_by,
-            nav: Navigation::default(),
+            drivers: Box::new(NoDrivers),
             walkers,
             bodies: IndexCache::default(),
         };
@@ -235,7 +236,7 @@ impl Simulation {
                 self.wander(i, ranger);
             }
         }
-        self.steer_planners();
+        self.run_drivers(|drivers, sim| drivers.before_motion(sim));
         self.walk_people();
         // Where the robots stand before they move; a robot that has moved since is within
         // `drift` of where the index has it.
@@ -269,7 +270,7 @@ impl Simulation {
             }
         }
         self.drain_batteries(dt);
-        self.update_localizers();
+        self.run_drivers(|drivers, sim| drivers.after_motion(sim));
         self.carry();
         for robot in 0..self.robots.len() {
             for gripper in 0..self.robots[robot].grippers.len() {

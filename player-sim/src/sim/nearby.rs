@@ -139,7 +139,7 @@ impl<'a> NearbyBoxes<'a> {
     }
 
     /// [`NearbyBoxes::nearest_along`] among the boxes `candidates` lists (indices, in
-    /// increasing order): those a [`BeamBoxes`](super::beams::BeamBoxes) has in the ray's
+    /// increasing order): those the scan's per-beam lists (`sim/beams.rs`) have in the ray's
     /// direction.
     pub fn nearest_among(
         &self,
