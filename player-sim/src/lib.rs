@@ -10,6 +10,11 @@
 //! * [`sim`] — the simulation: motion, collisions, sensors by ray casting.
 //! * [`world`] — the world a file describes: floorplan, robots and their sensors, obstacles.
 //! * [`worldfile`] — the syntax of Stage world files and Player config files.
+//!
+//! The layers depend one way, from what serves down to what is simulated: `serve` → `devices`
+//! → `served` → `camera_frames` → `nav` → `sim` → `world` → `worldfile`. The simulation knows
+//! nothing of Player's devices or drivers: it steps the navigation drivers as its
+//! [`sim::Drivers`], which `nav` implements.
 
 pub mod camera_frames;
 pub mod devices;

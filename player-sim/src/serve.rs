@@ -11,7 +11,7 @@ use player_proto::server::{Server, ServerConfig, ServerError};
 use player_proto::wire::DevAddr;
 
 use crate::devices::SimDevice;
-use crate::served::{ServedDevice, devices_beside};
+use crate::served::{ServedDevice, attach_navigation, devices_beside};
 use crate::sim::Simulation;
 use crate::world::World;
 use crate::worldfile::WorldFileError;
@@ -115,7 +115,7 @@ pub fn serve(
     options: ServeOptions,
 ) -> Result<Running, ServerError> {
     let mut sim = sim;
-    sim.attach_navigation(&devices);
+    attach_navigation(&mut sim, &devices);
     let sim = Arc::new(Mutex::new(sim));
     let mut configured: Vec<u16> = devices.iter().map(|d| d.port).collect();
     configured.sort_unstable();

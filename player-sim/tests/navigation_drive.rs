@@ -6,7 +6,7 @@ mod support;
 
 use player_proto::interfaces::planner::PlannerData;
 use player_sim::nav::NavDriver;
-use player_sim::served::{ServedDevice, Source, from_cfgs};
+use player_sim::served::{ServedDevice, Source, attach_navigation, from_cfgs};
 use player_sim::sim::Simulation;
 use player_sim::world::{Pose, World};
 
@@ -22,7 +22,7 @@ fn navigation() -> (Nav, Vec<ServedDevice>) {
     let (stage, nav) = (dir.join("navigation.cfg"), dir.join("navigation-nav.cfg"));
     let devices = from_cfgs(&[&stage, &nav], &world, &mut Vec::new()).unwrap();
     let mut sim = Simulation::new(world);
-    sim.attach_navigation(&devices);
+    attach_navigation(&mut sim, &devices);
     let planner = devices
         .iter()
         .find_map(|d| match &d.source {
@@ -35,12 +35,12 @@ fn navigation() -> (Nav, Vec<ServedDevice>) {
 
 impl Nav {
     fn goal(&mut self, x: f64, y: f64, a: f64) {
-        let planner = self.sim.nav.planner_mut(self.planner).unwrap();
+        let planner = self.sim.nav_mut().planner_mut(self.planner).unwrap();
         planner.set_goal(Pose { x, y, a });
     }
 
     fn state(&self) -> PlannerData {
-        self.sim.nav.planner(self.planner).unwrap().data()
+        self.sim.nav().planner(self.planner).unwrap().data()
     }
 
     /// Steps until the planner is done, at most `seconds`; the simulated time it took.
@@ -67,7 +67,7 @@ fn a_goal_across_the_floor_gives_a_clear_path_that_the_robot_follows() {
     nav.sim.step();
     let state = nav.state();
     assert!(state.is_valid() && !state.is_done(), "{state:?}");
-    let planner = nav.sim.nav.planner(nav.planner).unwrap();
+    let planner = nav.sim.nav().planner(nav.planner).unwrap();
     let plan = planner.waypoints();
     let space = planner.space.clone();
     assert!(plan.waypoints.len() >= 3, "{plan:?}");
@@ -120,7 +120,7 @@ fn a_goal_across_the_floor_gives_a_clear_path_that_the_robot_follows() {
     assert_eq!((done.valid, done.done), (1, 1));
     assert_eq!((done.waypoint_idx, done.waypoints_count), (0, 0));
     assert_eq!((done.goal.px, done.goal.py), (GOAL.0, GOAL.1));
-    let after = nav.sim.nav.planner(nav.planner).unwrap().waypoints();
+    let after = nav.sim.nav().planner(nav.planner).unwrap().waypoints();
     assert_eq!(after, plan);
     // And the robot stays put.
     let here = nav.sim.robots[0].pose;
@@ -140,7 +140,7 @@ fn a_goal_inside_a_wall_is_not_valid_and_the_robot_stays() {
         assert_eq!((state.valid, state.done), (0, 0), "{state:?}");
         assert_eq!((state.goal.px, state.goal.py), (x, y));
         assert_eq!(nav.sim.robots[0].pose, start);
-        let plan = nav.sim.nav.planner(nav.planner).unwrap().waypoints();
+        let plan = nav.sim.nav().planner(nav.planner).unwrap().waypoints();
         assert!(plan.waypoints.is_empty());
     }
 }
@@ -148,13 +148,13 @@ fn a_goal_inside_a_wall_is_not_valid_and_the_robot_stays() {
 #[test]
 fn a_disabled_planner_does_not_drive_until_enabled() {
     let (mut nav, _) = navigation();
-    nav.sim.nav.planner_mut(nav.planner).unwrap().enabled = false;
+    nav.sim.nav_mut().planner_mut(nav.planner).unwrap().enabled = false;
     nav.goal(-5.0, -3.0, 0.0);
     let start = nav.sim.robots[0].pose;
     support::run(&mut nav.sim, 3.0);
     assert_eq!(nav.sim.robots[0].pose, start);
     assert!(!nav.state().is_valid(), "not planned while disabled");
-    nav.sim.nav.planner_mut(nav.planner).unwrap().enabled = true;
+    nav.sim.nav_mut().planner_mut(nav.planner).unwrap().enabled = true;
     assert!(nav.run_until_done(60.0).is_some());
 }
 
@@ -167,7 +167,7 @@ fn a_new_goal_on_the_way_is_planned_afresh() {
     assert!((moved.x + 6.5).hypot(moved.y + 4.5) > 0.3, "{moved:?}");
     nav.goal(-6.5, -4.5, 0.0);
     nav.sim.step();
-    let plan = nav.sim.nav.planner(nav.planner).unwrap().waypoints();
+    let plan = nav.sim.nav().planner(nav.planner).unwrap().waypoints();
     let last = plan.waypoints.last().unwrap();
     assert!((last.px + 6.5).abs() <= 0.05 && (last.py + 4.5).abs() <= 0.05);
     assert!(nav.run_until_done(60.0).is_some());

@@ -25,7 +25,7 @@ pub(super) fn answer(
                 // fakelocalize moves the model in the simulation.
                 sim.robots[robot].pose = mean;
             }
-            match sim.nav.localizer_mut(driver.id) {
+            match sim.nav_mut().localizer_mut(driver.id) {
                 Some(localizer) => {
                     localizer.set_pose(mean, truth);
                     Reply::Ack(Body::Empty)
@@ -33,7 +33,7 @@ pub(super) fn answer(
                 None => Reply::Nack,
             }
         }
-        _ if asks(request, Localize::REQ_GET_PARTICLES) => match sim.nav.localizer(driver.id) {
+        _ if asks(request, Localize::REQ_GET_PARTICLES) => match sim.nav().localizer(driver.id) {
             Some(localizer) => Reply::Ack(Body::Localize(Localize::Particles(
                 localizer.particles(truth),
             ))),
@@ -45,7 +45,7 @@ pub(super) fn answer(
 
 /// A new subscriber gets the current belief at the next step, as amcl's setup sends one.
 pub(super) fn subscribed(sim: &mut Simulation, driver: &NavDriver<LocalizeSettings>) {
-    if let Some(localizer) = sim.nav.localizer_mut(driver.id) {
+    if let Some(localizer) = sim.nav_mut().localizer_mut(driver.id) {
         localizer.refresh();
     }
 }
@@ -55,7 +55,7 @@ pub(super) fn hypotheses(
     sim: &Simulation,
     driver: &NavDriver<LocalizeSettings>,
 ) -> Vec<(u8, Body)> {
-    let Some(localizer) = sim.nav.localizer(driver.id).filter(|l| l.updated) else {
+    let Some(localizer) = sim.nav().localizer(driver.id).filter(|l| l.updated) else {
         return Vec::new();
     };
     let truth = sim.robots[driver.spec.robot].pose;
@@ -67,7 +67,7 @@ pub(super) fn hypotheses(
 
 /// The estimate as position2d data, every step.
 pub(super) fn estimate(sim: &Simulation, driver: &NavDriver<LocalizeSettings>) -> Vec<(u8, Body)> {
-    let Some(localizer) = sim.nav.localizer(driver.id) else {
+    let Some(localizer) = sim.nav().localizer(driver.id) else {
         return Vec::new();
     };
     let pose = localizer.estimate(sim.robots[driver.spec.robot].pose);

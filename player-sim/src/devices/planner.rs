@@ -16,7 +16,7 @@ pub(super) fn answer(
     driver: &NavDriver<PlannerSpec>,
     request: &Message,
 ) -> Reply {
-    let Some(planner) = sim.nav.planner_mut(driver.id) else {
+    let Some(planner) = sim.nav_mut().planner_mut(driver.id) else {
         return Reply::Nack;
     };
     if asks(request, PlannerMsg::REQ_GET_WAYPOINTS) {
@@ -32,7 +32,7 @@ pub(super) fn answer(
 }
 
 pub(super) fn command(sim: &mut Simulation, driver: &NavDriver<PlannerSpec>, command: &Message) {
-    let Some(planner) = sim.nav.planner_mut(driver.id) else {
+    let Some(planner) = sim.nav_mut().planner_mut(driver.id) else {
         return;
     };
     match &command.body {
@@ -43,7 +43,7 @@ pub(super) fn command(sim: &mut Simulation, driver: &NavDriver<PlannerSpec>, com
 
 /// The state, on the steps the planner publishes it.
 pub(super) fn data(sim: &Simulation, driver: &NavDriver<PlannerSpec>) -> Vec<(u8, Body)> {
-    match sim.nav.planner(driver.id).filter(|p| p.publish) {
+    match sim.nav().planner(driver.id).filter(|p| p.publish) {
         Some(planner) => vec![data_of(PlannerMsg::DATA_STATE, planner.data())],
         None => Vec::new(),
     }

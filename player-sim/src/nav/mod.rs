@@ -2,10 +2,11 @@
 //! ([`localize`]) estimate where a robot is, `wavefront` ([`planner`]) plans over the map
 //! ([`cspace`], [`search`], [`waypoints`]) and drives the robot ([`steer`]).
 //!
-//! The drivers a `.cfg` names become devices whose [`Source`](crate::served::Source) carries
-//! a [`NavDriver`]; serving attaches their running state to the simulation (one per driver,
-//! however many devices show it), and every step runs the planners before the robots move
-//! and the localizers after.
+//! The drivers a `.cfg` names become devices that carry a [`NavDriver`]; serving attaches
+//! their running state to the simulation (one per driver, however many devices show it) as
+//! its [`Drivers`], and every step runs the planners before the robots move and the
+//! localizers after. The simulation knows them only as [`Drivers`]: this module depends on
+//! it, not it on this one.
 
 pub mod cspace;
 pub mod frames;
@@ -15,14 +16,14 @@ pub mod search;
 pub mod steer;
 pub mod waypoints;
 
+use std::any::Any;
 use std::sync::Arc;
 
 pub use localize::{LocalizeSettings, Localizer, LocalizerKind};
 pub use planner::{Planner, PlannerSettings};
 
 use crate::mapfile::SharedMap;
-use crate::served::{ServedDevice, Source};
-use crate::sim::{Command, Simulation};
+use crate::sim::{Command, Drivers, Simulation};
 use crate::world::Pose;
 
 /// One navigation driver block of a `.cfg`; two are the same when they are the same block.
@@ -101,33 +102,84 @@ impl Navigation {
     }
 }
 
-impl Simulation {
-    /// Starts the running state of every navigation driver the served devices show.
-    pub fn attach_navigation(&mut self, devices: &[ServedDevice]) {
-        for d in devices {
-            match &d.source {
-                Source::Localize(driver) | Source::Estimate(driver) => {
-                    self.attach_localizer(driver);
-                }
-                Source::Planner(driver) => self.attach_planner(driver),
-                _ => {}
+/// No navigation drivers: what [`Simulation::nav`] shows of a simulation without any.
+static NONE: Navigation = Navigation {
+    localizers: Vec::new(),
+    planners: Vec::new(),
+};
+
+impl Drivers for Navigation {
+    /// The planners' part of a step, before the robots move.
+    fn before_motion(&mut self, sim: &mut Simulation) {
+        let t = sim.time;
+        for k in 0..self.planners.len() {
+            let spec = self.planners[k].2.clone();
+            let pose = self.believed_pose(sim, spec.robot, spec.input);
+            let told = self.planners[k].1.step(t, pose);
+            if let Some((vx, va)) = told {
+                sim.robots[spec.robot].command = Command::Velocity { vx, vy: 0.0, va };
             }
         }
     }
 
+    /// The localizers' part of a step, once the robots moved.
+    fn after_motion(&mut self, sim: &mut Simulation) {
+        for (_, localizer) in &mut self.localizers {
+            localizer.step(sim.robots[localizer.settings.robot].pose);
+        }
+    }
+
+    fn clone_box(&self) -> Box<dyn Drivers> {
+        Box::new(self.clone())
+    }
+}
+
+impl Navigation {
+    /// Where a planner reading `input` for `robot` believes the robot is.
+    fn believed_pose(&self, sim: &Simulation, robot: usize, input: PoseInput) -> Pose {
+        let truth = sim.robots[robot].pose;
+        match input {
+            PoseInput::Odometry => truth,
+            PoseInput::Localizer(id) => self
+                .localizer(id)
+                .map_or(truth, |l| l.estimate(sim.robots[l.settings.robot].pose)),
+        }
+    }
+}
+
+impl Simulation {
+    /// The navigation drivers running with this simulation (none attached: none).
+    pub fn nav(&self) -> &Navigation {
+        let drivers: &dyn Any = self.drivers.as_ref();
+        drivers.downcast_ref::<Navigation>().unwrap_or(&NONE)
+    }
+
+    /// [`Simulation::nav`] to change: the simulation's drivers become navigation drivers
+    /// (none running) if they were not.
+    pub fn nav_mut(&mut self) -> &mut Navigation {
+        let drivers: &mut dyn Any = self.drivers.as_mut();
+        if !drivers.is::<Navigation>() {
+            self.drivers = Box::new(Navigation::default());
+        }
+        let drivers: &mut dyn Any = self.drivers.as_mut();
+        drivers
+            .downcast_mut::<Navigation>()
+            .expect("navigation drivers were just set")
+    }
+
     /// Starts a localizer for `driver`, unless one runs already.
     pub fn attach_localizer(&mut self, driver: &NavDriver<LocalizeSettings>) {
-        if self.nav.localizer(driver.id).is_none() {
+        if self.nav().localizer(driver.id).is_none() {
             let truth = self.robots[driver.spec.robot].pose;
             let localizer = Localizer::new((*driver.spec).clone(), truth);
-            self.nav.localizers.push((driver.id, localizer));
+            self.nav_mut().localizers.push((driver.id, localizer));
         }
     }
 
     /// Starts a planner for `driver`, unless one runs already. The robot's radius is half its
     /// width, as wavefront reads it from the position2d geometry.
     pub fn attach_planner(&mut self, driver: &NavDriver<PlannerSpec>) {
-        if self.nav.planner(driver.id).is_some() {
+        if self.nav().planner(driver.id).is_some() {
             return;
         }
         let spec = &driver.spec;
@@ -139,40 +191,13 @@ impl Simulation {
             spec.dist_penalty,
         );
         let planner = Planner::new(spec.settings.clone(), Arc::new(space));
-        self.nav
+        self.nav_mut()
             .planners
             .push((driver.id, planner, driver.spec.clone()));
     }
 
     /// Where a planner reading `input` for `robot` believes the robot is.
     pub fn believed_pose(&self, robot: usize, input: PoseInput) -> Pose {
-        let truth = self.robots[robot].pose;
-        match input {
-            PoseInput::Odometry => truth,
-            PoseInput::Localizer(id) => self
-                .nav
-                .localizer(id)
-                .map_or(truth, |l| l.estimate(self.robots[l.settings.robot].pose)),
-        }
-    }
-
-    /// The planners' part of a step, before the robots move.
-    pub(crate) fn steer_planners(&mut self) {
-        let t = self.time;
-        for k in 0..self.nav.planners.len() {
-            let spec = self.nav.planners[k].2.clone();
-            let pose = self.believed_pose(spec.robot, spec.input);
-            let told = self.nav.planners[k].1.step(t, pose);
-            if let Some((vx, va)) = told {
-                self.robots[spec.robot].command = Command::Velocity { vx, vy: 0.0, va };
-            }
-        }
-    }
-
-    /// The localizers' part of a step, once the robots moved.
-    pub(crate) fn update_localizers(&mut self) {
-        for (_, localizer) in &mut self.nav.localizers {
-            localizer.step(self.robots[localizer.settings.robot].pose);
-        }
+        self.nav().believed_pose(self, robot, input)
     }
 }

@@ -16,6 +16,7 @@ use player_proto::wire::{DevAddr, Interface};
 
 pub use beside::{cfgs_beside, devices_beside};
 pub use defaults::{default_devices, shift_ports};
+pub use navigation::attach_navigation;
 
 use crate::mapfile::SharedMap;
 use crate::nav::{LocalizeSettings, NavDriver, PlannerSpec};

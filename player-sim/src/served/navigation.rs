@@ -15,6 +15,7 @@ use crate::nav::localize::{DEFAULT_PARTICLES, DEFAULT_UPDATE_ANGLE, DEFAULT_UPDA
 use crate::nav::{
     LocalizeSettings, LocalizerKind, NavDriver, PlannerSettings, PlannerSpec, PoseInput,
 };
+use crate::sim::Simulation;
 use crate::world::{Pose, World};
 use crate::worldfile::WorldFileError;
 
@@ -274,4 +275,16 @@ fn wavefront(
         id: driver.id,
         spec: Arc::new(spec),
     })
+}
+
+/// Starts, in `sim`, the running state of every navigation driver the served `devices` show
+/// (one per driver block, however many devices show it).
+pub fn attach_navigation(sim: &mut Simulation, devices: &[ServedDevice]) {
+    for d in devices {
+        match &d.source {
+            Source::Localize(driver) | Source::Estimate(driver) => sim.attach_localizer(driver),
+            Source::Planner(driver) => sim.attach_planner(driver),
+            _ => {}
+        }
+    }
 }

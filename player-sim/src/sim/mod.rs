@@ -3,8 +3,11 @@
 //! same world and commands give the same trajectory.
 
 mod battery;
+mod beams;
 mod blobfinder;
+mod body_index;
 mod camera;
+mod drivers;
 mod geometry;
 mod gripper;
 mod nearby;
@@ -16,7 +19,9 @@ mod wander;
 
 pub use battery::BatteryState;
 pub use blobfinder::{Blob, blobs};
+pub use body_index::BodyIndex;
 pub use camera::{Frame, render_camera};
+pub use drivers::{Drivers, NoDrivers};
 pub use geometry::GroundBox;
 pub use gripper::{BEAM_BITS, GripperCommand, GripperState, Paddles};
 pub use nearby::{NearbyBoxes, SolidBox};
@@ -28,7 +33,8 @@ pub use sensors::{
 pub use walking::WalkerState;
 pub use wander::WanderState;
 
-use crate::nav::Navigation;
+use body_index::IndexCache;
+
 use crate::world::{Controller, Drive, Pose, World};
 
 /// What a robot is told to do.
@@ -69,10 +75,12 @@ pub struct Simulation {
     pub noise: Noise,
     /// For each obstacle, the (robot, gripper) holding it.
     pub carried_by: Vec<Option<(usize, usize)>>,
-    /// The navigation drivers (localizers, planners) the served `.cfg` files run.
-    pub nav: Navigation,
+    /// The drivers stepped with it (the navigation drivers the served `.cfg` files run).
+    pub drivers: Box<dyn Drivers>,
     /// One per `world.people`: where each walking person is.
     pub walkers: Vec<WalkerState>,
+    /// The robots bucketed by where they stand, for the sensors of this step.
+    bodies: IndexCache,
 }
 
 const STOP: Command = Command::Velocity {
@@ -112,8 +120,9 @@ impl Simulation {
             steps: 0,
             noise: Noise::default(),
             carried_by,
-            nav: Navigation::default(),
+            drivers: Box::new(NoDrivers),
             walkers,
+            bodies: IndexCache::default(),
         };
         for i in 0..sim.walkers.len() {
             sim.place_legs(i);
@@ -149,6 +158,12 @@ impl Simulation {
         }
     }
 
+    /// The robots bucketed by where they stand now (built once for all the sensors of a
+    /// step, again whenever a robot has moved).
+    pub fn body_index(&self) -> std::sync::Arc<BodyIndex> {
+        self.bodies.get(&self.world, &self.robots)
+    }
+
     /// Every solid thing but robot `except`, as boxes.
     pub fn boxes_except(&self, except: Option<usize>) -> impl Iterator<Item = GroundBox<'_>> + '_ {
         let robots = self
@@ -172,7 +187,9 @@ impl Simulation {
         robots.chain(obstacles)
     }
 
-    fn collides(&self, i: usize, pose: Pose) -> bool {
+    /// Would robot `i` at `pose` hit a wall or another body? `index` holds the robots where
+    /// they stood when it was built; none has moved more than `drift` since.
+    fn collides(&self, i: usize, pose: Pose, index: &BodyIndex, drift: f64) -> bool {
         let me = self.footprint(i, pose);
         if let Some(floor) = &self.world.floor {
             let hits_wall = if me.shape.is_empty() {
@@ -186,10 +203,29 @@ impl Simulation {
         }
         // Only boxes whose bounding circles meet can overlap: a cheap test first.
         let reach = me.bounding_radius();
-        self.boxes_except(Some(i)).any(|b| {
+        let meets = |b: &GroundBox| {
             let apart = (b.pose.x - pose.x).hypot(b.pose.y - pose.y);
             apart <= reach + b.bounding_radius() && b.overlaps(&me)
-        })
+        };
+        let mut near = Vec::new();
+        index.near(pose.x, pose.y, reach + drift, &mut near);
+        let robots = near
+            .into_iter()
+            .filter(|&k| k != i)
+            .map(|k| self.footprint(k, self.robots[k].pose));
+        let obstacles = self
+            .world
+            .obstacles
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| !self.holds(Some(i), *k))
+            .map(|(_, o)| GroundBox {
+                pose: body_at(o.pose, o.origin),
+                length: o.size[0],
+                width: o.size[1],
+                shape: &o.shape,
+            });
+        { robots }.chain(obstacles).any(|b| meets(&b))
     }
 
     /// Advances the world by one step of `world.interval` seconds.
@@ -200,8 +236,12 @@ impl Simulation {
                 self.wander(i, ranger);
             }
         }
-        self.steer_planners();
+        self.run_drivers(|drivers, sim| drivers.before_motion(sim));
         self.walk_people();
+        // Where the robots stand before they move; a robot that has moved since is within
+        // `drift` of where the index has it.
+        let index = BodyIndex::build(&self.world, &self.robots);
+        let mut drift = 0.0f64;
         for i in 0..self.robots.len() {
             let (vx, vy, va) = self.velocity_for(i);
             let vy = if self.world.robots[i].drive == Drive::Omni {
@@ -217,17 +257,20 @@ impl Simulation {
                 a: wrap(p.a + va * dt),
             };
             let moving = vx != 0.0 || vy != 0.0 || va != 0.0;
-            if moving && self.collides(i, next) {
+            if moving && self.collides(i, next, &index, drift) {
                 self.robots[i].stall = true;
                 self.robots[i].velocity = (0.0, 0.0, 0.0);
             } else {
+                let origin = self.world.robots[i].origin;
+                let (from, to) = (body_at(p, origin), body_at(next, origin));
+                drift = drift.max((to.x - from.x).hypot(to.y - from.y));
                 self.robots[i].stall = false;
                 self.robots[i].pose = next;
                 self.robots[i].velocity = (vx, vy, va);
             }
         }
         self.drain_batteries(dt);
-        self.update_localizers();
+        self.run_drivers(|drivers, sim| drivers.after_motion(sim));
         self.carry();
         for robot in 0..self.robots.len() {
             for gripper in 0..self.robots[robot].grippers.len() {

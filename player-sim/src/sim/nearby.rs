@@ -1,5 +1,6 @@
 //! Ray casting that scales with the number of robots: a sensor first keeps only the boxes
-//! (robots and obstacles) whose bounding circle its reach touches, once per scan, and then each
+//! (robots and obstacles) whose bounding circle its reach touches, once per scan (the robots
+//! asked are those the [`BodyIndex`](super::BodyIndex) has near it), and then each
 //! ray skips, without trigonometry, every kept box whose circle it misses or that lies beyond
 //! the nearest hit so far. With 256 robots a laser's 181 rays then test a handful of boxes each
 //! instead of all 255 others.
@@ -67,13 +68,15 @@ impl<'a> NearbyBoxes<'a> {
     /// Every robot but `except` and every obstacle whose bounding circle comes within `reach`
     /// of `(x, y)`.
     pub fn around(sim: &'a Simulation, except: Option<usize>, x: f64, y: f64, reach: f64) -> Self {
-        let robots = sim
-            .robots
-            .iter()
-            .zip(&sim.world.robots)
-            .enumerate()
-            .filter(|(i, _)| Some(*i) != except)
-            .map(|(_, (state, spec))| {
+        // The robots in the cells within reach, not every robot: in increasing order, as
+        // every robot was asked before, so that ties between boxes go the same way.
+        let mut near = Vec::new();
+        sim.body_index().near(x, y, reach, &mut near);
+        let robots = near
+            .into_iter()
+            .filter(move |&i| Some(i) != except)
+            .map(|i| {
+                let (state, spec) = (&sim.robots[i], &sim.world.robots[i]);
                 let body = body_at(state.pose, spec.origin);
                 (
                     body,
@@ -96,8 +99,7 @@ impl<'a> NearbyBoxes<'a> {
         let boxes = robots
             .chain(obstacles)
             .filter_map(|(pose, size, color, ranger_return, shape)| {
-                // Every sensor asks this of every robot: squares, not `hypot` (a thousand
-                // robots make a million of these a step).
+                // Squares, not `hypot`: every sensor asks this of the robots around it.
                 let radius = (size[0] * size[0] + size[1] * size[1]).sqrt() / 2.0;
                 let (ex, ey) = (pose.x - x, pose.y - y);
                 let within = reach + radius;
@@ -128,6 +130,39 @@ impl<'a> NearbyBoxes<'a> {
 
     pub fn is_empty(&self) -> bool {
         self.boxes.is_empty()
+    }
+
+    /// Box `k`'s bounding circle: centre and radius.
+    pub fn circle(&self, k: usize) -> (f64, f64, f64) {
+        let b = &self.boxes[k];
+        (b.x, b.y, b.radius)
+    }
+
+    /// [`NearbyBoxes::nearest_along`] among the boxes `candidates` lists (indices, in
+    /// increasing order): those the scan's per-beam lists (`sim/beams.rs`) have in the ray's
+    /// direction.
+    pub fn nearest_among(
+        &self,
+        candidates: &[u32],
+        (x, y): (f64, f64),
+        (dx, dy): (f64, f64),
+        max: f64,
+        counts: impl Fn(&SolidBox<'a>) -> bool,
+    ) -> Option<(f64, &SolidBox<'a>)> {
+        let mut best: Option<(f64, &SolidBox<'a>)> = None;
+        for b in candidates.iter().map(|&k| &self.boxes[k as usize]) {
+            if !counts(b) {
+                continue;
+            }
+            let limit = best.map_or(max, |(d, _)| d);
+            if !b.may_hit(x, y, dx, dy, limit) {
+                continue;
+            }
+            if let Some(d) = b.hit(x, y, dx, dy).filter(|&d| d <= limit) {
+                best = Some((d, b));
+            }
+        }
+        best
     }
 
     /// The nearest box along the ray from `(x, y)` at `angle`, within `max`: (distance, box).

@@ -1,9 +1,10 @@
 //! Sensors by ray casting: a ranger's beams against the floorplan, the boxes and the other
 //! robots; fiducial markers within range, field of view and line of sight.
 
+use super::beams::{BeamBoxes, Fan};
 use super::nearby::NearbyBoxes;
 use super::{Simulation, wrap};
-use crate::world::{FiducialSpec, Pose, RangerSpec};
+use crate::world::{FiducialSpec, OccupancyGrid, Pose, RangerSpec};
 
 /// `pose` (on the robot) composed with the robot's pose.
 pub fn on_robot(robot: Pose, local: Pose) -> Pose {
@@ -28,28 +29,34 @@ pub fn body_at(pose: Pose, origin: Pose) -> Pose {
 /// What a beam hit: its distance, and the `ranger_return` of the thing hit.
 type Hit = (f64, f64);
 
+/// The walls a sensor at `(x, y)` reaching `max` sees: none when its rays pass through them
+/// (negative `ranger_return`) or when no wall lies within its reach, so that its beams skip
+/// the grid traversal (most sensors of a swarm in a large hall).
+fn walls_seen(sim: &Simulation, x: f64, y: f64, max: f64) -> Option<&OccupancyGrid> {
+    let grid = sim.world.floor.as_ref()?;
+    (sim.world.floor_ranger_return >= 0.0 && grid.walls_within(x, y, max)).then_some(grid)
+}
+
 /// The nearest thing along a ray a ranger sees, up to `max`: the floorplan by grid traversal
-/// and the boxes near the sensor, except those with a negative `ranger_return`.
+/// (`walls`, see [`walls_seen`]) and the boxes near the sensor in the ray's direction
+/// (`ahead`), except those with a negative `ranger_return`.
 fn cast(
     sim: &Simulation,
+    walls: Option<&OccupancyGrid>,
     boxes: &NearbyBoxes,
-    x: f64,
-    y: f64,
+    ahead: &[u32],
+    (x, y): (f64, f64),
     angle: f64,
     max: f64,
 ) -> Option<Hit> {
     // One sine and cosine per beam, for the walls and the boxes alike.
     let (dy, dx) = angle.sin_cos();
-    let floor = (sim.world.floor_ranger_return >= 0.0)
-        .then(|| {
-            let grid = sim.world.floor.as_ref()?;
-            grid.raycast_along(x, y, dx, dy, max).map(|(d, _)| d)
-        })
-        .flatten()
-        .map(|d| (d, sim.world.floor_ranger_return));
+    let floor = walls
+        .and_then(|grid| grid.raycast_along(x, y, dx, dy, max))
+        .map(|(d, _)| (d, sim.world.floor_ranger_return));
     let limit = floor.map_or(max, |(d, _)| d);
     let thing = boxes
-        .nearest_along(x, y, dx, dy, limit, |b| b.ranger_return >= 0.0)
+        .nearest_among(ahead, (x, y), (dx, dy), limit, |b| b.ranger_return >= 0.0)
         .map(|(d, b)| (d, b.ranger_return));
     thing.or(floor)
 }
@@ -100,32 +107,44 @@ pub struct RangerReturns {
 
 /// [`ranger_scan`] with the intensities.
 pub fn ranger_returns(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> RangerReturns {
-    scan_with(sim, robot, ranger, |origin, max| {
-        let boxes = NearbyBoxes::around(sim, Some(robot), origin.x, origin.y, max);
-        move |angle| cast(sim, &boxes, origin.x, origin.y, angle, max)
+    scan_with(sim, robot, ranger, |origin, max, fan| {
+        let at = (origin.x, origin.y);
+        let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, max);
+        let walls = walls_seen(sim, at.0, at.1, max);
+        let by_beam = BeamBoxes::new(&boxes, at.0, at.1, fan);
+        move |beam, angle| {
+            let ahead = by_beam.of(beam);
+            // Nothing in this beam's direction: its maximum, without a sine or cosine.
+            if walls.is_none() && ahead.is_empty() {
+                return None;
+            }
+            cast(sim, walls, &boxes, ahead, at, angle, max)
+        }
     })
 }
 
 /// [`ranger_scan`] testing every box against every beam (no pruning): the reference.
 pub fn ranger_scan_exhaustive(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Vec<f64> {
-    let scan = scan_with(sim, robot, ranger, |origin, max| {
-        move |angle| cast_exhaustive(sim, robot, origin.x, origin.y, angle, max).map(|d| (d, 1.0))
+    let scan = scan_with(sim, robot, ranger, |origin, max, _| {
+        move |_, angle| {
+            cast_exhaustive(sim, robot, origin.x, origin.y, angle, max).map(|d| (d, 1.0))
+        }
     });
     scan.ranges
 }
 
-/// A ranger's beams, each cast by the caster `prepare` makes for a sensor's origin and reach.
-fn scan_with<F: Fn(f64) -> Option<Hit>>(
+/// A ranger's beams, each cast by the caster `prepare` makes for a sensor's origin, reach and
+/// beams; the caster is given a beam's number and direction.
+fn scan_with<F: Fn(usize, f64) -> Option<Hit>>(
     sim: &Simulation,
     robot: usize,
     ranger: &RangerSpec,
-    prepare: impl Fn(Pose, f64) -> F,
+    prepare: impl Fn(Pose, f64, Fan) -> F,
 ) -> RangerReturns {
     let base = on_robot(sim.robots[robot].pose, ranger.pose);
     let mut out = RangerReturns::default();
     for (index, sensor) in ranger.sensors.iter().enumerate() {
         let origin = on_robot(base, sensor.pose);
-        let caster = prepare(origin, sensor.max_range);
         // Tells this robot's rangers apart for the noise: where the ranger sits on the robot.
         let place = ranger.pose.x.to_bits() ^ ranger.pose.a.to_bits().rotate_left(17);
         let n = sensor.samples.max(1);
@@ -135,9 +154,15 @@ fn scan_with<F: Fn(f64) -> Option<Hit>>(
             0.0
         };
         let first = if n > 1 { -sensor.fov / 2.0 } else { 0.0 };
+        let fan = Fan {
+            first: origin.a + first,
+            step,
+            count: n,
+        };
+        let caster = prepare(origin, sensor.max_range, fan);
         for i in 0..n {
             let angle = origin.a + first + i as f64 * step;
-            let (reading, intensity) = match caster(angle) {
+            let (reading, intensity) = match caster(i, angle) {
                 // A beam that hits nothing reads the maximum, as a real one does: no noise.
                 None => (sensor.max_range, 0.0),
                 Some((range, intensity)) => (

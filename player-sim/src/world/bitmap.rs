@@ -3,6 +3,8 @@
 
 use std::path::Path;
 
+use super::wall_sums::WallSums;
+
 /// Which way a wall face looks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Face {
@@ -23,6 +25,8 @@ pub struct OccupancyGrid {
     pub origin: (f64, f64),
     /// Row-major from the south row up.
     pub(super) occupied: Vec<bool>,
+    /// Wall cells counted over rectangles, from `occupied`: reset whenever a cell changes.
+    pub(super) wall_sums: WallSums,
 }
 
 impl OccupancyGrid {
@@ -49,6 +53,7 @@ impl OccupancyGrid {
             cell: (size_x / w as f64, size_y / h as f64),
             origin: (centre_x - size_x / 2.0, centre_y - size_y / 2.0),
             occupied,
+            wall_sums: WallSums::default(),
         })
     }
 
@@ -67,6 +72,7 @@ impl OccupancyGrid {
             cell: (cell, cell),
             origin,
             occupied,
+            wall_sums: WallSums::default(),
         }
     }
 
@@ -89,6 +95,37 @@ impl OccupancyGrid {
         self.is_wall(cx, cy)
     }
 
+    /// Could a ray from `(x, y)` meet a wall within `max`? No when no wall cell lies in the
+    /// square of cells within `max` of the point (and a cell more, for rounding): then
+    /// [`Self::raycast_along`] surely finds none, for any direction.
+    pub fn walls_within(&self, x: f64, y: f64, max: f64) -> bool {
+        self.walls_in((x - max, y - max), (x + max, y + max))
+    }
+
+    /// Is any wall cell in the rectangle from `low` to `high` (world coordinates), or a cell
+    /// beyond its edges (a margin for rounding)? Yes for a rectangle that is not finite.
+    fn walls_in(&self, low: (f64, f64), high: (f64, f64)) -> bool {
+        if !(low.0.is_finite() && low.1.is_finite() && high.0.is_finite() && high.1.is_finite()) {
+            return true;
+        }
+        let (c0, r0) = self.cell_of(low.0, low.1);
+        let (c1, r1) = self.cell_of(high.0, high.1);
+        let within = |low: i64, high: i64, n: usize| {
+            let n = n as i64;
+            (
+                (low - 1).clamp(0, n) as usize,
+                (high + 2).clamp(0, n) as usize,
+            )
+        };
+        let (columns, rows) = (within(c0, c1, self.width), within(r0, r1, self.height));
+        if columns.0 >= columns.1 || rows.0 >= rows.1 {
+            return false;
+        }
+        self.wall_sums
+            .count(&self.occupied, self.width, columns, rows)
+            > 0
+    }
+
     /// Distance from `(x, y)` along `angle` to the first wall, if within `max` (grid traversal
     /// cell by cell: cost grows with distance in cells, not with the grid's size).
     pub fn raycast(&self, x: f64, y: f64, angle: f64, max: f64) -> Option<f64> {
@@ -105,7 +142,12 @@ impl OccupancyGrid {
 
     /// [`Self::raycast_face`] along the unit direction `(dx, dy)`: a caster that also tests
     /// boxes along the same beam computes its sine and cosine once.
+    /// A ray whose whole reach (the rectangle around it) holds no wall is not traversed.
     pub fn raycast_along(&self, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<(f64, Face)> {
+        let (ex, ey) = (x + dx * max, y + dy * max);
+        if !self.walls_in((x.min(ex), y.min(ey)), (x.max(ex), y.max(ey))) {
+            return None;
+        }
         let (mut cx, mut cy) = self.cell_of(x, y);
         if self.is_wall(cx, cy) {
             return Some((0.0, Face::EastWest));
@@ -167,6 +209,35 @@ impl OccupancyGrid {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_sensor_with_no_wall_within_reach_finds_none_in_any_direction() {
+        // 20 x 20 cells of 0.5 m, walls in one corner block and along the east edge.
+        let mut rows = vec![String::from("..................##"); 20];
+        rows[3] = String::from("...####...........##");
+        let rows: Vec<&str> = rows.iter().map(String::as_str).collect();
+        let grid = OccupancyGrid::from_rows(&rows, 0.5, (-2.0, -3.0));
+        let mut seen_clear = 0;
+        for i in 0..400 {
+            let (x, y) = (-4.0 + 0.037 * i as f64, -5.0 + 0.029 * (i * 7 % 400) as f64);
+            for max in [0.2, 1.0, 2.5, 6.0] {
+                if grid.walls_within(x, y, max) {
+                    continue;
+                }
+                seen_clear += 1;
+                for beam in 0..90 {
+                    let angle = beam as f64 * std::f64::consts::TAU / 90.0;
+                    assert_eq!(grid.raycast(x, y, angle, max), None, "({x}, {y}) {max}");
+                }
+            }
+        }
+        assert!(seen_clear > 100, "{seen_clear}");
+        assert!(grid.walls_within(6.5, 1.0, 0.1), "on the east wall");
+        assert!(
+            !grid.walls_within(100.0, 100.0, 5.0),
+            "far outside the grid"
+        );
+    }
 
     #[test]
     fn rays_stop_at_the_first_wall_cell() {

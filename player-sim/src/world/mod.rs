@@ -17,6 +17,7 @@ mod person;
 mod properties;
 mod raster;
 mod robot;
+mod wall_sums;
 
 use std::path::Path;
 

@@ -31,6 +31,7 @@ impl OccupancyGrid {
             cell: (cell, cell),
             origin: (min[0] - cell, min[1] - cell),
             occupied: vec![false; width * height],
+            wall_sums: Default::default(),
         }
     }
 
@@ -65,6 +66,7 @@ impl OccupancyGrid {
             cell: self.cell,
             origin: (self.origin.0 - left * cx, self.origin.1 - below * cy),
             occupied,
+            wall_sums: Default::default(),
         })
     }
 
@@ -95,6 +97,7 @@ impl OccupancyGrid {
     fn set(&mut self, cx: i64, cy: i64) {
         if cx >= 0 && cy >= 0 && (cx as usize) < self.width && (cy as usize) < self.height {
             self.occupied[cy as usize * self.width + cx as usize] = true;
+            self.wall_sums = Default::default();
         }
     }
 

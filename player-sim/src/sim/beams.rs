@@ -1,0 +1,144 @@
+//! Which boxes each beam of a scan may meet. A box seen from the sensor covers a narrow fan of
+//! directions (a robot 5 m away, about 6° of a laser's 180°): listing, once per scan, the
+//! beams inside each box's fan lets a beam test the two or three boxes in its direction
+//! instead of every box near the sensor, and a beam with none in its direction (and no wall
+//! within reach) reads its maximum without any trigonometry.
+//!
+//! The fans are widened by a beam on each side, so that a beam is listed for every box whose
+//! bounding circle it could touch ([`NearbyBoxes::nearest_among`] still tests each exactly).
+
+use std::f64::consts::{PI, TAU};
+
+use super::nearby::NearbyBoxes;
+
+/// Evenly spaced beams: beam `i` points at `first + i * step` (world angle).
+#[derive(Debug, Clone, Copy)]
+pub struct Fan {
+    pub first: f64,
+    pub step: f64,
+    pub count: usize,
+}
+
+/// For each beam of a [`Fan`], the boxes (indices into [`NearbyBoxes`]) in its direction, in
+/// increasing order.
+#[derive(Debug, Clone)]
+pub struct BeamBoxes {
+    /// Beam `i`'s boxes are `boxes[starts[i]..starts[i + 1]]`.
+    starts: Vec<u32>,
+    boxes: Vec<u32>,
+}
+
+impl BeamBoxes {
+    /// Lists the boxes of `nearby` by the beams from `(x, y)` of `fan` that may meet them.
+    pub fn new(nearby: &NearbyBoxes, x: f64, y: f64, fan: Fan) -> BeamBoxes {
+        let n = fan.count;
+        // Each box's beams as (first, last) ranges; at most two (a fan over the full circle
+        // may see one box at both of its ends).
+        let ranges: Vec<[(usize, usize); 2]> = (0..nearby.len())
+            .map(|k| {
+                let (cx, cy, radius) = nearby.circle(k);
+                beams_towards(fan, cx - x, cy - y, radius)
+            })
+            .collect();
+        let mut counts = vec![0u32; n + 1];
+        for (lo, hi) in ranges.iter().flatten().copied() {
+            for c in &mut counts[lo..hi] {
+                *c += 1;
+            }
+        }
+        let mut starts = vec![0u32; n + 1];
+        for i in 0..n {
+            starts[i + 1] = starts[i] + counts[i];
+        }
+        let mut next = starts.clone();
+        let mut boxes = vec![0u32; starts[n] as usize];
+        for (k, both) in ranges.iter().enumerate() {
+            for &(lo, hi) in both {
+                for i in lo..hi {
+                    boxes[next[i] as usize] = k as u32;
+                    next[i] += 1;
+                }
+            }
+        }
+        BeamBoxes { starts, boxes }
+    }
+
+    /// The boxes in beam `i`'s direction, in increasing order.
+    pub fn of(&self, i: usize) -> &[u32] {
+        &self.boxes[self.starts[i] as usize..self.starts[i + 1] as usize]
+    }
+}
+
+/// The beams of `fan` that may pass within `radius` of the point `(cx, cy)` (relative to the
+/// sensor), ahead of it: up to two half-open ranges of beam indices (empty ones `(0, 0)`).
+fn beams_towards(fan: Fan, cx: f64, cy: f64, radius: f64) -> [(usize, usize); 2] {
+    let all = [(0, fan.count), (0, 0)];
+    let distance = cx.hypot(cy);
+    // A box around the sensor, or a fan that is not spread: every beam (NaNs included).
+    let apart = distance > radius * (1.0 + 1e-9) + 1e-9;
+    let spread = fan.step > 1e-9 && fan.count >= 2;
+    if !apart || !spread {
+        return all;
+    }
+    let half = (radius / distance).asin();
+    let bearing = cy.atan2(cx);
+    // The box's bearing from the first beam, in [0, 2π); the fan spans [0, (count-1) step].
+    let from_first = (bearing - fan.first).rem_euclid(TAU);
+    if !from_first.is_finite() || !half.is_finite() {
+        return all;
+    }
+    // The box's fan, and the same a turn before and after: a fan of beams spanning nearly a
+    // turn sees a box near its first beam from its last ones too.
+    let last = (fan.count - 1) as f64;
+    let mut out = [(0, 0); 2];
+    let mut found = 0;
+    for centre in [from_first, from_first - TAU, from_first + TAU] {
+        let lo = ((centre - half) / fan.step).floor() - 1.0;
+        let hi = ((centre + half) / fan.step).ceil() + 1.0;
+        if hi < 0.0 || lo > last {
+            continue;
+        }
+        if found == 2 {
+            return all;
+        }
+        out[found] = (lo.max(0.0) as usize, hi.min(last) as usize + 1);
+        found += 1;
+    }
+    // Two ranges that meet (a fan wider than a turn): every beam, each listed once.
+    let [(a, b), (c, d)] = out;
+    if found == 2 && a < d && c < b {
+        return all;
+    }
+    // `half` is below π/2 here: a box never covers more than half a turn of directions.
+    debug_assert!(half < PI / 2.0);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_box_ahead_is_listed_for_the_beams_around_its_bearing() {
+        // 181 beams over 180°, the first at -90°.
+        let fan = Fan {
+            first: -PI / 2.0,
+            step: PI / 180.0,
+            count: 181,
+        };
+        let [(lo, hi), rest] = beams_towards(fan, 5.0, 0.0, 0.29);
+        assert_eq!(rest, (0, 0));
+        // asin(0.29 / 5) ≈ 3.3°: beams 86.7..93.3, widened by one.
+        assert!(lo <= 86 && hi >= 94 && lo >= 84 && hi <= 96, "{lo}..{hi}");
+        assert_eq!(beams_towards(fan, -5.0, 0.0, 0.29), [(0, 0), (0, 0)]);
+        assert_eq!(beams_towards(fan, 0.1, 0.0, 0.29), [(0, 181), (0, 0)]);
+        // A full circle of beams sees a box at its seam from both ends.
+        let ring = Fan {
+            first: 0.0,
+            step: TAU / 360.0,
+            count: 360,
+        };
+        let [(a, b), (c, d)] = beams_towards(ring, 5.0, 0.0, 0.29);
+        assert!(a == 0 && b > 0 && d == 360 && c < 360, "{a}..{b}, {c}..{d}");
+    }
+}
