@@ -149,20 +149,8 @@ impl<'a> NearbyBoxes<'a> {
         max: f64,
         counts: impl Fn(&SolidBox<'a>) -> bool,
     ) -> Option<(f64, &SolidBox<'a>)> {
-        let mut best: Option<(f64, &SolidBox<'a>)> = None;
-        for b in candidates.iter().map(|&k| &self.boxes[k as usize]) {
-            if !counts(b) {
-                continue;
-            }
-            let limit = best.map_or(max, |(d, _)| d);
-            if !b.may_hit(x, y, dx, dy, limit) {
-                continue;
-            }
-            if let Some(d) = b.hit(x, y, dx, dy).filter(|&d| d <= limit) {
-                best = Some((d, b));
-            }
-        }
-        best
+        let listed = candidates.iter().map(|&k| &self.boxes[k as usize]);
+        nearest_of(listed.filter(|b| counts(b)), (x, y), (dx, dy), max)
     }
 
     /// The nearest box along the ray from `(x, y)` at `angle`, within `max`: (distance, box).
@@ -193,17 +181,12 @@ impl<'a> NearbyBoxes<'a> {
         max: f64,
         counts: impl Fn(&SolidBox<'a>) -> bool,
     ) -> Option<(f64, &SolidBox<'a>)> {
-        let mut best: Option<(f64, &SolidBox<'a>)> = None;
-        for b in self.boxes.iter().filter(|b| counts(b)) {
-            let limit = best.map_or(max, |(d, _)| d);
-            if !b.may_hit(x, y, dx, dy, limit) {
-                continue;
-            }
-            if let Some(d) = b.hit(x, y, dx, dy).filter(|&d| d <= limit) {
-                best = Some((d, b));
-            }
-        }
-        best
+        nearest_of(
+            self.boxes.iter().filter(|b| counts(b)),
+            (x, y),
+            (dx, dy),
+            max,
+        )
     }
 
     /// Every box along the ray within `max`, in no particular order: (distance, box).
@@ -220,4 +203,25 @@ impl<'a> NearbyBoxes<'a> {
             .filter(move |b| b.may_hit(x, y, dx, dy, max))
             .filter_map(move |b| b.hit(x, y, dx, dy).filter(|&d| d <= max).map(|d| (d, b)))
     }
+}
+
+/// The nearest of `boxes` along the ray from `(x, y)` in the unit direction `(dx, dy)`, within
+/// `max`; each box's cheap bounding test is made against the nearest hit so far.
+fn nearest_of<'b, 'a: 'b>(
+    boxes: impl Iterator<Item = &'b SolidBox<'a>>,
+    (x, y): (f64, f64),
+    (dx, dy): (f64, f64),
+    max: f64,
+) -> Option<(f64, &'b SolidBox<'a>)> {
+    let mut best: Option<(f64, &SolidBox<'a>)> = None;
+    for b in boxes {
+        let limit = best.map_or(max, |(d, _)| d);
+        if !b.may_hit(x, y, dx, dy, limit) {
+            continue;
+        }
+        if let Some(d) = b.hit(x, y, dx, dy).filter(|&d| d <= limit) {
+            best = Some((d, b));
+        }
+    }
+    best
 }
