@@ -307,7 +307,7 @@ fn both_names_of_the_protocol_are_accepted() {
 
 #[test]
 fn hundreds_of_viewers_connect_at_once() {
-    const VIEWERS: usize = 300;
+    const VIEWERS: usize = 500;
     let sim = serve_world("stage-worlds/simple.world");
     let port = sim.port(6665).expect("simple.world serves 6665");
     let (_relay, live) = relay_with_front(port, &format!("/127.0.0.1:{port}/laser/0/scan"));
