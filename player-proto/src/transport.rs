@@ -5,6 +5,7 @@
 //! reports the bad message and the caller carries on. A broken frame (bad header, lying size)
 //! or a peer closing mid-message does end it, with the stream offset in the error.
 
+use std::borrow::Borrow;
 use std::io;
 
 use bytes::BytesMut;
@@ -132,6 +133,36 @@ pub async fn write_message<W: AsyncWrite + Unpin>(
     out.write_all(scratch).await
 }
 
+/// How many bytes [`write_messages`] gathers before it writes: a burst of small messages
+/// leaves in one call, a backlog of big ones in a few.
+const GATHER_BYTES: usize = 256 * 1024;
+
+/// Encodes `messages` back to back into `scratch` and writes them in as few calls as
+/// [`GATHER_BYTES`] allows — one for a step's pose and scan — so that the peer gets one
+/// segment and one wake-up, not one per message. Messages are never split between calls
+/// except when one alone exceeds the gathering size.
+pub async fn write_messages<W: AsyncWrite + Unpin, M: Borrow<Message>>(
+    out: &mut W,
+    messages: &[M],
+    scratch: &mut BytesMut,
+) -> io::Result<()> {
+    scratch.clear();
+    for message in messages {
+        let message: &Message = message.borrow();
+        let len = message.encoded_len();
+        if !scratch.is_empty() && scratch.len() + len > GATHER_BYTES {
+            out.write_all(scratch).await?;
+            scratch.clear();
+        }
+        scratch.reserve(len);
+        message.encode(scratch);
+    }
+    if !scratch.is_empty() {
+        out.write_all(scratch).await?;
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -173,6 +204,77 @@ mod tests {
             }
         }
         writer.await.unwrap();
+        assert!(matches!(reader.read().await.unwrap(), Incoming::Closed));
+    }
+
+    /// Counts the write calls that reach it.
+    #[derive(Default)]
+    struct CountingSink {
+        bytes: Vec<u8>,
+        writes: usize,
+    }
+
+    impl AsyncWrite for CountingSink {
+        fn poll_write(
+            mut self: std::pin::Pin<&mut Self>,
+            _: &mut std::task::Context<'_>,
+            buf: &[u8],
+        ) -> std::task::Poll<io::Result<usize>> {
+            self.writes += 1;
+            self.bytes.extend_from_slice(buf);
+            std::task::Poll::Ready(Ok(buf.len()))
+        }
+        fn poll_flush(
+            self: std::pin::Pin<&mut Self>,
+            _: &mut std::task::Context<'_>,
+        ) -> std::task::Poll<io::Result<()>> {
+            std::task::Poll::Ready(Ok(()))
+        }
+        fn poll_shutdown(
+            self: std::pin::Pin<&mut Self>,
+            _: &mut std::task::Context<'_>,
+        ) -> std::task::Poll<io::Result<()>> {
+            std::task::Poll::Ready(Ok(()))
+        }
+    }
+
+    #[tokio::test]
+    async fn a_burst_leaves_in_one_write_and_a_backlog_in_a_few_whole_messages_each() {
+        let small = [scan_message(), scan_message()];
+        let mut sink = CountingSink::default();
+        let mut scratch = BytesMut::new();
+        write_messages(&mut sink, &small, &mut scratch)
+            .await
+            .unwrap();
+        assert_eq!(sink.writes, 1);
+
+        // 300 scans of 1 000 beams (some 4 KiB each): more than one gathering's worth.
+        let big = Message::typed(
+            DevAddr::local(Interface::LASER, 0),
+            MsgType::Data,
+            Laser::Scan(LaserScan {
+                ranges: vec![1.5; 1000],
+                ..LaserScan::default()
+            }),
+        );
+        let backlog = vec![big.clone(); 300];
+        let mut sink = CountingSink::default();
+        write_messages(&mut sink, &backlog, &mut scratch)
+            .await
+            .unwrap();
+        let total = backlog.len() * big.encoded_len();
+        assert_eq!(sink.bytes.len(), total);
+        assert_eq!(
+            sink.writes,
+            total.div_ceil(GATHER_BYTES / big.encoded_len() * big.encoded_len())
+        );
+        let mut reader = MessageReader::new(&sink.bytes[..], FrameDecoder::default());
+        for _ in 0..backlog.len() {
+            match reader.read().await.unwrap() {
+                Incoming::Message(m) => assert_eq!(m, big),
+                other => panic!("expected a message, got {other:?}"),
+            }
+        }
         assert!(matches!(reader.read().await.unwrap(), Incoming::Closed));
     }
 

@@ -215,9 +215,7 @@ fn step_loop(
                 })
                 .collect()
         };
-        for (addr, subtype, body, time) in outgoing {
-            publisher.publish(addr, subtype, body, time);
-        }
+        publisher.publish_all(outgoing);
         steps += 1;
         if let Some(period) = period {
             let due = started + period.mul_f64(steps as f64);

@@ -2,7 +2,7 @@
 
 use std::sync::Arc;
 
-use super::state::ServerState;
+use super::state::{ServerState, SessionState};
 use crate::message::{Body, Message};
 use crate::wire::{DevAddr, MsgType};
 
@@ -17,28 +17,55 @@ impl Publisher {
     /// Publishes `body` as DATA of the device at `addr` (its `robot` is the port; host is filled
     /// in). Returns how many connections it was queued for.
     pub fn publish(&self, addr: DevAddr, subtype: u8, body: Body, timestamp: f64) -> usize {
-        let Ok(port) = u16::try_from(addr.robot) else {
-            return 0;
-        };
-        let full = DevAddr {
-            host: self.state.host,
-            ..addr
-        };
-        let mut message = Message::new(full, MsgType::Data, subtype, body);
-        message.header.timestamp = timestamp;
-        let message = Arc::new(message);
-        let key = (addr.interf, addr.index);
+        self.publish_all([(addr, subtype, body, timestamp)])
+    }
+
+    /// Publishes several messages (a simulation step's data, say) and only then wakes each
+    /// connection's writer, once: a client subscribed to a robot's pose and its laser gets
+    /// both in one write — one segment and one wake-up on its side instead of two. Returns
+    /// how many deliveries were queued in all.
+    pub fn publish_all(
+        &self,
+        messages: impl IntoIterator<Item = (DevAddr, u8, Body, f64)>,
+    ) -> usize {
+        let mut touched: Vec<Arc<SessionState>> = Vec::new();
         let mut delivered = 0;
-        for session in self.state.sessions_on(port) {
-            if session
-                .subscriptions
-                .lock()
-                .expect("subscriptions")
-                .contains(&key)
-            {
-                session.send(message.clone());
-                delivered += 1;
+        for (addr, subtype, body, timestamp) in messages {
+            let Ok(port) = u16::try_from(addr.robot) else {
+                continue;
+            };
+            let full = DevAddr {
+                host: self.state.host,
+                ..addr
+            };
+            let mut message = Message::new(full, MsgType::Data, subtype, body);
+            message.header.timestamp = timestamp;
+            let message = Arc::new(message);
+            let key = (addr.interf, addr.index);
+            for session in self.state.sessions_on(port) {
+                if session
+                    .subscriptions
+                    .lock()
+                    .expect("subscriptions")
+                    .contains(&key)
+                {
+                    session.queue_only(message.clone());
+                    delivered += 1;
+                    // A step publishes a robot's devices one after another: the same
+                    // session comes back in a row, and is remembered once.
+                    if !touched
+                        .last()
+                        .is_some_and(|last| Arc::ptr_eq(last, &session))
+                    {
+                        touched.push(session);
+                    }
+                }
             }
+        }
+        touched.sort_unstable_by_key(Arc::as_ptr);
+        touched.dedup_by(|a, b| Arc::ptr_eq(a, b));
+        for session in touched {
+            session.wake();
         }
         delivered
     }

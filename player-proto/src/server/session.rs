@@ -21,7 +21,7 @@ use crate::interfaces::player::{
     self, CLOSE_MODE, DevList, DeviceReq, DriverInfo, ERROR_MODE, OPEN_MODE, Player,
 };
 use crate::message::{Body, Message};
-use crate::transport::{Incoming, MessageReader, write_message};
+use crate::transport::{Incoming, MessageReader, write_messages};
 use crate::wire::{Banner, DevAddr, FrameDecoder, Interface, MsgType, PlayerString};
 
 fn now() -> f64 {
@@ -87,12 +87,10 @@ async fn write_loop(mut out: OwnedWriteHalf, session: Arc<SessionState>) {
     let mut scratch = BytesMut::with_capacity(64 * 1024);
     loop {
         let ready = session.queue.lock().expect("queue").take_sendable();
-        for message in &ready {
-            if let Err(e) = write_message(&mut out, message, &mut scratch).await {
-                tracing::debug!("client write failed: {e}");
-                session.close();
-                return;
-            }
+        if let Err(e) = write_messages(&mut out, &ready, &mut scratch).await {
+            tracing::debug!("client write failed: {e}");
+            session.close();
+            return;
         }
         if session.is_closed() {
             let _ = out.shutdown().await;

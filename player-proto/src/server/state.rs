@@ -49,7 +49,18 @@ impl SessionState {
 
     /// Queues a message and wakes the writer.
     pub fn send(&self, message: Arc<Message>) {
+        self.queue_only(message);
+        self.wake_writer.notify_one();
+    }
+
+    /// Queues a message without waking the writer: [`Self::wake`] follows once the rest of
+    /// a batch is queued too, so that the batch leaves in one write.
+    pub fn queue_only(&self, message: Arc<Message>) {
         self.queue.lock().expect("queue").push(message);
+    }
+
+    /// Wakes the writer for what was queued.
+    pub fn wake(&self) {
         self.wake_writer.notify_one();
     }
 
