@@ -15,7 +15,7 @@ seconds=${1:-600}
 world=${2:-stage-worlds/swarm.world}
 out=${3:-/dev/null}
 mode=${4:-}
-binary=target/release/pv3d
+binary=${PV3D:-target/release/pv3d}   # PV3D=path: another build, to compare
 [ -x "$binary" ] || cargo build --release -p pv3d
 
 display=":$((90 + RANDOM % 300))"
