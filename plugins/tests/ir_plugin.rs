@@ -5,6 +5,7 @@ mod support;
 
 use framework::PluginConfig;
 use framework::config::Param;
+use framework::scene::Vertex;
 use glam::Vec3;
 use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::ir::{Ir, IrData, IrPose};
@@ -52,7 +53,15 @@ fn each_ranger_is_a_cone_along_its_heading_as_long_as_its_reading() {
     assert!(h.run_changes_scene(plugin.as_mut()));
     let node = h.scene.get(plugin.node().unwrap()).unwrap();
     assert_eq!(node.parent, Some(robot));
-    let triangles = &node.geometry.triangles;
+    let fans = &node.geometry.fans;
+    let triangles: Vec<Vertex> = (fans.iter())
+        .flat_map(|f| {
+            (f.fill_triangles().flatten()).map(|pos| Vertex {
+                pos,
+                color: f.fill.unwrap(),
+            })
+        })
+        .collect();
     assert!(!triangles.is_empty());
     assert_eq!(triangles[0].color.0[..3], [230, 120, 60], "infrared colour");
     // The front cone (the triangles ahead of the robot's middle) reaches 0.5 m.

@@ -82,19 +82,18 @@ fn the_best_hypothesis_is_an_arrow_in_its_95_percent_ellipse() {
     let centre = Vec3::new(2.0, 1.0, 0.0);
     // The filled ellipse and the arrow are the only triangles, all about the best mean: the
     // arrow's tip 0.3 m ahead, the fill reaching √5.99 σ ≈ 0.245 m.
-    let reach = node
-        .geometry
-        .triangles
-        .iter()
-        .map(|v| (v.pos - centre).truncate().length())
+    let g = &node.geometry;
+    let arrow = g.triangles.iter().map(|v| v.pos);
+    let fill: Vec<Vec3> = (g.fans.iter())
+        .flat_map(|f| f.fill_triangles().flatten())
+        .collect();
+    assert!(g.fans.iter().all(|f| f.fill.unwrap().0[3] < 255));
+    let reach = (arrow.chain(fill.iter().copied()))
+        .map(|p| (p - centre).truncate().length())
         .fold(0.0, f32::max);
     assert!((reach - 0.3).abs() < 1e-3, "{reach}");
-    let furthest_fill = node
-        .geometry
-        .triangles
-        .iter()
-        .filter(|v| v.color.0[3] < 255)
-        .map(|v| (v.pos - centre).truncate().length())
+    let furthest_fill = (fill.iter())
+        .map(|p| (*p - centre).truncate().length())
         .fold(0.0, f32::max);
     assert!((furthest_fill - 0.2448).abs() < 0.001, "{furthest_fill}");
     // The other hypothesis is an outline around (−3, 0) of radius √5.99 · √0.5 ≈ 1.73 m.

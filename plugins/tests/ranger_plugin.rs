@@ -112,7 +112,8 @@ fn a_laser_like_ranger_is_drawn_as_the_laser_plugin_draws_a_scan() {
         2,
         "the 8 m reading is no return"
     );
-    assert_eq!(object.geometry.triangles.len(), 2 * 3, "free space filled");
+    let fan = &object.geometry.fans[0];
+    assert_eq!(fan.fill_triangles().count(), 2, "free space filled");
     let world = |p: Vec3| scene.world_transform(node).transform_point3(p);
     // First reading: 1 m to the right of a ranger 5 cm ahead of the robot, 20 cm up.
     let first = world(object.geometry.points[0].pos);
@@ -164,14 +165,18 @@ fn a_sonar_ring_served_as_ranger_is_one_cone_per_element() {
         push_ranges(d, vec![1.0, 1.0, 3.0, 1.0, 1.0, 1.0, 1.0, 1.0]);
     });
     let g = &scene.get(node).unwrap().geometry;
-    assert_eq!(g.triangles.len(), 8 * ARC_SEGMENTS * 3, "eight cones");
+    assert_eq!(g.fans.len(), 8, "eight cones");
+    assert!(
+        (g.fans.iter()).all(|f| f.fill_triangles().count() == ARC_SEGMENTS),
+        "filled"
+    );
     assert!(g.points.is_empty(), "not drawn as a scan");
     // The third element looks along +y from (0, 0.2): its cone reaches (0, 3.2) and is the
     // device's 15° wide (its config wins over the 60° coneAngle default).
-    let cone = &g.triangles[2 * ARC_SEGMENTS * 3..3 * ARC_SEGMENTS * 3];
-    let tip = cone[(ARC_SEGMENTS / 2) * 3 + 1].pos;
+    let cone = &g.fans[2];
+    let tip = cone.rim[ARC_SEGMENTS / 2];
     assert!((tip - Vec3::new(0.0, 3.2, 0.0)).length() < 1e-4, "{tip}");
-    let edge = cone[1].pos - Vec3::new(0.0, 0.2, 0.0);
+    let edge = cone.rim[0] - Vec3::new(0.0, 0.2, 0.0);
     let opening = edge.angle_between(Vec3::Y).to_degrees();
     assert!((opening - 7.5).abs() < 1e-2, "half opening {opening}°");
 }

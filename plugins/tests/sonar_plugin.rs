@@ -81,18 +81,20 @@ fn one_cone_per_transducer_at_its_pose_as_long_as_its_reading() {
     let object = scene.get(node).unwrap();
     assert_eq!(object.parent, Some(robot));
     let g = &object.geometry;
-    assert_eq!(g.triangles.len(), 2 * ARC_SEGMENTS * 3, "two filled cones");
-    assert_eq!(g.lines.len(), 2 * (ARC_SEGMENTS + 2) * 2, "two outlines");
+    let triangles: Vec<[Vec3; 3]> = g.fans.iter().flat_map(|f| f.fill_triangles()).collect();
+    let segments = g.fans.iter().flat_map(|f| f.outline_segments()).count();
+    assert_eq!(triangles.len(), 2 * ARC_SEGMENTS, "two filled cones");
+    assert_eq!(segments, 2 * (ARC_SEGMENTS + 2), "two outlines");
     // The second cone's axis ends 2 m along +y from (0, 0.2), on a robot at x = 5.
-    let second_tip = g.triangles[ARC_SEGMENTS * 3 + (ARC_SEGMENTS / 2) * 3 + 1].pos;
+    let second_tip = triangles[ARC_SEGMENTS + ARC_SEGMENTS / 2][1];
     let world = scene.world_transform(node).transform_point3(second_tip);
     assert!(
         (world - Vec3::new(5.0, 2.2, 0.0)).length() < 1e-5,
         "{world}"
     );
     // Every vertex of the first cone is within 1 m of its transducer.
-    for v in &g.triangles[..ARC_SEGMENTS * 3] {
-        assert!((v.pos - Vec3::new(0.2, 0.0, 0.0)).length() <= 1.0 + 1e-5);
+    for p in triangles[..ARC_SEGMENTS].iter().flatten() {
+        assert!((*p - Vec3::new(0.2, 0.0, 0.0)).length() <= 1.0 + 1e-5);
     }
 }
 
@@ -121,15 +123,18 @@ fn without_geometry_the_transducers_are_drawn_on_a_ring_and_state_is_saved() {
     ));
     assert!(h.run_changes_scene(plugin.as_mut()));
     let object = h.scene.get(plugin.node().unwrap()).unwrap();
-    assert_eq!(object.geometry.triangles.len(), 4 * ARC_SEGMENTS * 3);
-    assert!(object.geometry.lines.is_empty(), "outlines switched off");
+    let fans = &object.geometry.fans;
+    assert_eq!(fans.len(), 4);
+    assert!(
+        fans.iter()
+            .all(|f| f.fill_triangles().count() == ARC_SEGMENTS)
+    );
+    assert!(
+        fans.iter().all(|f| f.outline.is_none()),
+        "outlines switched off"
+    );
     // Four cones, facing +x, +y, -x, -y: their far points spread all round.
-    let far: Vec<Vec3> = object
-        .geometry
-        .triangles
-        .chunks(ARC_SEGMENTS * 3)
-        .map(|c| c[(ARC_SEGMENTS / 2) * 3 + 1].pos)
-        .collect();
+    let far: Vec<Vec3> = fans.iter().map(|f| f.rim[ARC_SEGMENTS / 2]).collect();
     assert!(
         (far[0] - Vec3::new(1.2, 0.0, 0.0)).length() < 1e-4,
         "{far:?}"

@@ -19,7 +19,7 @@ use glam::{Affine3A, Vec3};
 
 pub use filter::{FilterChain, GlslKernel, Kernel};
 pub use filtered_picture::FilteredPicture;
-pub use geometry::{Geometry, Label, MeshVertex, Rgba, Vertex};
+pub use geometry::{Fan, Geometry, Label, MeshVertex, Rgba, Vertex};
 pub use image::{Facing, ImageError, ImageQuad, PixelFormat, Pixels, Sampling};
 pub use virtual_view::{ViewError, ViewOutput, VirtualView};
 

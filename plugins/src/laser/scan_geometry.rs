@@ -146,15 +146,12 @@ pub fn scan_geometry(scan: &Readings, style: &ScanStyle, geometry: &mut Geometry
     geometry.clear();
     let lift = Vec3::Z * style.height;
     let rim: Vec<(Vec3, bool)> = endpoints(scan).map(|(p, hit)| (p + lift, hit)).collect();
-    if style.fill_cspace && rim.len() > 1 {
+    if rim.len() > 1 {
+        // The free space: one fan for the fill and the outline (centre, rim, back).
+        let fill = style.fill_cspace.then(|| style.color.with_alpha(60));
+        let outline = style.draw_cspace.then(|| style.color.with_alpha(160));
         let points: Vec<Vec3> = rim.iter().map(|(p, _)| *p).collect();
-        geometry.fan(lift, &points, style.color.with_alpha(60));
-    }
-    if style.draw_cspace && rim.len() > 1 {
-        let mut outline = Vec::with_capacity(rim.len() + 1);
-        outline.push(lift);
-        outline.extend(rim.iter().map(|(p, _)| *p));
-        geometry.polygon_outline(&outline, style.color.with_alpha(160));
+        geometry.outlined_fan(lift, points, fill, outline);
     }
     if style.lines {
         for pair in rim.windows(2) {
@@ -210,13 +207,26 @@ mod tests {
             ..ScanStyle::default()
         };
         scan_geometry(&scan(vec![1.0; 181]), &style, &mut g);
+        let fan = &g.fans[0];
         assert_eq!(
-            g.triangles.len(),
-            180 * 3,
+            fan.fill_triangles().count(),
+            180,
             "one triangle between neighbouring readings"
         );
-        assert_eq!(g.lines.len(), 182 * 2, "origin, 181 endpoints, closed");
-        assert!(g.points.is_empty());
+        assert_eq!(
+            fan.outline_segments().count(),
+            182,
+            "origin, 181 endpoints, closed"
+        );
+        assert!(g.points.is_empty() && g.triangles.is_empty() && g.lines.is_empty());
+
+        let outline_only = ScanStyle {
+            fill_cspace: false,
+            ..style
+        };
+        scan_geometry(&scan(vec![1.0; 181]), &outline_only, &mut g);
+        assert_eq!(g.fans[0].fill_triangles().count(), 0);
+        assert_eq!(g.fans[0].outline_segments().count(), 182);
     }
 
     #[test]

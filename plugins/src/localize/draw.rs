@@ -55,7 +55,7 @@ pub fn hypotheses(geometry: &mut Geometry, data: &LocalizeData, color: Rgba) {
         if Some(*hypothesis) == best {
             let mut closed = rim.clone();
             closed.push(rim[0]);
-            geometry.fan(on_floor(centre), &closed, color.with_alpha(FILL_ALPHA));
+            geometry.fan(on_floor(centre), closed, color.with_alpha(FILL_ALPHA));
             geometry.polygon_outline(&rim, color);
             let [tip, left, right] = arrow(centre, hypothesis.mean.pa as f32);
             geometry.triangle(tip, left, right, color);

@@ -158,7 +158,7 @@ mod tests {
         };
         let shape = ranger_geometry(&one, &style.0, &style.1, &mut g);
         assert_eq!(shape, RangerShape::Cones);
-        assert!(!g.triangles.is_empty());
+        assert!(g.fans[0].fill.is_some(), "a filled cone");
     }
 
     #[test]

@@ -106,26 +106,34 @@ pub fn cone_geometry(
             })
             .collect();
         let echo = range < style.no_return;
-        if style.fill && echo {
-            geometry.fan(t.origin, &rim, style.color.with_alpha(style.fill_alpha));
-        }
-        if style.outline || !echo {
-            let mut outline = Vec::with_capacity(rim.len() + 1);
-            outline.push(t.origin);
-            outline.extend_from_slice(&rim);
+        let fill = (style.fill && echo).then(|| style.color.with_alpha(style.fill_alpha));
+        let outline = (style.outline || !echo).then(|| {
             let alpha = if echo {
                 style.fill_alpha.saturating_mul(2).max(160)
             } else {
                 style.fill_alpha / 2
             };
-            geometry.polygon_outline(&outline, style.color.with_alpha(alpha));
-        }
+            style.color.with_alpha(alpha)
+        });
+        geometry.outlined_fan(t.origin, rim, fill, outline);
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An outline's segment and its colour.
+    type Segment = ([Vec3; 2], Rgba);
+
+    /// The fills' triangles and the outlines' segments of every cone.
+    fn drawn(g: &Geometry) -> (Vec<[Vec3; 3]>, Vec<Segment>) {
+        let triangles = g.fans.iter().flat_map(|f| f.fill_triangles()).collect();
+        let segments = (g.fans.iter())
+            .flat_map(|f| f.outline_segments().map(|s| (s, f.outline.unwrap())))
+            .collect();
+        (triangles, segments)
+    }
 
     #[test]
     fn a_cone_opens_along_the_heading_and_is_as_long_as_the_reading() {
@@ -135,16 +143,17 @@ mod tests {
         };
         let mut g = Geometry::default();
         cone_geometry(&[t], &[2.0], &ConeStyle::default(), &mut g);
-        assert_eq!(g.triangles.len(), ARC_SEGMENTS * 3);
-        assert_eq!(g.lines.len(), (ARC_SEGMENTS + 2) * 2, "origin, rim, closed");
+        let (triangles, segments) = drawn(&g);
+        assert_eq!(triangles.len(), ARC_SEGMENTS);
+        assert_eq!(segments.len(), ARC_SEGMENTS + 2, "origin, rim, closed");
         // The middle of the arc is 2 m along +y from the transducer.
-        let middle = g.triangles[(ARC_SEGMENTS / 2) * 3 + 1].pos;
+        let middle = triangles[ARC_SEGMENTS / 2][1];
         assert!(
             (middle - Vec3::new(0.2, 2.0, 0.1)).length() < 1e-5,
             "{middle}"
         );
-        for v in &g.triangles {
-            assert!((v.pos - t.origin).length() <= 2.0 + 1e-5);
+        for p in triangles.iter().flatten() {
+            assert!((*p - t.origin).length() <= 2.0 + 1e-5);
         }
     }
 
@@ -157,17 +166,14 @@ mod tests {
         };
         let mut g = Geometry::default();
         cone_geometry(&evenly_spaced(2, 0.2), &[5.0, 1.0], &style, &mut g);
+        let (triangles, segments) = drawn(&g);
+        assert_eq!(triangles.len(), ARC_SEGMENTS, "only the echo is filled");
         assert_eq!(
-            g.triangles.len(),
-            ARC_SEGMENTS * 3,
-            "only the echo is filled"
-        );
-        assert_eq!(
-            g.lines.len(),
-            (ARC_SEGMENTS + 2) * 2,
+            segments.len(),
+            ARC_SEGMENTS + 2,
             "only the no-echo outlined"
         );
-        assert!(g.lines.iter().all(|v| v.color.0[3] < style.fill_alpha));
+        assert!(segments.iter().all(|(_, c)| c.0[3] < style.fill_alpha));
     }
 
     #[test]
@@ -177,12 +183,11 @@ mod tests {
         cone_geometry(&ring, &[f32::NAN, -1.0], &ConeStyle::default(), &mut g);
         assert!(g.is_empty(), "{g:?}");
         cone_geometry(&ring, &[1e9, 0.0, 0.0, 3.0], &ConeStyle::default(), &mut g);
-        let furthest = g
-            .triangles
-            .iter()
-            .map(|v| v.pos.length())
+        let (triangles, _) = drawn(&g);
+        let furthest = (triangles.iter().flatten())
+            .map(|p| p.length())
             .fold(0.0, f32::max);
         assert!(furthest <= 20.0 + 0.2 + 1e-3, "clamped to max_length");
-        assert_eq!(g.triangles.len(), ARC_SEGMENTS * 3, "only the first cone");
+        assert_eq!(triangles.len(), ARC_SEGMENTS, "only the first cone");
     }
 }

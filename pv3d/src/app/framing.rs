@@ -156,7 +156,7 @@ fn content_bounds(scene: &Scene) -> Option<(Vec3, Vec3)> {
     bounds
 }
 
-/// Where `object` draws solid things — meshes, lines, points, pictures — in world
+/// Where `object` draws solid things — meshes, lines and outlines, points, pictures — in world
 /// coordinates. Not its flat fills: the ground's plane is a backdrop of any size, while its
 /// walls (mesh) and a map's picture are the world.
 fn solid_points<'a>(
@@ -166,10 +166,14 @@ fn solid_points<'a>(
 ) -> impl Iterator<Item = Vec3> + 'a {
     let to_world = scene.world_transform(id);
     let g = &object.geometry;
+    let outlines = (g.fans.iter())
+        .filter(|f| f.outline.is_some())
+        .flat_map(|f| std::iter::once(f.centre).chain(f.rim.iter().copied()));
     g.lines
         .iter()
         .chain(&g.points)
         .map(|v| v.pos)
+        .chain(outlines)
         .chain(g.mesh.iter().map(|v| v.pos))
         .chain(g.images.iter().flat_map(|i| i.corners().map(|(p, _)| p)))
         .map(move |p| to_world.transform_point3(p))

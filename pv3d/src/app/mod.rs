@@ -4,6 +4,7 @@
 pub mod builder;
 pub mod command_line;
 pub mod formula_textures;
+pub mod frame_times;
 pub mod framing;
 pub mod listing;
 pub mod status_panel;

@@ -12,6 +12,7 @@ use framework::scene::Scene;
 use glam::{Vec2, Vec3};
 
 use super::formula_textures::FormulaTextures;
+use super::frame_times::{FRAME_TIMES, Stage};
 use super::framing::Framing;
 use crate::render::{
     Lighting, OrbitCamera, POINT_SIZE_PX, PictureFilters, Projection, SceneBatch, SceneRenderer,
@@ -190,7 +191,7 @@ impl View3d {
             return;
         }
         let mut gpu = self.gpu.lock().expect("gpu state");
-        gpu.batch.rebuild(scene, Some(&detail));
+        FRAME_TIMES.timed(Stage::Batch, || gpu.batch.rebuild(scene, Some(&detail)));
         gpu.revision += 1;
         let light = scene.lighting();
         let [r, g, b, a] = light.background.0;
@@ -207,6 +208,7 @@ impl View3d {
         let gpu = self.gpu.clone();
         let callback = egui_glow::CallbackFn::new(move |info, painter| {
             let gl = painter.gl();
+            let painting = std::time::Instant::now();
             let mut gpu = gpu.lock().expect("gpu state");
             let state = &mut *gpu;
             if state.renderer.is_none() && state.failed.is_none() {
@@ -238,6 +240,7 @@ impl View3d {
                 );
             }
             renderer.draw(gl, view_proj);
+            FRAME_TIMES.record(Stage::ViewPaint, painting.elapsed());
         });
         ui.painter().add(egui::PaintCallback {
             rect,

@@ -16,6 +16,7 @@ use std::time::{Duration, Instant};
 use eframe::egui;
 use image::RgbaImage;
 
+use super::frame_times::{FRAME_TIMES, Stage};
 use super::viewer::Viewer;
 
 /// When the window redraws.
@@ -104,14 +105,18 @@ struct WindowApp {
 }
 
 impl eframe::App for WindowApp {
-    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         self.waker.frame_started();
         self.frames += 1;
         if self.frames == 1 {
             tracing::debug!("the window drew its first frame");
         }
-        self.viewer.update(Instant::now());
-        self.viewer.ui(ui);
+        // eframe reports the previous frame: its update, interface, tessellation, painting.
+        if let Some(seconds) = frame.info().cpu_usage {
+            FRAME_TIMES.record(Stage::Whole, Duration::from_secs_f32(seconds));
+        }
+        FRAME_TIMES.timed(Stage::Update, || self.viewer.update(Instant::now()));
+        FRAME_TIMES.timed(Stage::Interface, || self.viewer.ui(ui));
         if self.policy == RedrawPolicy::WhenIdle {
             ui.ctx().request_repaint();
         }
@@ -133,12 +138,14 @@ impl eframe::App for WindowApp {
     }
 }
 
-/// The `--frame-stats` line a run prints on exit, window or offscreen alike.
+/// The `--frame-stats` lines a run prints on exit, window or offscreen alike: the frames
+/// drawn, then the mean time of each stage of a frame ([`FRAME_TIMES`]).
 pub fn frame_stats(frames: u64, elapsed: Duration) -> String {
     let seconds = elapsed.as_secs_f64();
     format!(
-        "frames: {frames} in {seconds:.2} s ({:.1} per second)",
-        frames as f64 / seconds.max(1e-9)
+        "frames: {frames} in {seconds:.2} s ({:.1} per second)\nper frame: {}",
+        frames as f64 / seconds.max(1e-9),
+        FRAME_TIMES.summary()
     )
 }
 

@@ -8,6 +8,7 @@ use std::time::{Duration, Instant};
 use super::gl::HeadlessError;
 use super::ui::HeadlessUi;
 use crate::app::Viewer;
+use crate::app::frame_times::{FRAME_TIMES, Stage};
 
 /// How an offscreen run goes.
 #[derive(Debug, Clone, Copy)]
@@ -56,8 +57,9 @@ pub(super) fn paint_until(
     let mut frames = 0;
     loop {
         let pass_started = Instant::now();
-        viewer.update(pass_started);
-        ui.run(|ui| viewer.ui(ui));
+        FRAME_TIMES.timed(Stage::Update, || viewer.update(pass_started));
+        ui.run(|ui| FRAME_TIMES.timed(Stage::Interface, || viewer.ui(ui)));
+        FRAME_TIMES.record(Stage::Whole, pass_started.elapsed());
         frames += 1;
         let left = until.map(|until| until.saturating_sub(started.elapsed()));
         if left.is_some_and(|left| left.is_zero()) {

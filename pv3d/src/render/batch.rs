@@ -8,7 +8,7 @@ use framework::scene::{
 };
 use glam::Affine3A;
 
-use super::screen_detail::{ScreenDetail, Simplifier};
+use super::screen_detail::{FanOut, ScreenDetail, Simplifier};
 
 /// A coloured vertex as the GPU reads it: 16 bytes.
 #[repr(C)]
@@ -139,6 +139,14 @@ impl SceneBatch {
                 None => self.triangles.extend_from_slice(scratch),
             }
             move_translucent(&mut self.triangles, start, &mut self.translucent);
+            for fan in &g.fans {
+                let out = FanOut {
+                    triangles: &mut self.triangles,
+                    translucent: &mut self.translucent,
+                    lines: &mut self.lines,
+                };
+                simplifier.append_fan(detail, fan, &to_world, out);
+            }
             self.mesh.extend(g.mesh.iter().map(|v| {
                 GpuMeshVertex {
                     pos: to_world.transform_point3(v.pos).to_array(),

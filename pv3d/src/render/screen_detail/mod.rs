@@ -13,6 +13,9 @@ use glam::{Mat4, Vec2, Vec3, Vec4Swizzles};
 
 use super::batch::GpuVertex;
 
+mod fans;
+pub use fans::FanOut;
+
 /// The projection and viewport that decide what a pixel is.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ScreenDetail {
