@@ -37,7 +37,7 @@ mod survey;
 use std::net::{IpAddr, Ipv4Addr};
 use std::time::{Duration, Instant};
 
-use player_proto::client::{ClientOptions, ConnectError, Tap};
+use player_proto::client::{ClientOptions, ConnectError, Tap, fan_out};
 use player_proto::server::Commanders;
 
 pub use downstream::DownstreamOptions;
@@ -188,21 +188,5 @@ impl Relay {
     /// Observers connected now, over all robots.
     pub fn observers(&self) -> usize {
         self.robots.iter().map(RelayedRobot::observers).sum()
-    }
-}
-
-/// One tap that tells every front, in order; none without fronts.
-fn fan_out(fronts: Vec<Tap>) -> Option<Tap> {
-    match fronts.len() {
-        0 => None,
-        1 => fronts.into_iter().next(),
-        _ => Some(std::sync::Arc::new(move |host: &str, port: u16| {
-            let taps: Vec<_> = fronts.iter().map(|front| front(host, port)).collect();
-            std::sync::Arc::new(move |time, event| {
-                for tap in &taps {
-                    tap(time, event);
-                }
-            })
-        })),
     }
 }

@@ -1,11 +1,15 @@
 //! `pv3d a.xml b.xml …` — compose Player devices into a 3D viewer.
 
+use std::net::{IpAddr, Ipv4Addr};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
 use clap::Parser;
+use player_proto::client::fan_out;
+use player_proto::server::Commanders;
 use player_sim::serve::ServeOptions;
+use player_web::WebFront;
 use pv3d::app::{
     RedrawPolicy, ScreenshotRequest, UiWaker, ViewerBuilder, WindowOptions, frame_stats, run_window,
 };
@@ -127,6 +131,12 @@ struct Cli {
     #[arg(long, value_name = "FILE.xml")]
     grammar: Option<PathBuf>,
 
+    /// Also serve a live web page of these robots on this port, on every interface: anyone on
+    /// the network opens `http://this-host:PORT/` in a browser, nothing to install. Read-only:
+    /// the robots are driven from this viewer.
+    #[arg(long, value_name = "PORT")]
+    serve_web: Option<u16>,
+
     /// The view to start in: the map-like top view or the perspective one (T switches).
     #[arg(long, value_enum, default_value_t = StartView::Top)]
     view: StartView,
@@ -149,6 +159,18 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
         return Err("width and height must be from 64 to 8192".into());
     }
     Ok((w, h))
+}
+
+/// The read-only page of `--serve-web`, on every interface.
+fn serve_web(port: u16) -> Result<WebFront> {
+    let any = IpAddr::V4(Ipv4Addr::UNSPECIFIED);
+    let web = WebFront::start(any, port, Commanders::Nobody)?;
+    eprintln!(
+        "serving the web page of these robots on port {0}: http://localhost:{0}/ here, \
+         http://<this host>:{0}/ elsewhere",
+        web.port()
+    );
+    Ok(web)
 }
 
 fn main() -> Result<()> {
@@ -226,13 +248,17 @@ fn main() -> Result<()> {
         true => None,
     };
     let waker = UiWaker::default();
-    // Declared before the viewer, so dropped after it: the robots hold the recording's tap.
+    // Declared before the viewer, so dropped after it: the robots hold their taps.
     let recording = cli.record.as_deref().map(Recording::start).transpose()?;
+    let web = cli.serve_web.map(serve_web).transpose()?;
+    let taps = (recording.iter().map(Recording::tap))
+        .chain(web.iter().map(WebFront::tap))
+        .collect();
     let mut builder = ViewerBuilder::new(composition)
         .wake_with(waker.notifier())
         .connect_timeout(Duration::from_secs_f64(cli.connect_timeout))
         .observe(cli.observe)
-        .record_with(recording.as_ref().map(Recording::tap))
+        .record_with(fan_out(taps))
         .start_view(match cli.view {
             StartView::Top => Projection::Top,
             StartView::Perspective => Projection::Perspective,
@@ -241,6 +267,9 @@ fn main() -> Result<()> {
         builder = builder.save_to(path.clone());
     }
     let parts = builder.connect();
+    for client in parts.clients() {
+        web.iter().for_each(|web| web.add_robot(client.clone()));
+    }
 
     if let Some(out) = &cli.emit_config {
         let written = parts.written_instances();

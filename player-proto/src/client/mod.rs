@@ -49,7 +49,7 @@ pub use published::{ConnectionState, DeviceInfo};
 pub use requests::{PendingReply, RequestError};
 pub use responder::Responder;
 pub use store::{DeviceStats, Stamped};
-pub use tap::{ConnectionTap, Tap, TapEvent};
+pub use tap::{ConnectionTap, Tap, TapEvent, fan_out};
 
 /// Why a client could not connect.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

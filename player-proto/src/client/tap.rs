@@ -31,3 +31,20 @@ pub type ConnectionTap = Arc<dyn Fn(SystemTime, TapEvent<'_>) + Send + Sync>;
 
 /// Called once per robot thread, with its host and port, for that connection's tap.
 pub type Tap = Arc<dyn Fn(&str, u16) -> ConnectionTap + Send + Sync>;
+
+/// One tap that tells every one of `taps`, in order (a recorder and a web page, say); none
+/// when there are none.
+pub fn fan_out(taps: Vec<Tap>) -> Option<Tap> {
+    match taps.len() {
+        0 => None,
+        1 => taps.into_iter().next(),
+        _ => Some(Arc::new(move |host: &str, port: u16| {
+            let connection: Vec<ConnectionTap> = taps.iter().map(|tap| tap(host, port)).collect();
+            Arc::new(move |time, event| {
+                for tap in &connection {
+                    tap(time, event);
+                }
+            })
+        })),
+    }
+}

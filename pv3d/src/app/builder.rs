@@ -128,6 +128,12 @@ impl ViewerParts {
         written
     }
 
+    /// The robots' clients (`--serve-web` names them to its page, so that a command from it is
+    /// answered with the page's rule rather than "no such robot").
+    pub fn clients(&self) -> impl Iterator<Item = &Arc<player_proto::client::Client>> {
+        self.robots.clients().map(|(_, _, client)| client)
+    }
+
     pub fn into_viewer(self) -> Viewer {
         let ViewerParts {
             builder,
