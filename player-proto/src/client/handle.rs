@@ -9,8 +9,9 @@ use tokio::sync::mpsc::{UnboundedSender, unbounded_channel};
 use super::commands::Command;
 use super::options::ClientOptions;
 use super::published::{Board, ConnectionState, DeviceInfo, Snapshot};
-use super::robot_thread;
+use super::robot_thread::{self, Robot};
 use super::session_state::SessionState;
+use super::shared_io::SharedIo;
 use super::store::{DataStore, DeviceStats, Stamped};
 use super::{ConnectError, DataMode, ReplaceRule};
 use crate::wire::{Banner, DevAddr, Interface};
@@ -23,7 +24,15 @@ pub struct Client {
     board: Arc<Board>,
     store: Arc<DataStore>,
     pub(super) commands: UnboundedSender<Command>,
-    thread: Option<JoinHandle<()>>,
+    runner: Option<Runner>,
+}
+
+/// What runs the connection: a thread of its own, or a task on shared threads.
+enum Runner {
+    Thread(JoinHandle<()>),
+    /// Disconnected when the task has ended (its sender dropped); in a mutex only so that a
+    /// client can be shared between threads.
+    Task(std::sync::Mutex<std::sync::mpsc::Receiver<()>>),
 }
 
 impl Client {
@@ -36,15 +45,31 @@ impl Client {
         // now on only the thread changes it.
         let session = SessionState::new(&options, board.clone());
         let (commands, receiver) = unbounded_channel();
-        let thread = {
-            let (host, options) = (host.to_string(), options.clone());
-            let (board, store) = (board.clone(), store.clone());
-            std::thread::Builder::new()
-                .name(format!("player {host}:{port}"))
-                .spawn(move || {
-                    robot_thread::run(host, port, options, session, board, store, receiver)
-                })
-                .map_err(|e| ConnectError::Thread(e.to_string()))?
+        let (name, robot_options) = (host.to_string(), options.clone());
+        let mut robot = Robot::new(
+            name,
+            port,
+            robot_options,
+            session,
+            board.clone(),
+            store.clone(),
+            receiver,
+        );
+        let runner = match &options.shared_io {
+            Some(io) => {
+                let (ended, done) = std::sync::mpsc::channel::<()>();
+                io.spawn(async move {
+                    robot.run().await;
+                    drop(ended);
+                });
+                Runner::Task(std::sync::Mutex::new(done))
+            }
+            None => Runner::Thread(
+                std::thread::Builder::new()
+                    .name(format!("player {host}:{port}"))
+                    .spawn(move || robot_thread::run(robot))
+                    .map_err(|e| ConnectError::Thread(e.to_string()))?,
+            ),
         };
         Ok(Client {
             host: host.to_string(),
@@ -53,7 +78,7 @@ impl Client {
             board,
             store,
             commands,
-            thread: Some(thread),
+            runner: Some(runner),
         })
     }
 
@@ -167,11 +192,19 @@ impl Client {
         self.store.stats(addr.interf, addr.index)
     }
 
-    /// Closes the connection and ends the thread.
+    /// Closes the connection and ends its thread or task, waiting for it — except on a
+    /// shared I/O thread, where the task may need that very thread to end.
     pub fn close(&mut self) {
         let _ = self.commands.send(Command::Shutdown);
-        if let Some(thread) = self.thread.take() {
-            let _ = thread.join();
+        match self.runner.take() {
+            Some(Runner::Thread(thread)) => {
+                let _ = thread.join();
+            }
+            Some(Runner::Task(done)) if !SharedIo::on_its_threads() => {
+                let done = done.into_inner().unwrap_or_else(|e| e.into_inner());
+                let _ = done.recv();
+            }
+            Some(Runner::Task(_)) | None => {}
         }
     }
 }

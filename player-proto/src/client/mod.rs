@@ -1,7 +1,8 @@
 //! The Player client: one thread per robot connection (the design the ERF paper found to
-//! scale where a single polling thread did not).
+//! scale where a single polling thread did not) — or, for hundreds of robots, one task each on
+//! a few threads they share, which wait on all their sockets at once ([`SharedIo`]).
 //!
-//! The thread owns the socket and the session: it decodes, keeps the newest data of each
+//! The thread (or task) owns the socket and the session: it decodes, keeps the newest data of each
 //! subscribed device with receive time, server timestamp and a sequence number, calls a
 //! notifier when something new arrived, and reconnects with backoff — restoring the data mode,
 //! the replace rules and the subscriptions — when the server goes away. The [`Client`] handle
@@ -34,6 +35,7 @@ mod responder;
 mod robot_thread;
 mod serve;
 mod session_state;
+mod shared_io;
 mod store;
 mod tap;
 mod typed;
@@ -48,6 +50,7 @@ pub use proxies::{
 pub use published::{ConnectionState, DeviceInfo};
 pub use requests::{PendingReply, RequestError};
 pub use responder::Responder;
+pub use shared_io::SharedIo;
 pub use store::{DeviceStats, Stamped};
 pub use tap::{ConnectionTap, Tap, TapEvent, fan_out};
 

@@ -71,6 +71,9 @@ pub struct ClientOptions {
     pub notifier: Option<Notifier>,
     /// Sees every message of the connection as it crossed the wire (a recorder).
     pub tap: Option<super::Tap>,
+    /// Run the connection on these shared threads rather than a thread of its own (for
+    /// programs that open hundreds of robots; see [`super::SharedIo`]).
+    pub shared_io: Option<super::SharedIo>,
 }
 
 impl Default for ClientOptions {
@@ -87,6 +90,7 @@ impl Default for ClientOptions {
             stall_timeout: None,
             notifier: None,
             tap: None,
+            shared_io: None,
         }
     }
 }
@@ -105,6 +109,7 @@ impl fmt::Debug for ClientOptions {
             .field("stall_timeout", &self.stall_timeout)
             .field("notifier", &self.notifier.is_some())
             .field("tap", &self.tap.is_some())
+            .field("shared_io", &self.shared_io)
             .finish()
     }
 }

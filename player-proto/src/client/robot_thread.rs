@@ -35,37 +35,18 @@ impl End {
     }
 }
 
-/// The thread body.
-pub(crate) fn run(
-    host: String,
-    port: u16,
-    options: ClientOptions,
-    session: SessionState,
-    board: Arc<Board>,
-    store: Arc<DataStore>,
-    commands: UnboundedReceiver<Command>,
-) {
+/// The thread body, for a client with a thread of its own.
+pub(crate) fn run(mut robot: Robot) {
     let runtime = match tokio::runtime::Builder::new_current_thread()
         .enable_all()
         .build()
     {
         Ok(r) => r,
         Err(e) => {
-            board.publish(|s| s.state = ConnectionState::Failed(format!("no runtime: {e}")));
+            let failed = ConnectionState::Failed(format!("no runtime: {e}"));
+            robot.board.publish(|s| s.state = failed);
             return;
         }
-    };
-    let tap = options.tap.as_ref().map(|tap| tap(&host, port));
-    let mut robot = Robot {
-        tap,
-        host,
-        port,
-        options,
-        board,
-        store,
-        session,
-        commands,
-        reconnecting: false,
     };
     runtime.block_on(robot.run());
 }
@@ -85,7 +66,31 @@ pub(super) struct Robot {
 }
 
 impl Robot {
-    async fn run(&mut self) {
+    /// A connection that has not started; [`Robot::run`] runs it until shutdown.
+    pub fn new(
+        host: String,
+        port: u16,
+        options: ClientOptions,
+        session: SessionState,
+        board: Arc<Board>,
+        store: Arc<DataStore>,
+        commands: UnboundedReceiver<Command>,
+    ) -> Robot {
+        let tap = options.tap.as_ref().map(|tap| tap(&host, port));
+        Robot {
+            tap,
+            host,
+            port,
+            options,
+            board,
+            store,
+            session,
+            commands,
+            reconnecting: false,
+        }
+    }
+
+    pub async fn run(&mut self) {
         // Failed attempts since a session last worked. A connection that is accepted but never
         // works (a banner, then garbage) does not count as working, or such a server would be
         // retried at the shortest delay forever.

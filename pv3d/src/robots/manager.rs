@@ -1,13 +1,15 @@
-//! The robot manager: one client thread per Player server (host:port), shared — reference
-//! counted — by every plugin that uses a device on it. A server that goes away shows as
-//! reconnecting; the others carry on.
+//! The robot manager: one client per Player server (host:port), shared — reference counted —
+//! by every plugin that uses a device on it. A server that goes away shows as reconnecting;
+//! the others carry on. A few robots get a thread each; a swarm's share a few I/O threads.
 
 use std::sync::Arc;
 use std::time::Duration;
 
 use framework::config::DeviceRef;
 use framework::device::DeviceAccess;
-use player_proto::client::{Client, ClientOptions, ConnectionState, MultiClient, Notifier, Tap};
+use player_proto::client::{
+    Client, ClientOptions, ConnectionState, MultiClient, Notifier, SharedIo, Tap,
+};
 
 use super::device_links::{DeviceLinks, LinkKey};
 use crate::composition::ClientDecl;
@@ -15,6 +17,11 @@ use crate::composition::ClientDecl;
 /// Silence after which a server is asked whether it is still there (a device-list request it
 /// always answers); no answer, and the connection is dropped and re-established.
 const STALL_TIMEOUT: Duration = Duration::from_secs(3);
+
+/// From this many servers up, their connections share [`SHARED_IO_THREADS`] threads instead
+/// of a thread each: a thousand robots' steps then wake a few threads, not a thousand.
+const SHARED_IO_FROM: usize = 16;
+const SHARED_IO_THREADS: usize = 1;
 
 /// How the viewer uses the robots.
 #[derive(Clone, Default)]
@@ -49,6 +56,12 @@ impl RobotManager {
         robot_options: RobotOptions,
     ) -> RobotManager {
         let mut clients = MultiClient::new();
+        let shared_io = (servers.len() >= SHARED_IO_FROM)
+            .then(|| SharedIo::new(SHARED_IO_THREADS))
+            .and_then(|io| {
+                io.inspect_err(|e| tracing::warn!("a thread per robot: no shared I/O: {e}"))
+                    .ok()
+            });
         for server in servers {
             let options = ClientOptions {
                 notifier: notifier.clone(),
@@ -56,6 +69,7 @@ impl RobotManager {
                 // A viewer must show a robot whose server hangs, not its last data forever.
                 stall_timeout: Some(STALL_TIMEOUT),
                 tap: robot_options.tap.clone(),
+                shared_io: shared_io.clone(),
                 ..ClientOptions::default()
             };
             if let Err(e) = clients.add(&server.host, server.port, options) {
