@@ -11,7 +11,7 @@ use player_proto::server::Commanders;
 use player_sim::serve::ServeOptions;
 use player_web::WebFront;
 use pv3d::app::{
-    RedrawPolicy, ScreenshotRequest, UiWaker, ViewerBuilder, WindowOptions, frame_stats, run_window,
+    RedrawPolicy, ScreenshotRequest, UiWaker, ViewerBuilder, WindowOptions, run_window,
 };
 use pv3d::commands::{Grammar, Script};
 use pv3d::composition::{Composition, ParserRegistry, emit_document};
@@ -174,6 +174,8 @@ fn serve_web(port: u16) -> Result<WebFront> {
 }
 
 fn main() -> Result<()> {
+    // `--frame-stats` counts the first whole picture from here: a world's start-up included.
+    let process_started = Instant::now();
     program_edge::logging::init("info");
     let mut cli = Cli::parse();
     if cli.demo {
@@ -306,13 +308,14 @@ fn main() -> Result<()> {
         }
         None if cli.headless => {
             let run = HeadlessRun {
+                counted_from: process_started,
                 size: cli.size,
                 interval,
                 quit_after: cli.quit_after.map(Duration::from_secs_f64),
             };
             let summary = run_headless(&mut viewer, &run)?;
             if cli.frame_stats {
-                eprintln!("{}", frame_stats(summary.frames, summary.elapsed));
+                eprintln!("{}", summary.frames.stats(Instant::now()));
             }
             Ok(())
         }
@@ -331,6 +334,7 @@ fn main() -> Result<()> {
                     .map(|path| ScreenshotRequest { path, after }),
                 quit_after: cli.quit_after.map(Duration::from_secs_f64),
                 frame_stats: cli.frame_stats,
+                counted_from: process_started,
             };
             run_window(viewer, options, waker).map_err(anyhow::Error::msg)
         }

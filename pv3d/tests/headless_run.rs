@@ -36,6 +36,15 @@ fn a_headless_run_records_until_quit_after_with_no_display() {
         .unwrap_or_else(|| panic!("a frames line: {err}"));
     // 2 s at the 0.1 s redraw interval.
     assert!((5..=21).contains(&frames), "{frames} frames: {err}");
+    // The robot's every device reported: a whole picture, and each stage of a frame timed.
+    assert!(err.contains("the first whole picture at "), "{err}");
+    let stages = err
+        .lines()
+        .find_map(|l| l.strip_prefix("per frame: "))
+        .unwrap_or_else(|| panic!("a per-frame line: {err}"));
+    for stage in ["update", "batch", "interface", "whole frame"] {
+        assert!(stages.contains(stage), "{stage} in {stages}");
+    }
 
     let file = std::fs::File::open(&recording).unwrap();
     let mut reader = RecordingReader::new(std::io::BufReader::new(file)).unwrap();

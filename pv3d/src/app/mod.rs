@@ -4,6 +4,7 @@
 pub mod builder;
 pub mod command_line;
 pub mod formula_textures;
+pub mod frame_count;
 pub mod frame_times;
 pub mod framing;
 pub mod listing;
@@ -14,8 +15,7 @@ pub mod viewer;
 pub mod window;
 
 pub use builder::{ViewerBuilder, ViewerParts};
+pub use frame_count::FrameCount;
 pub use view3d::{View3d, ViewInput};
 pub use viewer::{EditError, Viewer};
-pub use window::{
-    RedrawPolicy, ScreenshotRequest, UiWaker, WindowOptions, frame_stats, run_window,
-};
+pub use window::{RedrawPolicy, ScreenshotRequest, UiWaker, WindowOptions, run_window};

@@ -16,6 +16,7 @@ use std::time::{Duration, Instant};
 use eframe::egui;
 use image::RgbaImage;
 
+use super::frame_count::FrameCount;
 use super::frame_times::{FRAME_TIMES, Stage};
 use super::viewer::Viewer;
 
@@ -97,7 +98,7 @@ struct WindowApp {
     screenshot: Option<ScreenshotRequest>,
     quit_after: Option<Duration>,
     frame_stats: bool,
-    frames: u64,
+    frames: FrameCount,
     waker: UiWaker,
     started: Instant,
     shot_requested: bool,
@@ -107,9 +108,8 @@ struct WindowApp {
 impl eframe::App for WindowApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         self.waker.frame_started();
-        self.frames += 1;
-        if self.frames == 1 {
-            tracing::debug!("the window drew its first frame");
+        if self.frames.frames() == 0 {
+            tracing::debug!("the window draws its first frame");
         }
         // eframe reports the previous frame: its update, interface, tessellation, painting.
         if let Some(seconds) = frame.info().cpu_usage {
@@ -117,6 +117,8 @@ impl eframe::App for WindowApp {
         }
         FRAME_TIMES.timed(Stage::Update, || self.viewer.update(Instant::now()));
         FRAME_TIMES.timed(Stage::Interface, || self.viewer.ui(ui));
+        let whole = self.frames.whole_drawn() || self.viewer.every_device_reporting();
+        self.frames.drawn(whole);
         if self.policy == RedrawPolicy::WhenIdle {
             ui.ctx().request_repaint();
         }
@@ -133,20 +135,9 @@ impl eframe::App for WindowApp {
     fn on_exit(&mut self, _gl: Option<&eframe::glow::Context>) {
         self.viewer.stop_all();
         if self.frame_stats {
-            eprintln!("{}", frame_stats(self.frames, self.started.elapsed()));
+            eprintln!("{}", self.frames.stats(Instant::now()));
         }
     }
-}
-
-/// The `--frame-stats` lines a run prints on exit, window or offscreen alike: the frames
-/// drawn, then the mean time of each stage of a frame ([`FRAME_TIMES`]).
-pub fn frame_stats(frames: u64, elapsed: Duration) -> String {
-    let seconds = elapsed.as_secs_f64();
-    format!(
-        "frames: {frames} in {seconds:.2} s ({:.1} per second)\nper frame: {}",
-        frames as f64 / seconds.max(1e-9),
-        FRAME_TIMES.summary()
-    )
 }
 
 impl WindowApp {
@@ -198,6 +189,8 @@ pub struct WindowOptions {
     pub quit_after: Option<Duration>,
     /// On exit, print how many frames were drawn (to check the redraw policy).
     pub frame_stats: bool,
+    /// Where the frame statistics count from (the process's start, to include a world's).
+    pub counted_from: Instant,
 }
 
 /// Runs the viewer in a window until it is closed; `waker` is the one its servers were given
@@ -220,7 +213,7 @@ pub fn run_window(viewer: Viewer, options: WindowOptions, waker: UiWaker) -> Res
         screenshot: options.screenshot,
         quit_after: options.quit_after,
         frame_stats: options.frame_stats,
-        frames: 0,
+        frames: FrameCount::new(options.counted_from),
         waker: waker.clone(),
         started: Instant::now(),
         shot_requested: false,

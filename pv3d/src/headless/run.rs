@@ -7,8 +7,8 @@ use std::time::{Duration, Instant};
 
 use super::gl::HeadlessError;
 use super::ui::HeadlessUi;
-use crate::app::Viewer;
 use crate::app::frame_times::{FRAME_TIMES, Stage};
+use crate::app::{FrameCount, Viewer};
 
 /// How an offscreen run goes.
 #[derive(Debug, Clone, Copy)]
@@ -19,13 +19,15 @@ pub struct HeadlessRun {
     pub interval: Duration,
     /// When to stop; `None` runs until the process is stopped.
     pub quit_after: Option<Duration>,
+    /// Where the frame statistics count from (the process's start, to include a world's).
+    pub counted_from: Instant,
 }
 
 /// What an offscreen run did.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy)]
 pub struct HeadlessSummary {
-    /// UI passes painted.
-    pub frames: u64,
+    /// UI passes painted, and when the first whole picture was.
+    pub frames: FrameCount,
     /// How long it ran.
     pub elapsed: Duration,
 }
@@ -38,6 +40,7 @@ pub fn run_headless(
     let mut ui = HeadlessUi::new(run.size.0, run.size.1)?;
     let started = Instant::now();
     let frames = paint_until(viewer, &mut ui, started, run.quit_after, run.interval);
+    let frames = frames.counted_from(run.counted_from);
     viewer.stop_all();
     Ok(HeadlessSummary {
         frames,
@@ -53,14 +56,14 @@ pub(super) fn paint_until(
     started: Instant,
     until: Option<Duration>,
     interval: Duration,
-) -> u64 {
-    let mut frames = 0;
+) -> FrameCount {
+    let mut frames = FrameCount::new(started);
     loop {
         let pass_started = Instant::now();
         FRAME_TIMES.timed(Stage::Update, || viewer.update(pass_started));
         ui.run(|ui| FRAME_TIMES.timed(Stage::Interface, || viewer.ui(ui)));
         FRAME_TIMES.record(Stage::Whole, pass_started.elapsed());
-        frames += 1;
+        frames.drawn(frames.whole_drawn() || viewer.every_device_reporting());
         let left = until.map(|until| until.saturating_sub(started.elapsed()));
         if left.is_some_and(|left| left.is_zero()) {
             return frames;

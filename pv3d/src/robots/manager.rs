@@ -117,6 +117,17 @@ impl RobotManager {
         self.links.held()
     }
 
+    /// Whether every server is connected and every device a plugin uses has sent data: what
+    /// the next frame draws is the whole picture (`--frame-stats` times the first such frame).
+    pub fn all_reporting(&self) -> bool {
+        let connected = (self.clients.iter()).all(|c| c.state() == ConnectionState::Connected);
+        connected
+            && self.links.held().iter().all(|(host, port, addr)| {
+                self.client(host, *port)
+                    .is_some_and(|c| c.stats(*addr).messages > 0)
+            })
+    }
+
     /// Access to a plugin's device, shared by the plugins of the same device: the first one
     /// subscribes, and when the last one drops its handle the device is unsubscribed.
     pub fn device(&self, device: &DeviceRef) -> Option<Arc<dyn DeviceAccess>> {

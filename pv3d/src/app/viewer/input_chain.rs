@@ -45,6 +45,12 @@ impl Viewer {
         }
     }
 
+    /// Whether every server is connected and every device in use has sent data (see
+    /// [`crate::robots::RobotManager::all_reporting`]); false without servers.
+    pub fn every_device_reporting(&self) -> bool {
+        self.robots.as_ref().is_some_and(|r| r.all_reporting())
+    }
+
     /// Whether the viewer only observes (`pv3d --observe`).
     pub fn observing(&self) -> bool {
         self.robots.as_ref().is_some_and(|r| r.observing())
