@@ -12,7 +12,7 @@ use bytes::BytesMut;
 use tokio::io::{AsyncRead, AsyncReadExt, AsyncWrite, AsyncWriteExt};
 
 use crate::message::{DecodeError, Message};
-use crate::wire::{Banner, Frame, FrameDecoder, FrameError};
+use crate::wire::{Banner, Frame, FrameDecoder, FrameError, RECEIVE_CHUNK};
 
 /// What can go wrong reading a stream of messages.
 #[derive(Debug, thiserror::Error)]
@@ -59,8 +59,6 @@ pub struct MessageReader<R> {
     frames: FrameDecoder,
 }
 
-/// Bytes asked of the socket per read when the frame decoder has no better idea.
-const READ_CHUNK: usize = 64 * 1024;
 
 impl<R: AsyncRead + Unpin> MessageReader<R> {
     pub fn new(inner: R, frames: FrameDecoder) -> Self {
@@ -114,7 +112,7 @@ impl<R: AsyncRead + Unpin> MessageReader<R> {
     async fn fill(&mut self) -> io::Result<usize> {
         let buf: &mut BytesMut = self.frames.buffer_mut();
         if buf.capacity() - buf.len() < 4096 {
-            buf.reserve(READ_CHUNK);
+            buf.reserve(RECEIVE_CHUNK);
         }
         self.inner.read_buf(buf).await
     }

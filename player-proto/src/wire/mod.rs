@@ -14,7 +14,7 @@ mod xdr_numbers;
 
 pub use address::{AddrParseError, DevAddr};
 pub use banner::{BANNER_LEN, Banner, BannerError};
-pub use frame::{DEFAULT_MAX_BODY, Frame, FrameDecoder, FrameError};
+pub use frame::{DEFAULT_MAX_BODY, Frame, FrameDecoder, FrameError, RECEIVE_CHUNK};
 pub use header::{HEADER_LEN, Header, HeaderError, MessageClass, MsgType};
 pub use interface::Interface;
 #[cfg(feature = "serde")]
