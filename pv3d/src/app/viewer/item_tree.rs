@@ -174,7 +174,11 @@ impl Viewer {
                 "components",
             ));
         }
-        let titles: Vec<String> = self.slots.iter().map(|s| s.plugin.title()).collect();
+        // Titles are only searched: with nothing typed, none is made (a thousand a frame).
+        let typed = !self.find.trim().is_empty();
+        let titles: Vec<String> = (self.slots.iter())
+            .map(|s| if typed { s.plugin.title() } else { String::new() })
+            .collect();
         let entries: Vec<Entry<'_>> = self
             .slots
             .iter()
