@@ -169,7 +169,8 @@ impl WindowApp {
         let waker = ctx.clone();
         ctx.request_screenshot(move |image| {
             let [w, h] = image.size;
-            let bytes: Vec<u8> = image.pixels.iter().flat_map(|c| c.to_array()).collect();
+            let mut bytes: Vec<u8> = image.pixels.iter().flat_map(|c| c.to_array()).collect();
+            crate::headless::as_shown(&mut bytes);
             let result = RgbaImage::from_raw(w as u32, h as u32, bytes)
                 .ok_or_else(|| "screenshot has the wrong size".to_string())
                 .and_then(|img| img.save(&path).map_err(|e| e.to_string()));

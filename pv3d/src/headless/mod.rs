@@ -12,5 +12,5 @@ mod ui;
 
 pub use gl::{HeadlessError, HeadlessGl};
 pub use run::{HeadlessRun, HeadlessSummary, run_headless};
-pub use screenshot::{ScreenshotError, ScreenshotRun, write_screenshot};
+pub use screenshot::{ScreenshotError, ScreenshotRun, as_shown, write_screenshot};
 pub use ui::HeadlessUi;

@@ -51,13 +51,22 @@ fn render_after(viewer: &mut Viewer, run: &ScreenshotRun) -> Result<RgbaImage, H
     Ok(ui.read_pixels())
 }
 
+/// Makes RGBA pixels opaque, as a window shows its framebuffer: what blending left in the
+/// alpha channel is no part of the picture (a PNG keeping it looks washed out over white).
+pub fn as_shown(rgba: &mut [u8]) {
+    for pixel in rgba.chunks_exact_mut(4) {
+        pixel[3] = u8::MAX;
+    }
+}
+
 /// Runs the viewer offscreen as `run` says and writes its last frame to `path` (PNG).
 pub fn write_screenshot(
     viewer: &mut Viewer,
     run: &ScreenshotRun,
     path: &Path,
 ) -> Result<(), ScreenshotError> {
-    let image = render_after(viewer, run)?;
+    let mut image = render_after(viewer, run)?;
+    as_shown(&mut image);
     image.save(path).map_err(|source| ScreenshotError::Write {
         path: path.to_path_buf(),
         source,
