@@ -25,7 +25,11 @@ macro_rules! xdr_struct {
         impl $crate::wire::xdr::Xdr for $name {
             const MIN_WIRE_SIZE: usize = 0 $( + <$ty as $crate::wire::xdr::Xdr>::MIN_WIRE_SIZE )*;
 
+            // Inlined into the interface's decoder (`MessageSet::decode_message`), so that the
+            // fields go straight into the message being built instead of through a copy of
+            // the struct per layer.
             #[allow(unused_variables)]
+            #[inline(always)]
             fn decode<'a>(
                 input: &'a [u8],
                 body: &::bytes::Bytes,
@@ -73,8 +77,9 @@ macro_rules! xdr_struct {
 /// [`BodyKind`](crate::interfaces::kind::BodyKind) constant per row (`Laser::DATA_SCAN`), the
 /// interface's [`InterfaceMessages`](crate::interfaces::kind::InterfaceMessages) list, and
 /// [`DataBody`](crate::interfaces::kind::DataBody) for every DATA body. The enum's name must
-/// be its [`Body`](crate::message::Body) variant's. Without `for` (the universal requests,
-/// valid on every interface) only the enum and its codec are made.
+/// be its [`Body`](crate::message::Body) variant's (in both forms: the decoder builds the
+/// whole [`Message`](crate::message::Message) in place, body variant included). Without `for`
+/// (the universal requests, valid on every interface) only the enum and its codec are made.
 macro_rules! interface_messages {
     (
         $(#[$meta:meta])*
@@ -138,20 +143,32 @@ macro_rules! interface_messages {
         }
 
         impl $crate::interfaces::MessageSet for $name {
-            fn decode(
-                class: $crate::wire::MessageClass,
-                subtype: u8,
-                body: &::bytes::Bytes,
-            ) -> Option<Result<(Self, usize), $crate::wire::xdr::XdrError<'_>>> {
+            fn decode_message(
+                header: $crate::wire::Header,
+                body: ::bytes::Bytes,
+            ) -> Result<$crate::message::Message, $crate::message::DecodeError> {
+                let class = header.msg_type.class();
                 $(
-                    if class == $crate::wire::MessageClass::$class && subtype == $subtype {
-                        return Some(
-                            $crate::wire::xdr::decode_all::<$ty>(body)
-                                .map(|(value, trailing)| (Self::$variant(value), trailing)),
-                        );
+                    if class == $crate::wire::MessageClass::$class && header.subtype == $subtype {
+                        let (value, trailing) = match $crate::wire::xdr::decode_all::<$ty>(&body) {
+                            Ok(decoded) => decoded,
+                            Err(err) => {
+                                return Err($crate::message::DecodeError::from_xdr(
+                                    header, &body, err,
+                                ));
+                            }
+                        };
+                        // `body` is let go before the message is built, so that nothing (a drop
+                        // call) stands between building it and returning it: built in place.
+                        let trailing = $crate::message::Message::trailing_of(&header, body, trailing);
+                        return Ok($crate::message::Message {
+                            header,
+                            body: $crate::message::Body::$name(Self::$variant(value)),
+                            trailing,
+                        });
                     }
                 )*
-                None
+                Ok($crate::message::Message::unknown(header, body))
             }
 
             fn class(&self) -> $crate::wire::MessageClass {
