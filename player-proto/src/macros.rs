@@ -165,7 +165,8 @@ macro_rules! interface_messages {
                         };
                         // `body` is let go before the message is built, so that nothing (a drop
                         // call) stands between building it and returning it: built in place.
-                        let trailing = $crate::message::Message::trailing_of(&header, body, trailing);
+                        let trailing =
+                            $crate::message::Message::trailing_of(&header, body, trailing);
                         return Ok($crate::message::Message {
                             header,
                             body: $crate::message::Body::$name(Self::$variant(value.into())),
