@@ -25,7 +25,11 @@ macro_rules! xdr_struct {
         impl $crate::wire::xdr::Xdr for $name {
             const MIN_WIRE_SIZE: usize = 0 $( + <$ty as $crate::wire::xdr::Xdr>::MIN_WIRE_SIZE )*;
 
+            // Inlined into the interface's decoder (`MessageSet::decode_message`), so that the
+            // fields go straight into the message being built instead of through a copy of
+            // the struct per layer.
             #[allow(unused_variables)]
+            #[inline(always)]
             fn decode<'a>(
                 input: &'a [u8],
                 body: &::bytes::Bytes,
@@ -68,24 +72,28 @@ macro_rules! xdr_struct {
 /// A request's ACK (and a NACK that has a body) is encoded with the request's own structure,
 /// so one `Request` entry covers REQ, ACK and NACK; the header tells them apart.
 ///
+/// A row written `=> Variant(Type, boxed)` holds its body in a `Box` (see `stored!`); only
+/// code that builds or destructures the enum itself sees the difference.
+///
 /// With `for CODE` each row also names its subtype (`as DATA_SCAN`, Player's name without the
 /// `PLAYER_<INTERFACE>_` prefix): the macro then generates a typed
 /// [`BodyKind`](crate::interfaces::kind::BodyKind) constant per row (`Laser::DATA_SCAN`), the
 /// interface's [`InterfaceMessages`](crate::interfaces::kind::InterfaceMessages) list, and
 /// [`DataBody`](crate::interfaces::kind::DataBody) for every DATA body. The enum's name must
-/// be its [`Body`](crate::message::Body) variant's. Without `for` (the universal requests,
-/// valid on every interface) only the enum and its codec are made.
+/// be its [`Body`](crate::message::Body) variant's (in both forms: the decoder builds the
+/// whole [`Message`](crate::message::Message) in place, body variant included). Without `for`
+/// (the universal requests, valid on every interface) only the enum and its codec are made.
 macro_rules! interface_messages {
     (
         $(#[$meta:meta])*
         pub enum $name:ident for $code:ident {
-            $( $(#[$variant_meta:meta])* $class:ident $subtype:literal as $konst:ident => $variant:ident($ty:ty), )*
+            $( $(#[$variant_meta:meta])* $class:ident $subtype:literal as $konst:ident => $variant:ident($ty:ty $(, $boxed:ident)?), )*
         }
     ) => {
         interface_messages! {
             $(#[$meta])*
             pub enum $name {
-                $( $(#[$variant_meta])* $class $subtype => $variant($ty), )*
+                $( $(#[$variant_meta])* $class $subtype => $variant($ty $(, $boxed)?), )*
             }
         }
 
@@ -95,12 +103,14 @@ macro_rules! interface_messages {
                 pub const $konst: $crate::interfaces::kind::BodyKind<$ty> = {
                     fn peek(body: &$crate::message::Body) -> Option<&$ty> {
                         match body {
-                            $crate::message::Body::$name($name::$variant(value)) => Some(value),
+                            $crate::message::Body::$name($name::$variant(value)) => {
+                                Some(::core::borrow::Borrow::borrow(value))
+                            }
                             _ => None,
                         }
                     }
                     fn wrap(value: $ty) -> $crate::message::Body {
-                        $crate::message::Body::$name($name::$variant(value))
+                        $crate::message::Body::$name($name::$variant(value.into()))
                     }
                     $crate::interfaces::kind::BodyKind::new(
                         $crate::interfaces::kind::MessageKind {
@@ -126,7 +136,7 @@ macro_rules! interface_messages {
     (
         $(#[$meta:meta])*
         pub enum $name:ident {
-            $( $(#[$variant_meta:meta])* $class:ident $subtype:literal => $variant:ident($ty:ty), )*
+            $( $(#[$variant_meta:meta])* $class:ident $subtype:literal => $variant:ident($ty:ty $(, $boxed:ident)?), )*
         }
     ) => {
         $(#[$meta])*
@@ -134,24 +144,37 @@ macro_rules! interface_messages {
         #[cfg_attr(any(test, feature = "proptest"), derive(proptest_derive::Arbitrary))]
         #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
         pub enum $name {
-            $( $(#[$variant_meta])* $variant($ty), )*
+            $( $(#[$variant_meta])* $variant(stored!($ty $(, $boxed)?)), )*
         }
 
         impl $crate::interfaces::MessageSet for $name {
-            fn decode(
-                class: $crate::wire::MessageClass,
-                subtype: u8,
-                body: &::bytes::Bytes,
-            ) -> Option<Result<(Self, usize), $crate::wire::xdr::XdrError<'_>>> {
+            fn decode_message(
+                header: $crate::wire::Header,
+                body: ::bytes::Bytes,
+            ) -> Result<$crate::message::Message, $crate::message::DecodeError> {
+                let class = header.msg_type.class();
                 $(
-                    if class == $crate::wire::MessageClass::$class && subtype == $subtype {
-                        return Some(
-                            $crate::wire::xdr::decode_all::<$ty>(body)
-                                .map(|(value, trailing)| (Self::$variant(value), trailing)),
-                        );
+                    if class == $crate::wire::MessageClass::$class && header.subtype == $subtype {
+                        let (value, trailing) = match $crate::wire::xdr::decode_all::<$ty>(&body) {
+                            Ok(decoded) => decoded,
+                            Err(err) => {
+                                return Err($crate::message::DecodeError::from_xdr(
+                                    header, &body, err,
+                                ));
+                            }
+                        };
+                        // `body` is let go before the message is built, so that nothing (a drop
+                        // call) stands between building it and returning it: built in place.
+                        let trailing =
+                            $crate::message::Message::trailing_of(&header, body, trailing);
+                        return Ok($crate::message::Message {
+                            header,
+                            body: $crate::message::Body::$name(Self::$variant(value.into())),
+                            trailing,
+                        });
                     }
                 )*
-                None
+                Ok($crate::message::Message::unknown(header, body))
             }
 
             fn class(&self) -> $crate::wire::MessageClass {
@@ -163,14 +186,43 @@ macro_rules! interface_messages {
             }
 
             fn encode<B: ::bytes::BufMut>(&self, out: &mut B) {
-                match self { $( Self::$variant(v) => $crate::wire::xdr::Xdr::encode(v, out), )* }
+                match self {
+                    $(
+                        Self::$variant(v) => $crate::wire::xdr::Xdr::encode(
+                            ::core::borrow::Borrow::<$ty>::borrow(v),
+                            out,
+                        ),
+                    )*
+                }
             }
 
             fn encoded_len(&self) -> usize {
-                match self { $( Self::$variant(v) => $crate::wire::xdr::Xdr::encoded_len(v), )* }
+                match self {
+                    $(
+                        Self::$variant(v) => $crate::wire::xdr::Xdr::encoded_len(
+                            ::core::borrow::Borrow::<$ty>::borrow(v),
+                        ),
+                    )*
+                }
             }
         }
     };
+}
+
+/// The type an interface enum's variant holds: its body type, or a `Box` of it for a row marked
+/// `boxed`.
+///
+/// A few bodies are far larger than the rest (a ranger's stamped readings carry a whole
+/// geometry and configuration: 208 bytes, where a laser scan takes 80). Held inline they would
+/// make every [`Body`](crate::message::Body) and [`Message`](crate::message::Message) that
+/// size, and every message is built and moved on its way from the socket to its reader (a
+/// 181-beam laser scan decoded measurably faster with `Message` at 192 bytes than at 280);
+/// boxed, they cost one allocation on the rare message that carries them. The row's
+/// [`BodyKind`](crate::interfaces::kind::BodyKind) and `DataBody` still name the body type
+/// itself, so readers never see the box.
+macro_rules! stored {
+    ($ty:ty) => { $ty };
+    ($ty:ty, boxed) => { ::std::boxed::Box<$ty> };
 }
 
 /// `DataBody` for a DATA row of an interface table; nothing for the other classes, whose

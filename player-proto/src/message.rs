@@ -3,7 +3,7 @@
 
 use std::fmt;
 
-use bytes::{BufMut, Bytes, BytesMut};
+use bytes::{Buf, BufMut, Bytes, BytesMut};
 
 use crate::interfaces::{self, MessageSet};
 use crate::wire::xdr::{XdrError, XdrFault};
@@ -32,23 +32,19 @@ macro_rules! bodies {
         }
 
         impl Body {
-            fn decode_typed(
-                interf: Interface,
-                class: MessageClass,
-                subtype: u8,
-                body: &Bytes,
-            ) -> Option<Result<(Body, usize), XdrError<'_>>> {
-                if class == MessageClass::Request && subtype >= 247 {
-                    return interfaces::universal::Universal::decode(class, subtype, body)
-                        .map(|r| r.map(|(v, trailing)| (Body::Universal(v), trailing)));
+            /// Decodes a non-empty body into its message: the interface's own decoder builds
+            /// it (see [`MessageSet::decode_message`]), universal requests on any interface.
+            fn decode_message(header: Header, body: Bytes) -> Result<Message, DecodeError> {
+                let interf = header.addr.interf;
+                if header.msg_type.class() == MessageClass::Request && header.subtype >= 247 {
+                    return interfaces::universal::Universal::decode_message(header, body);
                 }
                 $(
                     if interf == Interface::$code {
-                        return <$ty>::decode(class, subtype, body)
-                            .map(|r| r.map(|(v, trailing)| (Body::$variant(v), trailing)));
+                        return <$ty>::decode_message(header, body);
                     }
                 )*
-                None
+                Ok(Message::unknown(header, body))
             }
 
             /// The interface this typed body belongs to (`None` for empty, universal and
@@ -167,7 +163,8 @@ pub struct DecodeError {
 }
 
 impl DecodeError {
-    fn from_xdr(header: Header, body: &Bytes, err: XdrError<'_>) -> DecodeError {
+    #[cold]
+    pub(crate) fn from_xdr(header: Header, body: &Bytes, err: XdrError<'_>) -> DecodeError {
         let offset = body.len().saturating_sub(err.input.len());
         DecodeError {
             header,
@@ -209,6 +206,14 @@ impl fmt::Display for XdrFault {
             XdrFault::Malformed => f.write_str("malformed value"),
         }
     }
+}
+
+/// The last `n` bytes of `wire`, which the typed body left unread: logged, kept verbatim.
+#[cold]
+fn trailing_bytes(header: &Header, mut wire: Bytes, n: usize) -> Bytes {
+    tracing::debug!(%header, trailing = n, "body has trailing bytes; kept verbatim");
+    wire.advance(wire.len() - n);
+    wire
 }
 
 /// A Player message: header and body.
@@ -276,22 +281,25 @@ impl Message {
                 trailing: Bytes::new(),
             });
         }
-        let class = header.msg_type.class();
-        let typed = Body::decode_typed(header.addr.interf, class, header.subtype, &body);
-        let (typed, trailing) = match typed {
-            None => (Body::Unknown(body), Bytes::new()),
-            Some(Ok((typed, 0))) => (typed, Bytes::new()),
-            Some(Ok((typed, trailing))) => {
-                tracing::debug!(%header, trailing, "body has trailing bytes; kept verbatim");
-                (typed, body.slice(body.len() - trailing..))
-            }
-            Some(Err(err)) => return Err(DecodeError::from_xdr(header, &body, err)),
-        };
-        Ok(Message {
+        Body::decode_message(header, body)
+    }
+
+    /// A message whose body this crate does not decode, kept verbatim.
+    pub(crate) fn unknown(header: Header, body: Bytes) -> Message {
+        Message {
             header,
-            body: typed,
-            trailing,
-        })
+            body: Body::Unknown(body),
+            trailing: Bytes::new(),
+        }
+    }
+
+    /// The `trailing` of a message whose typed body left `n` bytes of `wire` unread.
+    #[inline]
+    pub(crate) fn trailing_of(header: &Header, wire: Bytes, n: usize) -> Bytes {
+        match n {
+            0 => Bytes::new(),
+            n => trailing_bytes(header, wire, n),
+        }
     }
 
     /// Length of the body as it travels: the typed body and any trailing bytes.

@@ -216,7 +216,7 @@ fn stamped_ranges_bring_their_own_geometry_and_config() {
         d.push(Message::typed(
             addr(),
             MsgType::Data,
-            Ranger::RangesStamped(RangerRangesStamped {
+            Ranger::RangesStamped(Box::new(RangerRangesStamped {
                 data: RangerRanges {
                     ranges: vec![1.0, 2.0, 8.0],
                 },
@@ -236,7 +236,7 @@ fn stamped_ranges_bring_their_own_geometry_and_config() {
                     max_range: 8.0,
                     ..RangerConfig::default()
                 },
-            }),
+            })),
         ));
     });
     let object = scene.get(node).unwrap();

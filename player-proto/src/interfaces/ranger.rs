@@ -84,9 +84,10 @@ interface_messages! {
     /// Messages of the `ranger` interface.
     pub enum Ranger for RANGER {
         Data 1 as DATA_RANGE => Ranges(RangerRanges),
-        Data 2 as DATA_RANGESTAMPED => RangesStamped(RangerRangesStamped),
+        // Boxed: 208 bytes inline would make every `Body` that size (see `stored!`).
+        Data 2 as DATA_RANGESTAMPED => RangesStamped(RangerRangesStamped, boxed),
         Data 3 as DATA_INTNS => Intensities(RangerIntensities),
-        Data 4 as DATA_INTNSSTAMPED => IntensitiesStamped(RangerIntensitiesStamped),
+        Data 4 as DATA_INTNSSTAMPED => IntensitiesStamped(RangerIntensitiesStamped, boxed),
         Data 5 as DATA_GEOM => GeometryData(RangerGeometry),
         Request 1 as REQ_GET_GEOM => Geometry(RangerGeometry),
         Request 2 as REQ_POWER => Power(RangerSwitch),

@@ -174,6 +174,8 @@ pub trait XdrElement: Xdr {
 impl<T: XdrElement> Xdr for Vec<T> {
     const MIN_WIRE_SIZE: usize = 8;
 
+    // Inlined like the structs holding it (see `xdr_struct!`).
+    #[inline(always)]
     fn decode<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, Self> {
         let (after_count, count) = u32::decode(input, body)?;
         let (rest, length) = u32::decode(after_count, body)?;
@@ -238,7 +240,9 @@ pub use super::xdr_bytes::{
 /// Decodes a whole value from `body` and checks nothing was left over.
 ///
 /// Player itself skips trailing bytes silently; we report how many there were so the caller
-/// can log them.
+/// can log them. Always inlined, like every struct's decoder, so that a decoded value is built
+/// in the caller's place.
+#[inline(always)]
 pub fn decode_all<T: Xdr>(body: &Bytes) -> Result<(T, usize), XdrError<'_>> {
     match T::decode(body, body) {
         Ok((rest, value)) => Ok((value, rest.len())),

@@ -16,6 +16,8 @@ pub const fn pad4(len: usize) -> usize {
 
 /// Decodes a counted byte array (`uint32_t x_count; uint8_t *x;`): count, length, packed
 /// bytes, padding. The bytes come back as a zero-copy slice of `body` when possible.
+/// Inlined, like the decoders of the structs holding byte arrays (see `xdr_struct!`).
+#[inline(always)]
 pub fn decode_counted_bytes<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, Bytes> {
     let (after_count, count) = u32::decode(input, body)?;
     let (rest, length) = u32::decode(after_count, body)?;
@@ -27,6 +29,7 @@ pub fn decode_counted_bytes<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, 
 
 /// Decodes `len` packed bytes and their padding from `rest`. `length_at` is where the length
 /// was read, for error offsets.
+#[inline(always)]
 pub fn decode_packed_bytes<'a>(
     length_at: &'a [u8],
     rest: &'a [u8],
@@ -63,6 +66,7 @@ pub fn encode_packed_bytes<B: BufMut>(bytes: &[u8], out: &mut B) {
 }
 
 /// A zero-copy slice of `body` when `part` lies inside it, a copy otherwise.
+#[inline(always)]
 fn share_or_copy(body: &Bytes, part: &[u8]) -> Bytes {
     let start = body.as_ptr() as usize;
     let at = part.as_ptr() as usize;
@@ -76,6 +80,7 @@ fn share_or_copy(body: &Bytes, part: &[u8]) -> Bytes {
 impl Xdr for Opaque {
     const MIN_WIRE_SIZE: usize = 8;
 
+    #[inline(always)]
     fn decode<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, Self> {
         let (rest, bytes) = decode_counted_bytes(input, body)?;
         Ok((rest, Opaque(bytes)))
