@@ -96,6 +96,9 @@ pub struct SceneBatch {
     pub views: Vec<BatchedView>,
     /// Pictures to filter and hand back, not to draw.
     pub filtered: Vec<FilteredPicture>,
+    /// How many times over the translucent fills cover the view (0 when built without a
+    /// screen): the renderer draws them at half resolution when they pile up.
+    pub translucent_cover: f32,
     /// One object's vertices in world space, before simplification.
     scratch: Vec<GpuVertex>,
     simplifier: Simplifier,
@@ -115,6 +118,7 @@ impl SceneBatch {
         self.images.clear();
         self.views.clear();
         self.filtered.clear();
+        self.translucent_cover = 0.0;
         for (id, object) in scene.iter() {
             let g = &object.geometry;
             if g.is_empty() || !scene.is_shown(id) {
@@ -144,6 +148,7 @@ impl SceneBatch {
                     triangles: &mut self.triangles,
                     translucent: &mut self.translucent,
                     lines: &mut self.lines,
+                    translucent_cover: &mut self.translucent_cover,
                 };
                 simplifier.append_fan(detail, fan, &to_world, out);
             }

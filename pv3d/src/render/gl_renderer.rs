@@ -9,6 +9,7 @@ use glam::{Mat4, Vec3};
 
 use super::batch::{GpuMeshVertex, GpuVertex, SceneBatch};
 use super::billboard::BillboardAxes;
+use super::fill_layer::FillLayer;
 use super::image_quads::ImageRenderer;
 use super::shader::{glsl_header, link_program};
 
@@ -60,6 +61,11 @@ void main() {
 /// How wide points are drawn unless told otherwise, pixels.
 pub const POINT_SIZE_PX: f32 = 3.0;
 
+/// From how many times over translucent fills cover the view on, they are drawn at half
+/// resolution ([`FillLayer`]): below it a few robots' fills stay pixel-exact and depth-tested
+/// (the extra pass would cost more than it saves, as measured at 1.5 times).
+pub const FILLS_IN_LAYER_FROM: f32 = 2.0;
+
 /// How the view is lit and cleared; the lights plugin sets these.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Lighting {
@@ -100,6 +106,10 @@ pub struct SceneRenderer {
     translucent: Buffer,
     mesh: Buffer,
     images: ImageRenderer,
+    /// Where crowded fills are drawn; `None` if the context could not make one.
+    fill_layer: Option<FillLayer>,
+    /// The uploaded batch's fills cover the view [`FILLS_IN_LAYER_FROM`] times or more.
+    crowded_fills: bool,
     /// Batch revision last uploaded; `None` forces an upload.
     uploaded: Option<u64>,
     pub point_size: f32,
@@ -123,6 +133,10 @@ impl SceneRenderer {
                 translucent: flat_buffer(gl)?,
                 mesh: mesh_buffer(gl)?,
                 images: ImageRenderer::new(gl).map_err(RendererError)?,
+                fill_layer: FillLayer::new(gl)
+                    .inspect_err(|e| tracing::warn!("fills drawn at full resolution: {e}"))
+                    .ok(),
+                crowded_fills: false,
                 uploaded: None,
                 point_size: POINT_SIZE_PX,
                 lighting: Lighting::default(),
@@ -170,6 +184,7 @@ impl SceneRenderer {
             );
         }
         self.images.upload(gl, &batch.images);
+        self.crowded_fills = batch.translucent_cover >= FILLS_IN_LAYER_FROM;
         self.uploaded = Some(revision);
     }
 
@@ -179,8 +194,25 @@ impl SceneRenderer {
     }
 
     /// Clears the current viewport (colour and depth, within the scissor box the caller set)
-    /// and draws everything uploaded.
-    pub fn draw(&self, gl: &glow::Context, view_proj: Mat4) {
+    /// and draws everything uploaded — crowded fills at half resolution ([`FillLayer`]).
+    pub fn draw(&mut self, gl: &glow::Context, view_proj: Mat4) {
+        let mut layer = match self.crowded_fills {
+            true => self.fill_layer.take(),
+            false => None,
+        };
+        self.draw_scene(gl, view_proj, layer.as_mut());
+        if layer.is_some() {
+            self.fill_layer = layer;
+        }
+    }
+
+    /// [`SceneRenderer::draw`] with every fill at full resolution (a virtual camera's view,
+    /// which the batch's crowding was not measured for).
+    pub fn draw_every_pixel(&self, gl: &glow::Context, view_proj: Mat4) {
+        self.draw_scene(gl, view_proj, None);
+    }
+
+    fn draw_scene(&self, gl: &glow::Context, view_proj: Mat4, layer: Option<&mut FillLayer>) {
         let matrix = view_proj.to_cols_array();
         let bg = self.lighting.background;
         // SAFETY: programs and buffers belong to this context; uniforms match the shaders.
@@ -197,11 +229,53 @@ impl SceneRenderer {
                 gl.enable(glow::PROGRAM_POINT_SIZE);
             }
 
+            let layered = layer.is_some();
+            if !layered {
+                self.draw_meshes(gl, &matrix);
+            }
+            self.use_flat(gl, &matrix);
+            draw_buffer(gl, &self.triangles, glow::TRIANGLES);
+            // Pictures lie on the ground among the opaque fills.
+            self.images
+                .draw(gl, &matrix, BillboardAxes::facing(&view_proj));
+            gl.use_program(Some(self.flat));
+            // Translucent fills after everything opaque and without writing depth, so that
+            // neither an opaque fill drawn later nor the lines on them are hidden. Crowded,
+            // they go in the half-resolution layer, on the ground and under the bodies.
+            gl.depth_mask(false);
+            match layer {
+                Some(layer) => {
+                    let translucent = &self.translucent;
+                    layer.draw(gl, || draw_buffer(gl, translucent, glow::TRIANGLES));
+                }
+                None => draw_buffer(gl, &self.translucent, glow::TRIANGLES),
+            }
+            gl.depth_mask(true);
+            if layered {
+                self.draw_meshes(gl, &matrix);
+                self.use_flat(gl, &matrix);
+            }
+            draw_buffer(gl, &self.lines, glow::LINES);
+            draw_buffer(gl, &self.points, glow::POINTS);
+
+            gl.bind_vertex_array(None);
+            gl.use_program(None);
+            gl.disable(glow::DEPTH_TEST);
+        }
+    }
+
+    /// Draws the lit meshes (bodies, walls, skins).
+    ///
+    /// # Safety
+    /// The caller holds the current context.
+    unsafe fn draw_meshes(&self, gl: &glow::Context, matrix: &[f32; 16]) {
+        // SAFETY: the program and buffer belong to this context; uniforms match the shader.
+        unsafe {
             gl.use_program(Some(self.lit));
             gl.uniform_matrix_4_f32_slice(
                 gl.get_uniform_location(self.lit, "u_view_proj").as_ref(),
                 false,
-                &matrix,
+                matrix,
             );
             let light = self.lighting.direction.normalize_or_zero();
             gl.uniform_3_f32(
@@ -215,39 +289,35 @@ impl SceneRenderer {
                 self.lighting.ambient,
             );
             draw_buffer(gl, &self.mesh, glow::TRIANGLES);
+        }
+    }
 
+    /// Binds the flat program for lines, points and fills, with its uniforms.
+    ///
+    /// # Safety
+    /// The caller holds the current context.
+    unsafe fn use_flat(&self, gl: &glow::Context, matrix: &[f32; 16]) {
+        // SAFETY: the program belongs to this context; uniforms match the shader.
+        unsafe {
             gl.use_program(Some(self.flat));
             gl.uniform_matrix_4_f32_slice(
                 gl.get_uniform_location(self.flat, "u_view_proj").as_ref(),
                 false,
-                &matrix,
+                matrix,
             );
             gl.uniform_1_f32(
                 gl.get_uniform_location(self.flat, "u_point_size").as_ref(),
                 self.point_size,
             );
-            draw_buffer(gl, &self.triangles, glow::TRIANGLES);
-            // Pictures lie on the ground among the opaque fills.
-            self.images
-                .draw(gl, &matrix, BillboardAxes::facing(&view_proj));
-            gl.use_program(Some(self.flat));
-            // Translucent fills after everything opaque and without writing depth, so that
-            // neither an opaque fill drawn later nor the lines on them are hidden.
-            gl.depth_mask(false);
-            draw_buffer(gl, &self.translucent, glow::TRIANGLES);
-            gl.depth_mask(true);
-            draw_buffer(gl, &self.lines, glow::LINES);
-            draw_buffer(gl, &self.points, glow::POINTS);
-
-            gl.bind_vertex_array(None);
-            gl.use_program(None);
-            gl.disable(glow::DEPTH_TEST);
         }
     }
 
     /// Frees the GL objects.
     pub fn destroy(&mut self, gl: &glow::Context) {
         self.images.destroy(gl);
+        if let Some(layer) = self.fill_layer.as_mut() {
+            layer.destroy(gl);
+        }
         // SAFETY: objects belong to this context and are not used afterwards.
         unsafe {
             gl.delete_program(self.flat);

@@ -41,6 +41,11 @@ impl SavedState {
         }
     }
 
+    /// The viewport that was set: x, y, width, height.
+    pub fn viewport(&self) -> [i32; 4] {
+        self.viewport
+    }
+
     pub fn restore(&self, gl: &glow::Context) {
         let enable = |cap: u32, on: bool| {
             // SAFETY: toggling a capability on the current context.

@@ -5,6 +5,7 @@
 pub mod batch;
 pub mod billboard;
 pub mod camera;
+pub mod fill_layer;
 pub mod filtered_pictures;
 pub mod gl_renderer;
 pub mod gl_state;
@@ -20,6 +21,6 @@ pub use batch::{BatchedImage, BatchedView, SceneBatch};
 pub use billboard::BillboardAxes;
 pub use camera::{OrbitCamera, Projection};
 pub use filtered_pictures::PictureFilters;
-pub use gl_renderer::{Lighting, POINT_SIZE_PX, SceneRenderer};
+pub use gl_renderer::{FILLS_IN_LAYER_FROM, Lighting, POINT_SIZE_PX, SceneRenderer};
 pub use screen_detail::{ScreenDetail, Simplifier};
 pub use virtual_views::{ViewTargets, view_projection};

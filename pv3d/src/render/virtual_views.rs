@@ -92,7 +92,7 @@ impl ViewTargets {
                 gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.framebuffer));
                 gl.viewport(0, 0, view.width as i32, view.height as i32);
                 gl.disable(glow::SCISSOR_TEST);
-                renderer.draw(gl, view_projection(view, batched.camera_to_world));
+                renderer.draw_every_pixel(gl, view_projection(view, batched.camera_to_world));
                 gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
                 gl.read_pixels(
                     0,

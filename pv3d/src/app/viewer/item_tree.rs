@@ -177,7 +177,13 @@ impl Viewer {
         // Titles are only searched: with nothing typed, none is made (a thousand a frame).
         let typed = !self.find.trim().is_empty();
         let titles: Vec<String> = (self.slots.iter())
-            .map(|s| if typed { s.plugin.title() } else { String::new() })
+            .map(|s| {
+                if typed {
+                    s.plugin.title()
+                } else {
+                    String::new()
+                }
+            })
             .collect();
         let entries: Vec<Entry<'_>> = self
             .slots

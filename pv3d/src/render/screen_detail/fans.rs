@@ -17,6 +17,9 @@ pub struct FanOut<'a> {
     pub translucent: &'a mut Vec<GpuVertex>,
     /// Outlines, two vertices a segment.
     pub lines: &'a mut Vec<GpuVertex>,
+    /// Adds how many times over the translucent fills cover the view (their area on screen
+    /// over the view's; known only with a screen).
+    pub translucent_cover: &'a mut f32,
 }
 
 impl Simplifier {
@@ -54,7 +57,11 @@ impl Simplifier {
                 .map(|(v, _)| v.pos)
         };
         if let Some(fill) = fan.fill {
-            let to = if fill.0[3] == u8::MAX {
+            let opaque = fill.0[3] == u8::MAX;
+            if let Some(detail) = detail.filter(|_| !opaque) {
+                *out.translucent_cover += self.kept_area_px(detail, centre) / detail.area_px();
+            }
+            let to = if opaque {
                 &mut *out.triangles
             } else {
                 &mut *out.translucent
@@ -79,6 +86,29 @@ impl Simplifier {
                     .extend([vertex(previous, outline), vertex(centre, outline)]);
             }
         }
+    }
+}
+
+impl Simplifier {
+    /// The area on screen of the fan from `centre` through the kept rim vertices, pixels²
+    /// (vertices without a screen position add nothing).
+    fn kept_area_px(&self, detail: &ScreenDetail, centre: [f32; 3]) -> f32 {
+        let centre = detail.screen(centre);
+        let mut kept = (self.at.iter().zip(&self.keep))
+            .filter(|(_, keep)| **keep)
+            .map(|(at, _)| *at - centre);
+        let Some(mut previous) = kept.next() else {
+            return 0.0;
+        };
+        let mut twice_area = 0.0;
+        for p in kept {
+            let cross = previous.perp_dot(p).abs();
+            if cross.is_finite() {
+                twice_area += cross;
+            }
+            previous = p;
+        }
+        twice_area / 2.0
     }
 }
 
@@ -112,6 +142,7 @@ mod tests {
             outline: Some(Rgba::WHITE),
         };
         let [mut triangles, mut translucent, mut lines] = buffers();
+        let mut cover = 0.0;
         let moved = Affine3A::from_translation(Vec3::X);
         Simplifier::default().append_fan(
             None,
@@ -121,6 +152,7 @@ mod tests {
                 triangles: &mut triangles,
                 translucent: &mut translucent,
                 lines: &mut lines,
+                translucent_cover: &mut cover,
             },
         );
         assert!(triangles.is_empty(), "a see-through fill is translucent");
@@ -148,6 +180,7 @@ mod tests {
         let view_proj = opengl::orthographic(-100.0, 100.0, -100.0, 100.0, -10.0, 10.0);
         let detail = ScreenDetail::new(view_proj, Vec2::new(400.0, 400.0), 3.0);
         let [mut triangles, mut translucent, mut lines] = buffers();
+        let mut cover = 0.0;
         Simplifier::default().append_fan(
             Some(&detail),
             &fan,
@@ -156,6 +189,7 @@ mod tests {
                 triangles: &mut triangles,
                 translucent: &mut translucent,
                 lines: &mut lines,
+                translucent_cover: &mut cover,
             },
         );
         let fills = triangles.len() / 3;

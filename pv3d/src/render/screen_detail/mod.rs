@@ -39,6 +39,11 @@ impl ScreenDetail {
         }
     }
 
+    /// The viewport's area, pixels².
+    fn area_px(&self) -> f32 {
+        (4.0 * self.half_viewport_px.x * self.half_viewport_px.y).max(1.0)
+    }
+
     /// Where `pos` lands on screen, in pixels from the centre; NaN at or behind the eye.
     fn screen(&self, pos: [f32; 3]) -> Vec2 {
         let clip = self.view_proj * Vec3::from(pos).extend(1.0);
