@@ -59,7 +59,6 @@ pub struct MessageReader<R> {
     frames: FrameDecoder,
 }
 
-
 impl<R: AsyncRead + Unpin> MessageReader<R> {
     pub fn new(inner: R, frames: FrameDecoder) -> Self {
         Self { inner, frames }
