@@ -38,13 +38,16 @@ fn main() -> Result<()> {
     for step in 1..=steps {
         sim.step();
         let id = u32::try_from(sim.steps).unwrap_or(u32::MAX);
-        for device in &devices {
-            for (subtype, body) in SimDevice::data(&sim, &device.source, id) {
-                let message = Message::new(device.addr(), MsgType::Data, subtype, body);
-                digest.write(&message.to_bytes());
-                messages += 1;
+        // As a served step reads them: in one sensing scope.
+        sim.sensing(|sim| {
+            for device in &devices {
+                for (subtype, body) in SimDevice::data(sim, &device.source, id) {
+                    let message = Message::new(device.addr(), MsgType::Data, subtype, body);
+                    digest.write(&message.to_bytes());
+                    messages += 1;
+                }
             }
-        }
+        });
         if step % 10 == 0 || step == steps {
             println!(
                 "step {step}: {messages} messages, digest {:016x}",

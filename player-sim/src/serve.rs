@@ -196,24 +196,27 @@ fn step_loop(
             let mut sim = sim.lock().expect("simulation");
             sim.step();
             let id = u32::try_from(sim.steps).unwrap_or(u32::MAX);
-            devices
-                .iter()
-                .filter(|(addr, _)| publisher.subscribers(*addr) > 0)
-                .flat_map(|(addr, source)| {
-                    let addr = *addr;
-                    SimDevice::data(&sim, source, id)
-                        .into_iter()
-                        .map(move |(subtype, body)| (addr, source, subtype, body))
-                })
-                .map(|(addr, source, subtype, body)| {
-                    let time = if source.stamped_by_wall_clock() {
-                        wall_clock()
-                    } else {
-                        sim.time
-                    };
-                    (addr, subtype, body, time)
-                })
-                .collect()
+            // The step's scans in one sensing scope: the robots' index is checked once.
+            sim.sensing(|sim| {
+                devices
+                    .iter()
+                    .filter(|(addr, _)| publisher.subscribers(*addr) > 0)
+                    .flat_map(|(addr, source)| {
+                        let addr = *addr;
+                        SimDevice::data(sim, source, id)
+                            .into_iter()
+                            .map(move |(subtype, body)| (addr, source, subtype, body))
+                    })
+                    .map(|(addr, source, subtype, body)| {
+                        let time = if source.stamped_by_wall_clock() {
+                            wall_clock()
+                        } else {
+                            sim.time
+                        };
+                        (addr, subtype, body, time)
+                    })
+                    .collect()
+            })
         };
         publisher.publish_all(outgoing);
         steps += 1;

@@ -164,6 +164,14 @@ impl Simulation {
         self.bodies.get(&self.world, &self.robots)
     }
 
+    /// Runs `f`, which reads many sensors (a served step's scans), with the robots' index
+    /// checked once for all of them instead of once per sensor: the robots cannot move while
+    /// `f` borrows the simulation.
+    pub fn sensing<R>(&self, f: impl FnOnce(&Simulation) -> R) -> R {
+        let _hold = self.bodies.hold(&self.world, &self.robots);
+        f(self)
+    }
+
     /// Every solid thing but robot `except`, as boxes.
     pub fn boxes_except(&self, except: Option<usize>) -> impl Iterator<Item = GroundBox<'_>> + '_ {
         let robots = self
