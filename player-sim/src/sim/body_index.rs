@@ -13,7 +13,7 @@ use std::sync::{Arc, Mutex};
 
 use super::RobotState;
 use super::sensors::body_at;
-use crate::world::{Pose, World};
+use crate::world::{Pose, World, floor_i64};
 
 /// The robots bucketed by cell; built from one set of poses.
 #[derive(Debug, Clone, PartialEq)]
@@ -121,7 +121,8 @@ impl BodyIndex {
             if v.is_nan() {
                 0
             } else {
-                v.floor().clamp(0.0, (n - 1) as f64) as usize
+                // The floor in integers (a call into libm otherwise), clamped to the grid.
+                floor_i64(v).clamp(0, (n - 1) as i64) as usize
             }
         };
         (

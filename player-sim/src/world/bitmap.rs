@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use super::cell_floor::floor_i64;
 use super::wall_sums::WallSums;
 
 /// Which way a wall face looks.
@@ -78,8 +79,8 @@ impl OccupancyGrid {
 
     fn cell_of(&self, x: f64, y: f64) -> (i64, i64) {
         (
-            ((x - self.origin.0) / self.cell.0).floor() as i64,
-            ((y - self.origin.1) / self.cell.1).floor() as i64,
+            floor_i64((x - self.origin.0) / self.cell.0),
+            floor_i64((y - self.origin.1) / self.cell.1),
         )
     }
 
