@@ -29,9 +29,10 @@
 //! Locks, and the one order they are taken in (a cycle would deadlock a session's thread
 //! against a device's own): a session's thread holds a **device** while its hooks run
 //! (`on_request`, `on_subscribe` …); a hook may take the device's own locks (a simulation's)
-//! and may publish; publishing takes the **sessions** list, then each session's
-//! **subscriptions**, then its **queue**, releasing each before taking the next. So: device →
-//! the device's own locks → sessions → subscriptions → queue, never backwards — a device's
+//! and may publish; a session subscribing takes its own **subscriptions** and, released
+//! first, the device's **subscriber list**; publishing takes a device's subscriber list, then
+//! each subscriber's **queue**. So: device → the device's own locks → subscriptions, or
+//! subscriber list → queue, never backwards — a device's
 //! thread (a simulation's step) may publish while holding its own locks, because nothing the
 //! server holds while taking a device's lock is taken by publishing.
 //!
@@ -172,18 +173,17 @@ impl Server {
                     robot,
                     robots,
                 })?;
-                Ok(DeviceSlot {
-                    addr: DevAddr {
-                        host,
-                        robot: u32::from(port),
-                        ..addr
-                    },
-                    device: Mutex::new(device),
-                })
+                let addr = DevAddr {
+                    host,
+                    robot: u32::from(port),
+                    ..addr
+                };
+                Ok(DeviceSlot::new(addr, device))
             })
             .collect::<Result<Vec<_>, ServerError>>()?;
         let state = Arc::new(ServerState {
             host,
+            by_addr: ServerState::index_devices(&devices),
             devices,
             sessions: Mutex::default(),
             gate: CommandGate::new(config.commanders),

@@ -31,9 +31,13 @@ impl Publisher {
         let mut touched: Vec<Arc<SessionState>> = Vec::new();
         let mut delivered = 0;
         for (addr, subtype, body, timestamp) in messages {
-            let Ok(port) = u16::try_from(addr.robot) else {
+            let Some(slot) = self.state.device_at(addr) else {
                 continue;
             };
+            let subscribers = slot.subscribers();
+            if subscribers.is_empty() {
+                continue;
+            }
             let full = DevAddr {
                 host: self.state.host,
                 ..addr
@@ -41,24 +45,16 @@ impl Publisher {
             let mut message = Message::new(full, MsgType::Data, subtype, body);
             message.header.timestamp = timestamp;
             let message = Arc::new(message);
-            let key = (addr.interf, addr.index);
-            for session in self.state.sessions_on(port) {
-                if session
-                    .subscriptions
-                    .lock()
-                    .expect("subscriptions")
-                    .contains(&key)
+            for session in subscribers.iter().filter(|s| !s.is_closed()) {
+                session.queue_only(message.clone());
+                delivered += 1;
+                // A step publishes a robot's devices one after another: the same session
+                // comes back in a row, and is remembered once.
+                if !touched
+                    .last()
+                    .is_some_and(|last| Arc::ptr_eq(last, session))
                 {
-                    session.queue_only(message.clone());
-                    delivered += 1;
-                    // A step publishes a robot's devices one after another: the same
-                    // session comes back in a row, and is remembered once.
-                    if !touched
-                        .last()
-                        .is_some_and(|last| Arc::ptr_eq(last, &session))
-                    {
-                        touched.push(session);
-                    }
+                    touched.push(session.clone());
                 }
             }
         }
@@ -70,21 +66,12 @@ impl Publisher {
         delivered
     }
 
-    /// How many connections are subscribed to the device at `addr`.
+    /// How many connections are subscribed to the device at `addr` (one that is closing
+    /// counts until it has left). A simulation asks this of every device at every step, so
+    /// it reads the device's list alone: looking into each connection was a cache miss each.
     pub fn subscribers(&self, addr: DevAddr) -> usize {
-        let key = (addr.interf, addr.index);
-        let Ok(port) = u16::try_from(addr.robot) else {
-            return 0;
-        };
         self.state
-            .sessions_on(port)
-            .iter()
-            .filter(|s| {
-                s.subscriptions
-                    .lock()
-                    .expect("subscriptions")
-                    .contains(&key)
-            })
-            .count()
+            .device_at(addr)
+            .map_or(0, |slot| slot.subscribers().len())
     }
 }

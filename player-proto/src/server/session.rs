@@ -15,7 +15,7 @@ use tokio::net::tcp::OwnedWriteHalf;
 use super::control::Peer;
 use super::device::Reply;
 use super::queue::data_request_ack;
-use super::state::{OpenConnection, ServerState, SessionState};
+use super::state::{DeviceSlot, OpenConnection, ServerState, SessionState};
 use crate::delivery::{DataMode, ReplaceRule};
 use crate::interfaces::player::{
     self, CLOSE_MODE, DevList, DeviceReq, DriverInfo, ERROR_MODE, OPEN_MODE, Player,
@@ -102,7 +102,7 @@ async fn write_loop(mut out: OwnedWriteHalf, session: Arc<SessionState>) {
 
 struct Handler<'a> {
     state: &'a ServerState,
-    session: &'a SessionState,
+    session: &'a Arc<SessionState>,
     port: u16,
 }
 
@@ -268,11 +268,15 @@ impl Handler<'_> {
                     .expect("subscriptions")
                     .contains(&key);
                 if subscribed || device.on_subscribe() {
-                    self.session
+                    let added = self
+                        .session
                         .subscriptions
                         .lock()
                         .expect("subscriptions")
                         .insert(key);
+                    if added {
+                        slot.subscribers().push(self.session.clone());
+                    }
                     OPEN_MODE
                 } else {
                     ERROR_MODE
@@ -286,6 +290,7 @@ impl Handler<'_> {
                     .expect("subscriptions")
                     .remove(&key)
                 {
+                    self.leave(slot);
                     device.on_unsubscribe();
                 }
                 CLOSE_MODE
@@ -311,8 +316,15 @@ impl Handler<'_> {
             .collect();
         for (interf, index) in subs {
             if let Some(slot) = self.state.device(self.port, interf, index) {
-                slot.device.lock().expect("device").on_unsubscribe();
+                let mut device = slot.device.lock().expect("device");
+                self.leave(slot);
+                device.on_unsubscribe();
             }
         }
+    }
+
+    /// Takes this connection off the device's subscriber list.
+    fn leave(&self, slot: &DeviceSlot) {
+        slot.subscribers().retain(|s| !Arc::ptr_eq(s, self.session));
     }
 }

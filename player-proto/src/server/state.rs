@@ -18,6 +18,27 @@ use crate::wire::{DevAddr, Interface};
 pub(crate) struct DeviceSlot {
     pub addr: DevAddr,
     pub device: Mutex<Box<dyn Device>>,
+    /// The connections subscribed to it, in the order they subscribed: kept by the sessions
+    /// as they subscribe and leave, so that publishing goes straight to them — asking every
+    /// connection of the port whether it subscribed, for every message, was 6 % of a
+    /// simulation serving 1 024 robots.
+    pub subscribers: Mutex<Vec<Arc<SessionState>>>,
+}
+
+impl DeviceSlot {
+    pub fn new(addr: DevAddr, device: Box<dyn Device>) -> DeviceSlot {
+        DeviceSlot {
+            addr,
+            device: Mutex::new(device),
+            subscribers: Mutex::default(),
+        }
+    }
+
+    /// The subscribed connections, locked. Taken after the device (by a session subscribing)
+    /// and after the device's own locks (by a simulation publishing), and before any queue.
+    pub fn subscribers(&self) -> MutexGuard<'_, Vec<Arc<SessionState>>> {
+        self.subscribers.lock().expect("subscribers")
+    }
 }
 
 /// One client connection, as the publisher sees it.
@@ -79,6 +100,9 @@ pub(crate) struct ServerState {
     /// The `host` value written into addresses (the server's IPv4 address in memory order).
     pub host: u32,
     pub devices: Vec<DeviceSlot>,
+    /// Where each device is in `devices`, by (port, interface, index): the first one added
+    /// when two share an address.
+    pub by_addr: HashMap<(u16, Interface, u16), usize>,
     /// Live connections by port: a robot's data goes to that robot's port only, so publishing
     /// looks at its own port's connections, not at every connection of every robot.
     pub sessions: Mutex<HashMap<u16, Vec<Weak<SessionState>>>>,
@@ -132,10 +156,29 @@ impl ServerState {
         done(*open).then_some(*open)
     }
 
+    /// Where each of `devices` is, for [`ServerState::by_addr`].
+    pub fn index_devices(devices: &[DeviceSlot]) -> HashMap<(u16, Interface, u16), usize> {
+        let mut by_addr = HashMap::new();
+        for (i, d) in devices.iter().enumerate() {
+            if let Ok(port) = u16::try_from(d.addr.robot) {
+                by_addr
+                    .entry((port, d.addr.interf, d.addr.index))
+                    .or_insert(i);
+            }
+        }
+        by_addr
+    }
+
     pub fn device(&self, port: u16, interf: Interface, index: u16) -> Option<&DeviceSlot> {
-        self.devices.iter().find(|d| {
-            d.addr.robot == u32::from(port) && d.addr.interf == interf && d.addr.index == index
-        })
+        self.by_addr
+            .get(&(port, interf, index))
+            .map(|&i| &self.devices[i])
+    }
+
+    /// The device at `addr` (its `robot` is the port).
+    pub fn device_at(&self, addr: DevAddr) -> Option<&DeviceSlot> {
+        let port = u16::try_from(addr.robot).ok()?;
+        self.device(port, addr.interf, addr.index)
     }
 
     pub fn devices_on(&self, port: u16) -> impl Iterator<Item = &DeviceSlot> {
@@ -149,18 +192,6 @@ impl ServerState {
         let on_port = sessions.entry(session.port).or_default();
         on_port.retain(|s| s.strong_count() > 0);
         on_port.push(Arc::downgrade(session));
-    }
-
-    /// The open connections on `port`.
-    pub fn sessions_on(&self, port: u16) -> Vec<Arc<SessionState>> {
-        let sessions = self.sessions.lock().expect("sessions");
-        sessions
-            .get(&port)
-            .into_iter()
-            .flatten()
-            .filter_map(Weak::upgrade)
-            .filter(|s| !s.is_closed())
-            .collect()
     }
 
     /// Every connection still alive, on any port.
