@@ -39,6 +39,7 @@
 
 mod control;
 mod device;
+mod direct;
 mod publisher;
 mod queue;
 mod session;

@@ -2,6 +2,8 @@
 
 use std::sync::Arc;
 
+use bytes::BytesMut;
+
 use super::state::{ServerState, SessionState};
 use crate::message::{Body, Message};
 use crate::wire::{DevAddr, MsgType};
@@ -60,8 +62,11 @@ impl Publisher {
         }
         touched.sort_unstable_by_key(Arc::as_ptr);
         touched.dedup_by(|a, b| Arc::ptr_eq(a, b));
+        // Each connection's batch leaves from here in one write where its socket takes it
+        // (`direct.rs`): no writer task to wake.
+        let mut scratch = BytesMut::new();
         for session in touched {
-            session.wake();
+            session.flush_now(&mut scratch);
         }
         delivered
     }

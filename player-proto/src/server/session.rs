@@ -42,6 +42,13 @@ pub(crate) async fn serve(
     let peer_addr = stream.peer_addr().ok();
     let peer = peer_addr.map_or_else(|| "?".to_string(), |a| a.to_string());
     let _ = stream.set_nodelay(true);
+    // A second handle on the socket, for the publisher's own writes (`direct.rs`).
+    let direct = socket2::SockRef::from(&stream)
+        .try_clone()
+        .map(std::net::TcpStream::from)
+        .and_then(|s| s.set_nonblocking(true).map(|()| s))
+        .inspect_err(|e| tracing::debug!(%peer, "data will go through the writer task: {e}"))
+        .ok();
     let (read_half, mut write_half) = stream.into_split();
     if let Err(e) = write_half.write_all(&banner.to_bytes()).await {
         tracing::debug!(%peer, "client left before the banner: {e}");
@@ -52,7 +59,7 @@ pub(crate) async fn serve(
         ip: peer_addr.map_or(IpAddr::V4(Ipv4Addr::UNSPECIFIED), |a| a.ip()),
     };
     let _open = OpenConnection::new(&state);
-    let session = Arc::new(SessionState::new(port, client, &state.queue_rules));
+    let session = Arc::new(SessionState::new(port, client, &state.queue_rules, direct));
     state.register(&session);
     let writer = tokio::spawn(write_loop(write_half, session.clone()));
 
@@ -83,11 +90,19 @@ pub(crate) async fn serve(
     let _ = writer.await;
 }
 
+/// Writes what the publisher did not (see `direct.rs`): replies, what a publisher's write
+/// left over, and everything when the publisher has no handle on the socket.
 async fn write_loop(mut out: OwnedWriteHalf, session: Arc<SessionState>) {
     let mut scratch = BytesMut::with_capacity(64 * 1024);
     loop {
-        let ready = session.queue.lock().expect("queue").take_sendable();
-        if let Err(e) = write_messages(&mut out, &ready, &mut scratch).await {
+        let turn = session.writer_takes();
+        let written = async {
+            out.write_all(&turn.leftover).await?;
+            write_messages(&mut out, &turn.messages, &mut scratch).await
+        }
+        .await;
+        session.writer_done();
+        if let Err(e) = written {
             tracing::debug!("client write failed: {e}");
             session.close();
             return;

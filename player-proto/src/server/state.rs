@@ -9,6 +9,7 @@ use tokio::sync::Notify;
 
 use super::control::{CommandGate, Peer};
 use super::device::Device;
+use super::direct::DirectWrite;
 use super::queue::OutQueue;
 use crate::delivery::ReplaceRule;
 use crate::message::Message;
@@ -49,11 +50,19 @@ pub(crate) struct SessionState {
     pub queue: Mutex<OutQueue>,
     pub wake_writer: Notify,
     pub closed: AtomicBool,
+    /// The publisher's own writes to the socket (see `direct.rs`).
+    pub direct: Mutex<DirectWrite>,
 }
 
 impl SessionState {
-    /// A session whose queue starts with `rules`.
-    pub fn new(port: u16, peer: Peer, rules: &[ReplaceRule]) -> SessionState {
+    /// A session whose queue starts with `rules`; `socket`, a second handle on the
+    /// connection's socket, lets a publisher write to it (see `direct.rs`).
+    pub fn new(
+        port: u16,
+        peer: Peer,
+        rules: &[ReplaceRule],
+        socket: Option<std::net::TcpStream>,
+    ) -> SessionState {
         let mut queue = OutQueue::default();
         for rule in rules {
             queue.add_rule(*rule);
@@ -65,6 +74,7 @@ impl SessionState {
             queue: Mutex::new(queue),
             wake_writer: Notify::new(),
             closed: AtomicBool::new(false),
+            direct: Mutex::new(DirectWrite::new(socket)),
         }
     }
 
@@ -91,6 +101,7 @@ impl SessionState {
 
     pub fn close(&self) {
         self.closed.store(true, Ordering::Release);
+        self.drop_direct_socket();
         self.wake_writer.notify_one();
     }
 }
