@@ -15,6 +15,7 @@ mod noise;
 mod sensors;
 mod shapes;
 mod walking;
+mod wall_beams;
 mod wander;
 
 pub use battery::BatteryState;

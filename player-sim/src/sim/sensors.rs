@@ -3,6 +3,7 @@
 
 use super::beams::{BeamBoxes, Fan};
 use super::nearby::NearbyBoxes;
+use super::wall_beams::WallBeams;
 use super::{Simulation, wrap};
 use crate::world::{FiducialSpec, OccupancyGrid, Pose, RangerSpec};
 
@@ -111,9 +112,12 @@ pub fn ranger_returns(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Ra
         let at = (origin.x, origin.y);
         let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, max);
         let walls = walls_seen(sim, at.0, at.1, max);
+        let wall_beams = walls.map(|grid| WallBeams::new(grid, at.0, at.1, max, fan));
         let by_beam = BeamBoxes::new(&boxes, at.0, at.1, fan);
         move |beam, angle| {
             let ahead = by_beam.of(beam);
+            // Only the beams that may meet a wall walk the grid.
+            let walls = walls.filter(|_| wall_beams.as_ref().is_some_and(|w| w.may_meet(beam)));
             // Nothing in this beam's direction: its maximum, without a sine or cosine.
             if walls.is_none() && ahead.is_empty() {
                 return None;

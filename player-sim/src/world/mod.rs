@@ -18,6 +18,7 @@ mod person;
 mod properties;
 mod raster;
 mod robot;
+mod wall_rects;
 mod wall_sums;
 
 use std::path::Path;
@@ -31,6 +32,7 @@ pub use controller::Controller;
 pub use gripper::GripperSpec;
 pub use models::{Model, Types, read_with_includes};
 pub use person::{PersonSpec, STANCE_WIDTH, Walk};
+pub use wall_rects::WallRect;
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
 use properties::{
