@@ -7,7 +7,7 @@ use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use player_proto::server::{Server, ServerConfig, ServerError};
+use player_proto::server::{DeviceKey, Server, ServerConfig, ServerError};
 use player_proto::wire::DevAddr;
 
 use crate::devices::SimDevice;
@@ -143,25 +143,25 @@ pub fn serve(
         .zip(&robots)
         .map(|(&c, &r)| (c, server.port(r)))
         .collect();
-    let published: Vec<(DevAddr, crate::served::Source)> = devices
+    // Each device found once in the server: the step asks after every one at every step.
+    let publisher = server.publisher();
+    let published: Vec<(DeviceKey, crate::served::Source)> = devices
         .iter()
-        .map(|d| {
+        .filter_map(|d| {
             let actual = ports
                 .iter()
                 .find(|(c, _)| *c == d.port)
                 .map_or(d.port, |(_, a)| *a);
-            (
-                DevAddr {
-                    robot: u32::from(actual),
-                    ..d.addr()
-                },
-                d.source.clone(),
-            )
+            let addr = DevAddr {
+                robot: u32::from(actual),
+                ..d.addr()
+            };
+            Some((publisher.find(addr)?, d.source.clone()))
         })
         .collect();
     let stop = Arc::new(AtomicBool::new(false));
     let stepper = {
-        let (sim, stop, publisher) = (sim.clone(), stop.clone(), server.publisher());
+        let (sim, stop) = (sim.clone(), stop.clone());
         std::thread::Builder::new()
             .name("player-sim step".into())
             .spawn(move || step_loop(&sim, &published, &publisher, &options, &stop))
@@ -178,7 +178,7 @@ pub fn serve(
 
 fn step_loop(
     sim: &Mutex<Simulation>,
-    devices: &[(DevAddr, crate::served::Source)],
+    devices: &[(DeviceKey, crate::served::Source)],
     publisher: &player_proto::server::Publisher,
     options: &ServeOptions,
     stop: &AtomicBool,
@@ -200,25 +200,25 @@ fn step_loop(
             sim.sensing(|sim| {
                 devices
                     .iter()
-                    .filter(|(addr, _)| publisher.subscribers(*addr) > 0)
-                    .flat_map(|(addr, source)| {
-                        let addr = *addr;
+                    .filter(|(key, _)| publisher.subscribers_of(*key) > 0)
+                    .flat_map(|(key, source)| {
+                        let key = *key;
                         SimDevice::data(sim, source, id)
                             .into_iter()
-                            .map(move |(subtype, body)| (addr, source, subtype, body))
+                            .map(move |(subtype, body)| (key, source, subtype, body))
                     })
-                    .map(|(addr, source, subtype, body)| {
+                    .map(|(key, source, subtype, body)| {
                         let time = if source.stamped_by_wall_clock() {
                             wall_clock()
                         } else {
                             sim.time
                         };
-                        (addr, subtype, body, time)
+                        (key, subtype, body, time)
                     })
                     .collect()
             })
         };
-        publisher.publish_all(outgoing);
+        publisher.publish_to_all(outgoing);
         steps += 1;
         if let Some(period) = period {
             let due = started + period.mul_f64(steps as f64);

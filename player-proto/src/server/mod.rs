@@ -53,7 +53,7 @@ use std::time::{Duration, Instant};
 pub use crate::delivery::{DataMode, ReplaceAction, ReplaceRule};
 pub use control::{CommandGate, Commanders, Peer};
 pub use device::{Device, Reply};
-pub use publisher::Publisher;
+pub use publisher::{DeviceKey, Publisher};
 pub use queue::{OutQueue, QUEUE_LIMIT};
 use state::{DeviceSlot, ServerState};
 

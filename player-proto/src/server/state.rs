@@ -186,12 +186,6 @@ impl ServerState {
             .map(|&i| &self.devices[i])
     }
 
-    /// The device at `addr` (its `robot` is the port).
-    pub fn device_at(&self, addr: DevAddr) -> Option<&DeviceSlot> {
-        let port = u16::try_from(addr.robot).ok()?;
-        self.device(port, addr.interf, addr.index)
-    }
-
     pub fn devices_on(&self, port: u16) -> impl Iterator<Item = &DeviceSlot> {
         self.devices
             .iter()
