@@ -1,6 +1,7 @@
 //! A connection's data is written by the publishing thread when the socket takes it and by
 //! the connection's writer task when it does not (a client that stops reading, a small send
-//! buffer): either way every message arrives whole, once, in the order it was published.
+//! buffer), or by the writer task alone (the default): either way every message arrives
+//! whole, once, in the order it was published.
 
 mod support;
 
@@ -15,9 +16,10 @@ use support::RawClient;
 use support::served_robots::Laser0;
 
 /// A laser on a server whose connections have a small send buffer.
-fn server() -> (Server, DevAddr) {
+fn server(publisher_writes: bool) -> (Server, DevAddr) {
     let mut config = ServerConfig::default();
     config.send_buffer = Some(4096);
+    config.publisher_writes = publisher_writes;
     let robot = config.robot(0);
     config.device(robot, "laser:0".parse().unwrap(), Laser0);
     let server = Server::start(config).unwrap();
@@ -64,7 +66,13 @@ fn scan_id(body: &Body) -> u32 {
 
 #[test]
 fn a_client_that_does_not_read_gets_every_message_in_order_when_it_does() {
-    let (server, addr) = server();
+    for publisher_writes in [true, false] {
+        does_not_read_then_reads(publisher_writes);
+    }
+}
+
+fn does_not_read_then_reads(publisher_writes: bool) {
+    let (server, addr) = server(publisher_writes);
     let mut client = subscriber(&server);
     // About 1.6 MB while the client reads nothing: far more than the socket buffers hold,
     // so most of it waits for the writer task.
@@ -87,7 +95,13 @@ fn a_client_that_does_not_read_gets_every_message_in_order_when_it_does() {
 
 #[test]
 fn publishers_on_several_threads_never_interleave_their_bytes() {
-    let (server, addr) = server();
+    for publisher_writes in [true, false] {
+        several_publishers(publisher_writes);
+    }
+}
+
+fn several_publishers(publisher_writes: bool) {
+    let (server, addr) = server(publisher_writes);
     let mut client = subscriber(&server);
     let threads: Vec<_> = (0..3u32)
         .map(|t| {

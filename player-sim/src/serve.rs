@@ -122,6 +122,8 @@ pub fn serve(
     configured.dedup();
     let mut config = ServerConfig::default();
     config.bind = options.bind;
+    // One thread publishes every robot's data each step: it writes to the sockets itself.
+    config.publisher_writes = true;
     let robots: Vec<usize> = configured
         .iter()
         .map(|&p| config.robot(if options.free_ports { 0 } else { p }))

@@ -1,7 +1,8 @@
 //! A connection's data written by the publishing thread itself. Waking each connection's
 //! writer task for every step cost a task wake-up per connection per step, and on a machine
 //! where a thread's wake-up is dear (a VM) that was a good part of what serving 1 024 robots
-//! costs. So the publisher, having queued a step's messages, encodes each connection's
+//! costs. So where the server lets it (`ServerConfig::publisher_writes`, as player-sim
+//! does), the publisher, having queued a step's messages, encodes each connection's
 //! sendable messages and offers them to its socket in one non-blocking write. What the socket
 //! does not take — a slow client, a full send buffer — is handed to the writer task, which
 //! owns the socket from then until it has written it all; meanwhile the publisher only wakes

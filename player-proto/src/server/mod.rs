@@ -77,6 +77,12 @@ pub struct ServerConfig {
     /// loopback grows to megabytes). Small, it bounds how much stale data a slow client can
     /// have waiting in the kernel while newer data replaces the older in its queue.
     pub send_buffer: Option<usize>,
+    /// Whoever publishes writes each connection's share itself, in one non-blocking write
+    /// (`server/direct.rs`), instead of waking the connection's writer task: no thread
+    /// wake-up per connection per publish. For one thread publishing to many connections a
+    /// little each (a simulation's step); off by default, where one message fans out to many
+    /// connections from a thread that has other work (a relay's upstream).
+    pub publisher_writes: bool,
     /// Name of the server's threads, to tell its CPU time from others' in one process.
     pub thread_name: String,
     ports: Vec<u16>,
@@ -92,6 +98,7 @@ impl Default for ServerConfig {
             commanders: Commanders::Everyone,
             queue_rules: Vec::new(),
             send_buffer: None,
+            publisher_writes: false,
             thread_name: "player-server".into(),
             ports: Vec::new(),
             devices: Vec::new(),
@@ -204,6 +211,7 @@ impl Server {
             let banner = banner.clone();
             let max_body = config.max_body;
             let send_buffer = config.send_buffer;
+            let publisher_writes = config.publisher_writes;
             runtime.spawn(async move {
                 let listener = match tokio::net::TcpListener::from_std(listener) {
                     Ok(l) => l,
@@ -227,6 +235,7 @@ impl Server {
                                 state.clone(),
                                 banner.clone(),
                                 max_body,
+                                publisher_writes,
                             ));
                         }
                         Err(e) => {

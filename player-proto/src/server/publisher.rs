@@ -30,8 +30,10 @@ impl Publisher {
     }
 
     /// Publishes several messages (a simulation step's data, say), then sends each
-    /// connection's share in one write: a client subscribed to a robot's pose and its laser
-    /// gets both in one segment, one wake-up on its side instead of two. A message to a
+    /// connection's share in one write (from this thread with
+    /// [`ServerConfig::publisher_writes`](super::ServerConfig::publisher_writes), else by
+    /// waking its writer once): a client subscribed to a robot's pose and its laser gets both
+    /// in one segment, one wake-up on its side instead of two. A message to a
     /// device the server does not have goes nowhere. Returns how many deliveries were queued
     /// in all.
     pub fn publish_all(
@@ -78,8 +80,8 @@ impl Publisher {
         }
         touched.sort_unstable_by_key(Arc::as_ptr);
         touched.dedup_by(|a, b| Arc::ptr_eq(a, b));
-        // Each connection's batch leaves from here in one write where its socket takes it
-        // (`direct.rs`): no writer task to wake.
+        // Each connection's batch leaves from here in one write where the server lets the
+        // publisher write and the socket takes it (`direct.rs`), else its writer is woken.
         let mut scratch = BytesMut::new();
         for session in touched {
             session.flush_now(&mut scratch);

@@ -38,17 +38,24 @@ pub(crate) async fn serve(
     state: Arc<ServerState>,
     banner: Banner,
     max_body: usize,
+    publisher_writes: bool,
 ) {
     let peer_addr = stream.peer_addr().ok();
     let peer = peer_addr.map_or_else(|| "?".to_string(), |a| a.to_string());
     let _ = stream.set_nodelay(true);
     // A second handle on the socket, for the publisher's own writes (`direct.rs`).
-    let direct = socket2::SockRef::from(&stream)
-        .try_clone()
-        .map(std::net::TcpStream::from)
-        .and_then(|s| s.set_nonblocking(true).map(|()| s))
-        .inspect_err(|e| tracing::debug!(%peer, "data will go through the writer task: {e}"))
-        .ok();
+    let direct = publisher_writes
+        .then(|| {
+            socket2::SockRef::from(&stream)
+                .try_clone()
+                .map(std::net::TcpStream::from)
+                .and_then(|s| s.set_nonblocking(true).map(|()| s))
+                .inspect_err(
+                    |e| tracing::debug!(%peer, "data will go through the writer task: {e}"),
+                )
+                .ok()
+        })
+        .flatten();
     let (read_half, mut write_half) = stream.into_split();
     if let Err(e) = write_half.write_all(&banner.to_bytes()).await {
         tracing::debug!(%peer, "client left before the banner: {e}");
