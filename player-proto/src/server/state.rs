@@ -114,8 +114,8 @@ pub(crate) struct ServerState {
     /// Where each device is in `devices`, by (port, interface, index): the first one added
     /// when two share an address.
     pub by_addr: HashMap<(u16, Interface, u16), usize>,
-    /// Live connections by port: a robot's data goes to that robot's port only, so publishing
-    /// looks at its own port's connections, not at every connection of every robot.
+    /// Live connections by port, to close them all when the server stops (publishing goes
+    /// through each device's own list of subscribers).
     pub sessions: Mutex<HashMap<u16, Vec<Weak<SessionState>>>>,
     /// Who may command devices.
     pub gate: CommandGate,
