@@ -38,13 +38,16 @@ type Scan = fn(&Simulation, usize, &RangerSpec) -> Vec<f64>;
 /// One served step: motion, then every ranger's readings by `scan`.
 fn step_with_sensors(sim: &mut Simulation, scan: Scan) -> usize {
     sim.step();
-    let mut readings = 0;
-    for (robot, spec) in sim.world.robots.iter().enumerate() {
-        for ranger in &spec.rangers {
-            readings += scan(sim, robot, ranger).len();
+    // As a served step reads them: in one sensing scope.
+    sim.sensing(|sim| {
+        let mut readings = 0;
+        for (robot, spec) in sim.world.robots.iter().enumerate() {
+            for ranger in &spec.rangers {
+                readings += scan(sim, robot, ranger).len();
+            }
         }
-    }
-    readings
+        readings
+    })
 }
 
 fn bench(c: &mut Criterion) {

@@ -7,7 +7,7 @@ use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use player_proto::server::{Server, ServerConfig, ServerError};
+use player_proto::server::{DeviceKey, Server, ServerConfig, ServerError};
 use player_proto::wire::DevAddr;
 
 use crate::devices::SimDevice;
@@ -122,6 +122,8 @@ pub fn serve(
     configured.dedup();
     let mut config = ServerConfig::default();
     config.bind = options.bind;
+    // One thread publishes every robot's data each step: it writes to the sockets itself.
+    config.publisher_writes = true;
     let robots: Vec<usize> = configured
         .iter()
         .map(|&p| config.robot(if options.free_ports { 0 } else { p }))
@@ -143,25 +145,25 @@ pub fn serve(
         .zip(&robots)
         .map(|(&c, &r)| (c, server.port(r)))
         .collect();
-    let published: Vec<(DevAddr, crate::served::Source)> = devices
+    // Each device found once in the server: the step asks after every one at every step.
+    let publisher = server.publisher();
+    let published: Vec<(DeviceKey, crate::served::Source)> = devices
         .iter()
-        .map(|d| {
+        .filter_map(|d| {
             let actual = ports
                 .iter()
                 .find(|(c, _)| *c == d.port)
                 .map_or(d.port, |(_, a)| *a);
-            (
-                DevAddr {
-                    robot: u32::from(actual),
-                    ..d.addr()
-                },
-                d.source.clone(),
-            )
+            let addr = DevAddr {
+                robot: u32::from(actual),
+                ..d.addr()
+            };
+            Some((publisher.find(addr)?, d.source.clone()))
         })
         .collect();
     let stop = Arc::new(AtomicBool::new(false));
     let stepper = {
-        let (sim, stop, publisher) = (sim.clone(), stop.clone(), server.publisher());
+        let (sim, stop) = (sim.clone(), stop.clone());
         std::thread::Builder::new()
             .name("player-sim step".into())
             .spawn(move || step_loop(&sim, &published, &publisher, &options, &stop))
@@ -178,7 +180,7 @@ pub fn serve(
 
 fn step_loop(
     sim: &Mutex<Simulation>,
-    devices: &[(DevAddr, crate::served::Source)],
+    devices: &[(DeviceKey, crate::served::Source)],
     publisher: &player_proto::server::Publisher,
     options: &ServeOptions,
     stop: &AtomicBool,
@@ -196,26 +198,29 @@ fn step_loop(
             let mut sim = sim.lock().expect("simulation");
             sim.step();
             let id = u32::try_from(sim.steps).unwrap_or(u32::MAX);
-            devices
-                .iter()
-                .filter(|(addr, _)| publisher.subscribers(*addr) > 0)
-                .flat_map(|(addr, source)| {
-                    let addr = *addr;
-                    SimDevice::data(&sim, source, id)
-                        .into_iter()
-                        .map(move |(subtype, body)| (addr, source, subtype, body))
-                })
-                .map(|(addr, source, subtype, body)| {
-                    let time = if source.stamped_by_wall_clock() {
-                        wall_clock()
-                    } else {
-                        sim.time
-                    };
-                    (addr, subtype, body, time)
-                })
-                .collect()
+            // The step's scans in one sensing scope: the robots' index is checked once.
+            sim.sensing(|sim| {
+                devices
+                    .iter()
+                    .filter(|(key, _)| publisher.subscribers_of(*key) > 0)
+                    .flat_map(|(key, source)| {
+                        let key = *key;
+                        SimDevice::data(sim, source, id)
+                            .into_iter()
+                            .map(move |(subtype, body)| (key, source, subtype, body))
+                    })
+                    .map(|(key, source, subtype, body)| {
+                        let time = if source.stamped_by_wall_clock() {
+                            wall_clock()
+                        } else {
+                            sim.time
+                        };
+                        (key, subtype, body, time)
+                    })
+                    .collect()
+            })
         };
-        publisher.publish_all(outgoing);
+        publisher.publish_to_all(outgoing);
         steps += 1;
         if let Some(period) = period {
             let due = started + period.mul_f64(steps as f64);

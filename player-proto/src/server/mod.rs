@@ -29,15 +29,17 @@
 //! Locks, and the one order they are taken in (a cycle would deadlock a session's thread
 //! against a device's own): a session's thread holds a **device** while its hooks run
 //! (`on_request`, `on_subscribe` …); a hook may take the device's own locks (a simulation's)
-//! and may publish; publishing takes the **sessions** list, then each session's
-//! **subscriptions**, then its **queue**, releasing each before taking the next. So: device →
-//! the device's own locks → sessions → subscriptions → queue, never backwards — a device's
+//! and may publish; a session subscribing takes its own **subscriptions** and, released
+//! first, the device's **subscriber list**; publishing takes a device's subscriber list, then
+//! each subscriber's **queue**. So: device → the device's own locks → subscriptions, or
+//! subscriber list → queue, never backwards — a device's
 //! thread (a simulation's step) may publish while holding its own locks, because nothing the
 //! server holds while taking a device's lock is taken by publishing.
 //!
 
 mod control;
 mod device;
+mod direct;
 mod publisher;
 mod queue;
 mod session;
@@ -51,7 +53,7 @@ use std::time::{Duration, Instant};
 pub use crate::delivery::{DataMode, ReplaceAction, ReplaceRule};
 pub use control::{CommandGate, Commanders, Peer};
 pub use device::{Device, Reply};
-pub use publisher::Publisher;
+pub use publisher::{DeviceKey, Publisher};
 pub use queue::{OutQueue, QUEUE_LIMIT};
 use state::{DeviceSlot, ServerState};
 
@@ -75,6 +77,12 @@ pub struct ServerConfig {
     /// loopback grows to megabytes). Small, it bounds how much stale data a slow client can
     /// have waiting in the kernel while newer data replaces the older in its queue.
     pub send_buffer: Option<usize>,
+    /// Whoever publishes writes each connection's share itself, in one non-blocking write
+    /// (`server/direct.rs`), instead of waking the connection's writer task: no thread
+    /// wake-up per connection per publish. For one thread publishing to many connections a
+    /// little each (a simulation's step); off by default, where one message fans out to many
+    /// connections from a thread that has other work (a relay's upstream).
+    pub publisher_writes: bool,
     /// Name of the server's threads, to tell its CPU time from others' in one process.
     pub thread_name: String,
     ports: Vec<u16>,
@@ -90,6 +98,7 @@ impl Default for ServerConfig {
             commanders: Commanders::Everyone,
             queue_rules: Vec::new(),
             send_buffer: None,
+            publisher_writes: false,
             thread_name: "player-server".into(),
             ports: Vec::new(),
             devices: Vec::new(),
@@ -172,18 +181,17 @@ impl Server {
                     robot,
                     robots,
                 })?;
-                Ok(DeviceSlot {
-                    addr: DevAddr {
-                        host,
-                        robot: u32::from(port),
-                        ..addr
-                    },
-                    device: Mutex::new(device),
-                })
+                let addr = DevAddr {
+                    host,
+                    robot: u32::from(port),
+                    ..addr
+                };
+                Ok(DeviceSlot::new(addr, device))
             })
             .collect::<Result<Vec<_>, ServerError>>()?;
         let state = Arc::new(ServerState {
             host,
+            by_addr: ServerState::index_devices(&devices),
             devices,
             sessions: Mutex::default(),
             gate: CommandGate::new(config.commanders),
@@ -203,6 +211,7 @@ impl Server {
             let banner = banner.clone();
             let max_body = config.max_body;
             let send_buffer = config.send_buffer;
+            let publisher_writes = config.publisher_writes;
             runtime.spawn(async move {
                 let listener = match tokio::net::TcpListener::from_std(listener) {
                     Ok(l) => l,
@@ -226,6 +235,7 @@ impl Server {
                                 state.clone(),
                                 banner.clone(),
                                 max_body,
+                                publisher_writes,
                             ));
                         }
                         Err(e) => {

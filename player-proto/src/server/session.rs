@@ -15,7 +15,7 @@ use tokio::net::tcp::OwnedWriteHalf;
 use super::control::Peer;
 use super::device::Reply;
 use super::queue::data_request_ack;
-use super::state::{OpenConnection, ServerState, SessionState};
+use super::state::{DeviceSlot, OpenConnection, ServerState, SessionState};
 use crate::delivery::{DataMode, ReplaceRule};
 use crate::interfaces::player::{
     self, CLOSE_MODE, DevList, DeviceReq, DriverInfo, ERROR_MODE, OPEN_MODE, Player,
@@ -38,10 +38,24 @@ pub(crate) async fn serve(
     state: Arc<ServerState>,
     banner: Banner,
     max_body: usize,
+    publisher_writes: bool,
 ) {
     let peer_addr = stream.peer_addr().ok();
     let peer = peer_addr.map_or_else(|| "?".to_string(), |a| a.to_string());
     let _ = stream.set_nodelay(true);
+    // A second handle on the socket, for the publisher's own writes (`direct.rs`).
+    let direct = publisher_writes
+        .then(|| {
+            socket2::SockRef::from(&stream)
+                .try_clone()
+                .map(std::net::TcpStream::from)
+                .and_then(|s| s.set_nonblocking(true).map(|()| s))
+                .inspect_err(
+                    |e| tracing::debug!(%peer, "data will go through the writer task: {e}"),
+                )
+                .ok()
+        })
+        .flatten();
     let (read_half, mut write_half) = stream.into_split();
     if let Err(e) = write_half.write_all(&banner.to_bytes()).await {
         tracing::debug!(%peer, "client left before the banner: {e}");
@@ -52,7 +66,7 @@ pub(crate) async fn serve(
         ip: peer_addr.map_or(IpAddr::V4(Ipv4Addr::UNSPECIFIED), |a| a.ip()),
     };
     let _open = OpenConnection::new(&state);
-    let session = Arc::new(SessionState::new(port, client, &state.queue_rules));
+    let session = Arc::new(SessionState::new(port, client, &state.queue_rules, direct));
     state.register(&session);
     let writer = tokio::spawn(write_loop(write_half, session.clone()));
 
@@ -83,11 +97,19 @@ pub(crate) async fn serve(
     let _ = writer.await;
 }
 
+/// Writes what the publisher did not (see `direct.rs`): replies, what a publisher's write
+/// left over, and everything when the publisher has no handle on the socket.
 async fn write_loop(mut out: OwnedWriteHalf, session: Arc<SessionState>) {
     let mut scratch = BytesMut::with_capacity(64 * 1024);
     loop {
-        let ready = session.queue.lock().expect("queue").take_sendable();
-        if let Err(e) = write_messages(&mut out, &ready, &mut scratch).await {
+        let turn = session.writer_takes();
+        let written = async {
+            out.write_all(&turn.leftover).await?;
+            write_messages(&mut out, &turn.messages, &mut scratch).await
+        }
+        .await;
+        session.writer_done();
+        if let Err(e) = written {
             tracing::debug!("client write failed: {e}");
             session.close();
             return;
@@ -102,7 +124,7 @@ async fn write_loop(mut out: OwnedWriteHalf, session: Arc<SessionState>) {
 
 struct Handler<'a> {
     state: &'a ServerState,
-    session: &'a SessionState,
+    session: &'a Arc<SessionState>,
     port: u16,
 }
 
@@ -268,11 +290,15 @@ impl Handler<'_> {
                     .expect("subscriptions")
                     .contains(&key);
                 if subscribed || device.on_subscribe() {
-                    self.session
+                    let added = self
+                        .session
                         .subscriptions
                         .lock()
                         .expect("subscriptions")
                         .insert(key);
+                    if added {
+                        slot.subscribers().push(self.session.clone());
+                    }
                     OPEN_MODE
                 } else {
                     ERROR_MODE
@@ -286,6 +312,7 @@ impl Handler<'_> {
                     .expect("subscriptions")
                     .remove(&key)
                 {
+                    self.leave(slot);
                     device.on_unsubscribe();
                 }
                 CLOSE_MODE
@@ -311,8 +338,15 @@ impl Handler<'_> {
             .collect();
         for (interf, index) in subs {
             if let Some(slot) = self.state.device(self.port, interf, index) {
-                slot.device.lock().expect("device").on_unsubscribe();
+                let mut device = slot.device.lock().expect("device");
+                self.leave(slot);
+                device.on_unsubscribe();
             }
         }
+    }
+
+    /// Takes this connection off the device's subscriber list.
+    fn leave(&self, slot: &DeviceSlot) {
+        slot.subscribers().retain(|s| !Arc::ptr_eq(s, self.session));
     }
 }

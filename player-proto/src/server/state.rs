@@ -9,6 +9,7 @@ use tokio::sync::Notify;
 
 use super::control::{CommandGate, Peer};
 use super::device::Device;
+use super::direct::DirectWrite;
 use super::queue::OutQueue;
 use crate::delivery::ReplaceRule;
 use crate::message::Message;
@@ -18,6 +19,27 @@ use crate::wire::{DevAddr, Interface};
 pub(crate) struct DeviceSlot {
     pub addr: DevAddr,
     pub device: Mutex<Box<dyn Device>>,
+    /// The connections subscribed to it, in the order they subscribed: kept by the sessions
+    /// as they subscribe and leave, so that publishing goes straight to them — asking every
+    /// connection of the port whether it subscribed, for every message, was 6 % of a
+    /// simulation serving 1 024 robots.
+    pub subscribers: Mutex<Vec<Arc<SessionState>>>,
+}
+
+impl DeviceSlot {
+    pub fn new(addr: DevAddr, device: Box<dyn Device>) -> DeviceSlot {
+        DeviceSlot {
+            addr,
+            device: Mutex::new(device),
+            subscribers: Mutex::default(),
+        }
+    }
+
+    /// The subscribed connections, locked. Taken after the device (by a session subscribing)
+    /// and after the device's own locks (by a simulation publishing), and before any queue.
+    pub fn subscribers(&self) -> MutexGuard<'_, Vec<Arc<SessionState>>> {
+        self.subscribers.lock().expect("subscribers")
+    }
 }
 
 /// One client connection, as the publisher sees it.
@@ -28,11 +50,19 @@ pub(crate) struct SessionState {
     pub queue: Mutex<OutQueue>,
     pub wake_writer: Notify,
     pub closed: AtomicBool,
+    /// The publisher's own writes to the socket (see `direct.rs`).
+    pub direct: Mutex<DirectWrite>,
 }
 
 impl SessionState {
-    /// A session whose queue starts with `rules`.
-    pub fn new(port: u16, peer: Peer, rules: &[ReplaceRule]) -> SessionState {
+    /// A session whose queue starts with `rules`; `socket`, a second handle on the
+    /// connection's socket, lets a publisher write to it (see `direct.rs`).
+    pub fn new(
+        port: u16,
+        peer: Peer,
+        rules: &[ReplaceRule],
+        socket: Option<std::net::TcpStream>,
+    ) -> SessionState {
         let mut queue = OutQueue::default();
         for rule in rules {
             queue.add_rule(*rule);
@@ -44,6 +74,7 @@ impl SessionState {
             queue: Mutex::new(queue),
             wake_writer: Notify::new(),
             closed: AtomicBool::new(false),
+            direct: Mutex::new(DirectWrite::new(socket)),
         }
     }
 
@@ -70,6 +101,7 @@ impl SessionState {
 
     pub fn close(&self) {
         self.closed.store(true, Ordering::Release);
+        self.drop_direct_socket();
         self.wake_writer.notify_one();
     }
 }
@@ -79,8 +111,11 @@ pub(crate) struct ServerState {
     /// The `host` value written into addresses (the server's IPv4 address in memory order).
     pub host: u32,
     pub devices: Vec<DeviceSlot>,
-    /// Live connections by port: a robot's data goes to that robot's port only, so publishing
-    /// looks at its own port's connections, not at every connection of every robot.
+    /// Where each device is in `devices`, by (port, interface, index): the first one added
+    /// when two share an address.
+    pub by_addr: HashMap<(u16, Interface, u16), usize>,
+    /// Live connections by port, to close them all when the server stops (publishing goes
+    /// through each device's own list of subscribers).
     pub sessions: Mutex<HashMap<u16, Vec<Weak<SessionState>>>>,
     /// Who may command devices.
     pub gate: CommandGate,
@@ -132,10 +167,23 @@ impl ServerState {
         done(*open).then_some(*open)
     }
 
+    /// Where each of `devices` is, for [`ServerState::by_addr`].
+    pub fn index_devices(devices: &[DeviceSlot]) -> HashMap<(u16, Interface, u16), usize> {
+        let mut by_addr = HashMap::new();
+        for (i, d) in devices.iter().enumerate() {
+            if let Ok(port) = u16::try_from(d.addr.robot) {
+                by_addr
+                    .entry((port, d.addr.interf, d.addr.index))
+                    .or_insert(i);
+            }
+        }
+        by_addr
+    }
+
     pub fn device(&self, port: u16, interf: Interface, index: u16) -> Option<&DeviceSlot> {
-        self.devices.iter().find(|d| {
-            d.addr.robot == u32::from(port) && d.addr.interf == interf && d.addr.index == index
-        })
+        self.by_addr
+            .get(&(port, interf, index))
+            .map(|&i| &self.devices[i])
     }
 
     pub fn devices_on(&self, port: u16) -> impl Iterator<Item = &DeviceSlot> {
@@ -149,18 +197,6 @@ impl ServerState {
         let on_port = sessions.entry(session.port).or_default();
         on_port.retain(|s| s.strong_count() > 0);
         on_port.push(Arc::downgrade(session));
-    }
-
-    /// The open connections on `port`.
-    pub fn sessions_on(&self, port: u16) -> Vec<Arc<SessionState>> {
-        let sessions = self.sessions.lock().expect("sessions");
-        sessions
-            .get(&port)
-            .into_iter()
-            .flatten()
-            .filter_map(Weak::upgrade)
-            .filter(|s| !s.is_closed())
-            .collect()
     }
 
     /// Every connection still alive, on any port.

@@ -82,7 +82,19 @@ fn beams_towards(fan: Fan, cx: f64, cy: f64, radius: f64) -> [(usize, usize); 2]
     }
     let half = (radius / distance).asin();
     let bearing = cy.atan2(cx);
-    // The box's bearing from the first beam, in [0, 2π); the fan spans [0, (count-1) step].
+    // `half` is below π/2 here: a box never covers more than half a turn of directions.
+    debug_assert!(half < PI / 2.0 || half.is_nan());
+    beams_spanning(fan, bearing, half)
+}
+
+/// The beams of `fan` whose direction is within `half` (below π/2) of `bearing`, widened by a
+/// beam on each side: up to two half-open ranges of beam indices (empty ones `(0, 0)`).
+pub(super) fn beams_spanning(fan: Fan, bearing: f64, half: f64) -> [(usize, usize); 2] {
+    let all = [(0, fan.count), (0, 0)];
+    if !(fan.step > 1e-9 && fan.count >= 2) {
+        return all;
+    }
+    // The bearing from the first beam, in [0, 2π); the fan spans [0, (count-1) step].
     let from_first = (bearing - fan.first).rem_euclid(TAU);
     if !from_first.is_finite() || !half.is_finite() {
         return all;
@@ -109,8 +121,6 @@ fn beams_towards(fan: Fan, cx: f64, cy: f64, radius: f64) -> [(usize, usize); 2]
     if found == 2 && a < d && c < b {
         return all;
     }
-    // `half` is below π/2 here: a box never covers more than half a turn of directions.
-    debug_assert!(half < PI / 2.0);
     out
 }
 

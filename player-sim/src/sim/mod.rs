@@ -15,6 +15,7 @@ mod noise;
 mod sensors;
 mod shapes;
 mod walking;
+mod wall_beams;
 mod wander;
 
 pub use battery::BatteryState;
@@ -162,6 +163,14 @@ impl Simulation {
     /// step, again whenever a robot has moved).
     pub fn body_index(&self) -> std::sync::Arc<BodyIndex> {
         self.bodies.get(&self.world, &self.robots)
+    }
+
+    /// Runs `f`, which reads many sensors (a served step's scans), with the robots' index
+    /// checked once for all of them instead of once per sensor: the robots cannot move while
+    /// `f` borrows the simulation.
+    pub fn sensing<R>(&self, f: impl FnOnce(&Simulation) -> R) -> R {
+        let _hold = self.bodies.hold(&self.world, &self.robots);
+        f(self)
     }
 
     /// Every solid thing but robot `except`, as boxes.

@@ -72,6 +72,8 @@ impl<'a> NearbyBoxes<'a> {
         // every robot was asked before, so that ties between boxes go the same way.
         let mut near = Vec::new();
         sim.body_index().near(x, y, reach, &mut near);
+        // At most every robot asked and every obstacle: one allocation, not a doubling series.
+        let mut boxes = Vec::with_capacity(near.len() + sim.world.obstacles.len());
         let robots = near
             .into_iter()
             .filter(move |&i| Some(i) != except)
@@ -96,9 +98,8 @@ impl<'a> NearbyBoxes<'a> {
                 let body = body_at(o.pose, o.origin);
                 (body, o.size, o.color, o.ranger_return, &o.shape[..])
             });
-        let boxes = robots
-            .chain(obstacles)
-            .filter_map(|(pose, size, color, ranger_return, shape)| {
+        boxes.extend(robots.chain(obstacles).filter_map(
+            |(pose, size, color, ranger_return, shape)| {
                 // Squares, not `hypot`: every sensor asks this of the robots around it.
                 let radius = (size[0] * size[0] + size[1] * size[1]).sqrt() / 2.0;
                 let (ex, ey) = (pose.x - x, pose.y - y);
@@ -119,8 +120,8 @@ impl<'a> NearbyBoxes<'a> {
                         shape,
                     }
                 })
-            })
-            .collect();
+            },
+        ));
         NearbyBoxes { boxes }
     }
 

@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use super::cell_floor::floor_i64;
 use super::wall_sums::WallSums;
 
 /// Which way a wall face looks.
@@ -78,8 +79,8 @@ impl OccupancyGrid {
 
     fn cell_of(&self, x: f64, y: f64) -> (i64, i64) {
         (
-            ((x - self.origin.0) / self.cell.0).floor() as i64,
-            ((y - self.origin.1) / self.cell.1).floor() as i64,
+            floor_i64((x - self.origin.0) / self.cell.0),
+            floor_i64((y - self.origin.1) / self.cell.1),
         )
     }
 
@@ -108,6 +109,20 @@ impl OccupancyGrid {
         if !(low.0.is_finite() && low.1.is_finite() && high.0.is_finite() && high.1.is_finite()) {
             return true;
         }
+        self.cells_around(low, high).is_some_and(|(columns, rows)| {
+            self.wall_sums
+                .count(&self.occupied, self.width, columns, rows)
+                > 0
+        })
+    }
+
+    /// The columns and rows (ends exclusive) of the grid's cells in the rectangle from `low`
+    /// to `high` (finite), and a cell beyond its edges; none when that is outside the grid.
+    pub(super) fn cells_around(
+        &self,
+        low: (f64, f64),
+        high: (f64, f64),
+    ) -> Option<((usize, usize), (usize, usize))> {
         let (c0, r0) = self.cell_of(low.0, low.1);
         let (c1, r1) = self.cell_of(high.0, high.1);
         let within = |low: i64, high: i64, n: usize| {
@@ -118,12 +133,7 @@ impl OccupancyGrid {
             )
         };
         let (columns, rows) = (within(c0, c1, self.width), within(r0, r1, self.height));
-        if columns.0 >= columns.1 || rows.0 >= rows.1 {
-            return false;
-        }
-        self.wall_sums
-            .count(&self.occupied, self.width, columns, rows)
-            > 0
+        (columns.0 < columns.1 && rows.0 < rows.1).then_some((columns, rows))
     }
 
     /// Distance from `(x, y)` along `angle` to the first wall, if within `max` (grid traversal

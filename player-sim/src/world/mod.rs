@@ -8,6 +8,7 @@ mod battery;
 mod bitmap;
 mod blobfinder;
 mod blocks;
+mod cell_floor;
 mod colors;
 mod controller;
 mod floorplan;
@@ -17,6 +18,7 @@ mod person;
 mod properties;
 mod raster;
 mod robot;
+mod wall_rects;
 mod wall_sums;
 
 use std::path::Path;
@@ -25,10 +27,12 @@ pub use battery::BatterySpec;
 pub use bitmap::{Face, OccupancyGrid};
 pub use blobfinder::BlobfinderSpec;
 pub use blocks::{Polygon, placed};
+pub(crate) use cell_floor::floor_i64;
 pub use controller::Controller;
 pub use gripper::GripperSpec;
 pub use models::{Model, Types, read_with_includes};
 pub use person::{PersonSpec, STANCE_WIDTH, Walk};
+pub use wall_rects::WallRect;
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
 use properties::{
