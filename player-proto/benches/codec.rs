@@ -127,6 +127,12 @@ fn decode(c: &mut Criterion) {
             &wire,
             |b, wire: &Bytes| b.iter(|| black_box(wire.to_vec())),
         );
+        // The floor under `message`: the body handle's clone and drop alone, which the frame
+        // decoder pays for every message it splits off the receive buffer (two atomic
+        // reference-count operations), before any byte is decoded.
+        group.bench_with_input(BenchmarkId::new("body handle", name), &body, |b, body| {
+            b.iter(|| black_box(black_box(body).clone()))
+        });
     }
     group.finish();
 }
