@@ -10,7 +10,9 @@
 //! * [`McapRecords`] — records out of one, trusting nothing.
 //! * [`prec_to_mcap`] / [`mcap_to_prec`] — whole files, streaming, in bounded memory.
 //! * [`recorder`] — a recorder writing MCAP directly when the file is named `*.mcap`.
+//! * [`as_prec`] — an MCAP file read as the `.prec` it holds, by a replay or a summary.
 
+pub mod as_prec;
 pub mod foxglove_channels;
 pub mod layout;
 pub mod reader;

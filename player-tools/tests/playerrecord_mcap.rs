@@ -105,3 +105,53 @@ fn a_cut_mcap_file_converts_up_to_the_cut_and_says_where() {
     let kept = std::fs::read(&back).unwrap();
     assert!(original.starts_with(&kept), "not a prefix");
 }
+
+/// A recording kept as MCAP (recorded straight to `*.mcap`, or exported) is summarised and
+/// exported for Player's `readlog` exactly as the `.prec` it holds; a file that is neither
+/// kind is refused by name, each cause said once.
+#[test]
+fn info_and_export_read_an_mcap_file_as_the_recording_it_holds() {
+    let dir = tempfile::tempdir().unwrap();
+    let (prec, mcap) = (dir.path().join("real.prec"), dir.path().join("real.mcap"));
+    let mut args = vec!["from-capture", "-o", path(&prec)];
+    let captures = captures();
+    args.extend(captures.iter().map(|p| path(p)));
+    ok(playerrecord(&args));
+    ok(playerrecord(&["export", path(&prec), "-o", path(&mcap)]));
+
+    let summary = |file: &Path| {
+        let out = ok(playerrecord(&["info", path(file)]));
+        let text = String::from_utf8(out.stdout).unwrap();
+        // The first line starts with the file's own name.
+        text.replacen(path(file), "FILE", 1)
+    };
+    let (of_prec, of_mcap) = (summary(&prec), summary(&mcap));
+    assert!(of_prec.contains("laser:0"), "{of_prec}");
+    assert_eq!(of_prec, of_mcap);
+
+    let (log_prec, log_mcap) = (dir.path().join("prec.log"), dir.path().join("mcap.log"));
+    ok(playerrecord(&[
+        "export",
+        path(&prec),
+        "-o",
+        path(&log_prec),
+    ]));
+    ok(playerrecord(&[
+        "export",
+        path(&mcap),
+        "-o",
+        path(&log_mcap),
+    ]));
+    let log = std::fs::read(&log_prec).unwrap();
+    assert!(log.len() > 10_000, "{} bytes", log.len());
+    assert!(log == std::fs::read(&log_mcap).unwrap(), "the logs differ");
+
+    let garbage = dir.path().join("garbage.mcap");
+    std::fs::write(&garbage, b"\x89MCAP0\r\nnot an MCAP file").unwrap();
+    let out = playerrecord(&["info", path(&garbage)]);
+    assert!(!out.status.success());
+    let error = String::from_utf8_lossy(&out.stderr);
+    assert!(error.contains("garbage.mcap"), "{error}");
+    assert!(error.contains("at or before byte"), "{error}");
+    assert_eq!(error.matches("at or before byte").count(), 1, "{error}");
+}

@@ -6,7 +6,6 @@
 
 mod clock;
 mod devices;
-pub mod from_mcap;
 mod playback;
 
 use std::collections::{BTreeMap, HashMap};
@@ -64,7 +63,7 @@ pub enum ReplayError {
     #[error("--speed must be above 0, not {0}")]
     Speed(f64),
     #[error(transparent)]
-    Mcap(#[from] from_mcap::FromMcapError),
+    Mcap(#[from] player_mcap::as_prec::FromMcapError),
     #[error(transparent)]
     Server(#[from] ServerError),
 }
@@ -89,7 +88,7 @@ pub struct Replaying {
     thread: Option<JoinHandle<()>>,
     _server: Server,
     /// The recording an MCAP file was converted to, removed after the playback stopped.
-    _converted: Option<from_mcap::ConvertedRecording>,
+    _converted: Option<player_mcap::as_prec::ConvertedRecording>,
 }
 
 impl Replaying {
@@ -117,7 +116,7 @@ pub fn replay(path: &Path, options: &ReplayOptions) -> Result<Replaying, ReplayE
         return Err(ReplayError::Speed(options.speed));
     }
     if player_mcap::is_mcap(path) {
-        let converted = from_mcap::convert(path)?;
+        let converted = player_mcap::as_prec::convert(path)?;
         let mut replaying = replay(&converted.path, options).map_err(|e| match e {
             ReplayError::Empty { .. } => ReplayError::Empty {
                 path: path.to_path_buf(),

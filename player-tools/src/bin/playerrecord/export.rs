@@ -5,10 +5,10 @@
 use std::path::PathBuf;
 
 use anyhow::{Context, Result};
-use player_proto::recording::{self, playerlog};
+use player_proto::recording::playerlog;
 
-/// Write a recording as a Player log for `readlog` (position2d, laser, sonar, ranger), or as
-/// MCAP.
+/// Write a recording (`.prec` or MCAP) as a Player log for `readlog` (position2d, laser,
+/// sonar, ranger), or as MCAP.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     file: PathBuf,
@@ -24,7 +24,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<()> {
-    let reader = recording::open(&args.file)?;
+    let (reader, _converted) = crate::mcap_file::open_recording(&args.file)?;
     let out = std::fs::File::create(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
     if args.mcap || crate::mcap_file::named_mcap(&args.out) {

@@ -5,16 +5,18 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use anyhow::{Result, bail};
-use player_proto::recording::{self, RecordingIndex};
+use player_proto::recording::RecordingIndex;
 
-/// Summarise a recording: its connections, devices, message counts and time span.
+/// Summarise a recording (`.prec` or MCAP): its connections, devices, message counts and
+/// time span.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     file: PathBuf,
 }
 
 pub fn run(args: Args) -> Result<()> {
-    let index = RecordingIndex::build(recording::open(&args.file)?);
+    let (reader, _converted) = crate::mcap_file::open_recording(&args.file)?;
+    let index = RecordingIndex::build(reader);
     let mut out = std::io::stdout().lock();
     writeln!(
         out,

@@ -1,12 +1,32 @@
 //! MCAP at the command line: `export --mcap` and `from-mcap`, both streaming through
-//! `player_mcap`, both keeping what came before damage and saying where it stopped.
+//! `player_mcap`, both keeping what came before damage and saying where it stopped; and any
+//! recording opened for reading whichever kind its file is.
 
 use std::fs::File;
 use std::io::{BufReader, BufWriter};
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
-use player_proto::recording::RecordingReader;
+use player_mcap::as_prec::ConvertedRecording;
+use player_proto::recording::{self, RecordingReader};
+
+/// A recording opened for reading, and the `.prec` an MCAP file was converted to for it
+/// (removed when this is dropped, so keep it while reading).
+pub type Opened = (RecordingReader<BufReader<File>>, Option<ConvertedRecording>);
+
+/// Opens a recording whichever kind its file is: a `.prec` as it is, an MCAP file written from
+/// one (by `export --mcap` or by recording to `*.mcap`) through the `.prec` it holds.
+pub fn open_recording(path: &Path) -> Result<Opened> {
+    if !player_mcap::is_mcap(path) {
+        let reader =
+            recording::open(path).with_context(|| format!("reading {}", path.display()))?;
+        return Ok((reader, None));
+    }
+    let converted = player_mcap::as_prec::convert(path)?;
+    let reader = recording::open(&converted.path)
+        .with_context(|| format!("reading what {} holds", path.display()))?;
+    Ok((reader, Some(converted)))
+}
 
 /// Is this file to be written as MCAP (by its extension)?
 pub fn named_mcap(path: &Path) -> bool {

@@ -1,14 +1,14 @@
-//! An MCAP file written from a recording (`player_mcap`) is served as the `.prec` it holds:
-//! converted once, streaming, into a temporary file beside nothing else, which the playback
-//! then reads, seeks and loops through exactly as it does a `.prec`. The file goes when the
-//! replay does.
+//! An MCAP file written from a recording, read as the `.prec` it holds: converted once,
+//! streaming, into a temporary file, which whatever reads recordings (a replay that seeks and
+//! loops, `playerrecord info` and `export`) then reads exactly as it reads a `.prec`. The file
+//! goes when the [`ConvertedRecording`] does.
 
 use std::fs::File;
 use std::io::{BufReader, BufWriter};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU32, Ordering};
 
-/// Why an MCAP file cannot be served.
+/// Why an MCAP file cannot be read as a recording.
 #[derive(Debug, thiserror::Error)]
 pub enum FromMcapError {
     #[error("cannot open {path}: {source}")]
@@ -24,7 +24,7 @@ pub enum FromMcapError {
     #[error("{path}: {source}")]
     Convert {
         path: PathBuf,
-        source: player_mcap::ConvertError,
+        source: crate::ConvertError,
     },
 }
 
@@ -41,7 +41,7 @@ impl Drop for ConvertedRecording {
 }
 
 /// Converts `mcap` into a temporary `.prec`. Damage part way is logged and what came before
-/// it is served; damage before any record is the error.
+/// it is kept; damage before any record is the error.
 pub fn convert(mcap: &Path) -> Result<ConvertedRecording, FromMcapError> {
     static COUNT: AtomicU32 = AtomicU32::new(0);
     let input = File::open(mcap).map_err(|source| FromMcapError::Open {
@@ -49,7 +49,7 @@ pub fn convert(mcap: &Path) -> Result<ConvertedRecording, FromMcapError> {
         source,
     })?;
     let name = format!(
-        "player-sim-{}-{}.prec",
+        "player-mcap-{}-{}.prec",
         std::process::id(),
         COUNT.fetch_add(1, Ordering::Relaxed)
     );
@@ -61,10 +61,12 @@ pub fn convert(mcap: &Path) -> Result<ConvertedRecording, FromMcapError> {
         source,
     };
     let out = File::create(&converted.path).map_err(temporary)?;
-    let (stats, out) = player_mcap::mcap_to_prec(BufReader::new(input), BufWriter::new(out))
-        .map_err(|source| FromMcapError::Convert {
-            path: mcap.to_path_buf(),
-            source,
+    let (stats, out) =
+        crate::mcap_to_prec(BufReader::new(input), BufWriter::new(out)).map_err(|source| {
+            FromMcapError::Convert {
+                path: mcap.to_path_buf(),
+                source,
+            }
         })?;
     out.into_inner()
         .map_err(|e| temporary(e.into_error()))?
@@ -77,7 +79,7 @@ pub fn convert(mcap: &Path) -> Result<ConvertedRecording, FromMcapError> {
                 source: stopped,
             });
         }
-        tracing::warn!("{}: replaying up to the damage: {stopped}", mcap.display());
+        tracing::warn!("{}: read up to the damage: {stopped}", mcap.display());
     }
     tracing::debug!("{}: {} records", mcap.display(), stats.records);
     Ok(converted)
