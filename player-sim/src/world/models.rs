@@ -22,6 +22,10 @@ pub const BUILTIN: &[&str] = &[
     "person",
 ];
 
+/// Defines one model may be expanded through at once (its base chain and the defines of the
+/// models inside it). Stage's own files use a handful; more is a mistake in the file.
+const MAX_DEFINE_DEPTH: usize = 32;
+
 /// Parts of a model that are not models themselves; `define`s may build on them too (Stage's
 /// own `pioneer.inc` defines its sonar transducers with `define p2dxsonar sensor`).
 pub const PARTS: &[&str] = &["sensor", "block"];
@@ -162,22 +166,30 @@ impl Types {
 
     /// Expands an instance block into a model.
     pub fn instantiate(&self, block: &Block) -> Result<Model, WorldFileError> {
-        let mut model = self.expand_type(&block.kind, &block.pos, 0)?;
+        self.instantiate_within(block, &mut Vec::new())
+    }
+
+    /// `instantiate`, inside the defines `expanding` (outermost first). A define's body may
+    /// hold instances of other defines, which hold others: a define met again inside itself,
+    /// through its base or through a child, would expand for ever.
+    fn instantiate_within<'t>(
+        &'t self,
+        block: &Block,
+        expanding: &mut Vec<&'t str>,
+    ) -> Result<Model, WorldFileError> {
+        let mut model = self.expand_type(&block.kind, &block.pos, expanding)?;
         model.declared = block.kind.clone();
         model.pos = block.pos.clone();
-        self.overlay(&mut model, block)?;
+        self.overlay(&mut model, block, expanding)?;
         Ok(model)
     }
 
-    fn expand_type(&self, kind: &str, pos: &Pos, depth: usize) -> Result<Model, WorldFileError> {
-        if depth > 32 {
-            return Err(WorldFileError::at(
-                &pos.file,
-                pos.line,
-                pos.col,
-                format!("define chain through {kind} does not end"),
-            ));
-        }
+    fn expand_type<'t>(
+        &'t self,
+        kind: &str,
+        pos: &Pos,
+        expanding: &mut Vec<&'t str>,
+    ) -> Result<Model, WorldFileError> {
         if BUILTIN.contains(&kind) {
             return Ok(Model {
                 kind: kind.to_string(),
@@ -188,28 +200,44 @@ impl Types {
                 pos: pos.clone(),
             });
         }
-        let Some((base, body)) = self.defines.get(kind) else {
-            return Err(WorldFileError::at(
-                &pos.file,
-                pos.line,
-                pos.col,
-                format!(
-                    "unknown model type {kind:?} (not built in, not defined; a missing include?)"
-                ),
-            ));
+        let at = |message: String| WorldFileError::at(&pos.file, pos.line, pos.col, message);
+        let Some((name, (base, body))) = self.defines.get_key_value(kind) else {
+            return Err(at(format!(
+                "unknown model type {kind:?} (not built in, not defined; a missing include?)"
+            )));
         };
-        let mut model = self.expand_type(base, &body.pos, depth + 1)?;
-        self.overlay(&mut model, body)?;
+        if expanding.contains(&name.as_str()) {
+            return Err(at(format!(
+                "{kind} is defined through itself: {} -> {kind}",
+                expanding.join(" -> ")
+            )));
+        }
+        if expanding.len() >= MAX_DEFINE_DEPTH {
+            return Err(at(format!(
+                "define chain through {kind} is more than {MAX_DEFINE_DEPTH} defines deep"
+            )));
+        }
+        expanding.push(name);
+        let mut model = self.expand_type(base, &body.pos, expanding)?;
+        self.overlay(&mut model, body, expanding)?;
+        expanding.pop();
         Ok(model)
     }
 
-    fn overlay(&self, model: &mut Model, block: &Block) -> Result<(), WorldFileError> {
+    fn overlay<'t>(
+        &'t self,
+        model: &mut Model,
+        block: &Block,
+        expanding: &mut Vec<&'t str>,
+    ) -> Result<(), WorldFileError> {
         model.properties.extend(block.properties.iter().cloned());
         for child in &block.children {
             if let Some(root) = self.part_root(&child.kind) {
                 model.parts.push(self.expand_part(child, root));
             } else if self.is_model_type(&child.kind) {
-                model.children.push(self.instantiate(child)?);
+                model
+                    .children
+                    .push(self.instantiate_within(child, expanding)?);
             } else {
                 model.parts.push(child.clone());
             }

@@ -91,10 +91,17 @@ pub enum Item {
     Property(Property),
 }
 
+/// Blocks inside blocks, at most: a robot's sensors inside it are two or three deep. Each
+/// level is a call here and in everything that walks the tree later, so a file of nothing but
+/// `a(a(a(…` would otherwise end the program with a stack overflow.
+const MAX_NESTING: usize = 64;
+
 struct Parser<'a> {
     tokens: &'a [Located],
     at: usize,
     file: &'a str,
+    /// Blocks open around the one being read.
+    nesting: usize,
 }
 
 impl Parser<'_> {
@@ -152,6 +159,21 @@ impl Parser<'_> {
 
     /// The inside of `( … )`, after the `(`.
     fn body(&mut self, kind: String, pos: Pos) -> Result<Block, WorldFileError> {
+        if self.nesting >= MAX_NESTING {
+            return Err(WorldFileError::at(
+                &pos.file,
+                pos.line,
+                pos.col,
+                format!("block {kind:?} is nested more than {MAX_NESTING} blocks deep"),
+            ));
+        }
+        self.nesting += 1;
+        let block = self.block_items(kind, pos);
+        self.nesting -= 1;
+        block
+    }
+
+    fn block_items(&mut self, kind: String, pos: Pos) -> Result<Block, WorldFileError> {
         let mut block = Block {
             kind,
             properties: Vec::new(),
@@ -247,6 +269,7 @@ pub fn parse(tokens: &[Located], file: &str) -> Result<Vec<Item>, WorldFileError
         tokens,
         at: 0,
         file,
+        nesting: 0,
     }
     .items()
 }
@@ -306,6 +329,21 @@ mod tests {
                 .unwrap_err()
                 .to_string()
                 .starts_with("t.world:1:1: expected a property name")
+        );
+    }
+
+    /// Every level of nesting is a call here and in whatever walks the blocks later: a file
+    /// of `a(a(a(…` is refused where it passes the limit, not a stack overflow.
+    #[test]
+    fn blocks_nested_past_the_limit_are_refused_where_the_limit_is_passed() {
+        let deep = |levels: usize| "a(\n".repeat(levels) + &")".repeat(levels);
+        assert!(items(&deep(MAX_NESTING)).is_ok());
+        assert_eq!(
+            items(&deep(100_000)).unwrap_err().to_string(),
+            format!(
+                "t.world:{}:1: block \"a\" is nested more than {MAX_NESTING} blocks deep",
+                MAX_NESTING + 1
+            )
         );
     }
 }
