@@ -9,7 +9,7 @@ use std::time::{Instant, SystemTime};
 
 use axum::extract::ws::Utf8Bytes;
 use player_proto::capture::Direction;
-use player_proto::client::{Tap, TapEvent};
+use player_proto::client::{DeviceStats, Tap, TapEvent};
 use player_proto::message::Message;
 use player_proto::wire::{DevAddr, Header, Interface, MsgType};
 use tokio::sync::broadcast;
@@ -44,10 +44,12 @@ struct Robot {
     rates: HashMap<DevAddr, Rate>,
 }
 
-/// Data messages counted since the last status, and when the newest came.
+/// A device's readings as the client counts them (a reading sent as several messages stamped
+/// alike counts once), the count at the last status, and when the newest came.
 #[derive(Default)]
 struct Rate {
-    since_status: u32,
+    stats: DeviceStats,
+    at_status: u64,
     newest: Option<Instant>,
 }
 
@@ -135,11 +137,11 @@ impl Hub {
                     .map(|(device, rate)| {
                         let row = DeviceRow {
                             device: *device,
-                            hz: f64::from(rate.since_status) / elapsed,
+                            hz: (rate.stats.updates - rate.at_status) as f64 / elapsed,
                             age: rate.newest.map(|t| now.duration_since(t).as_secs_f64()),
                         };
                         if restart {
-                            rate.since_status = 0;
+                            rate.at_status = rate.stats.updates;
                         }
                         row
                     })
@@ -194,7 +196,7 @@ impl Hub {
         };
         if kind == Kind::Data {
             let rate = robot.rates.entry(device).or_default();
-            rate.since_status += 1;
+            rate.stats.count(header.timestamp, body.len());
             rate.newest = Some(Instant::now());
         }
         drop(robots);

@@ -63,7 +63,8 @@ pub struct Row {
 #[derive(Debug, Clone, Serialize)]
 pub struct DeviceRow {
     pub device: DevAddr,
-    /// Data messages per second over the last second.
+    /// Readings per second over the last second, as `DeviceStats::updates` counts them (a
+    /// ranger's ranges and intensities, stamped alike, are one reading).
     pub hz: f64,
     /// Seconds since the newest data; `None` before any.
     pub age: Option<f64>,

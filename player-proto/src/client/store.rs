@@ -33,6 +33,20 @@ pub struct DeviceStats {
     pub(crate) last_server_time: f64,
 }
 
+impl DeviceStats {
+    /// Counts one DATA message of `size` bytes, stamped `server_time` by its server. Whatever
+    /// else shows a device's rate (the web page's rows) counts with this too, so that a
+    /// sensor reads "10 Hz" in every view.
+    pub fn count(&mut self, server_time: f64, size: usize) {
+        self.messages += 1;
+        self.bytes += size as u64;
+        if self.updates == 0 || server_time != self.last_server_time {
+            self.updates += 1;
+            self.last_server_time = server_time;
+        }
+    }
+}
+
 /// A device as the store keys it.
 type DeviceKey = (Interface, u16);
 /// Newest data is kept per device and subtype.
@@ -57,12 +71,7 @@ impl DataStore {
         {
             let mut stats = lock(&self.stats);
             let s = stats.entry((a.interf, a.index)).or_default();
-            s.messages += 1;
-            s.bytes += size as u64;
-            if s.updates == 0 || message.header.timestamp != s.last_server_time {
-                s.updates += 1;
-                s.last_server_time = message.header.timestamp;
-            }
+            s.count(message.header.timestamp, size);
         }
         let key = (a.interf, a.index, message.header.subtype);
         let mut latest = lock(&self.latest);
