@@ -1,6 +1,7 @@
 //! A model `define`d through itself — its base, or a model inside it, being itself at some
 //! remove — is refused where it is used, naming the cycle; before, expanding it recursed until
-//! the stack overflowed (found by the stage_world fuzz target).
+//! the stack overflowed (found by the stage_world fuzz target). Defines that hold several of
+//! each other, level after level, are refused before they expand to billions of models.
 
 use std::path::{Path, PathBuf};
 
@@ -30,6 +31,22 @@ fn a_define_holding_an_instance_of_itself_is_refused_with_the_cycle() {
     let bases = b"define a b ( )\ndefine b a ( )\na( )\n";
     let error = load(dir.path(), bases).unwrap_err();
     assert!(error.contains("a -> b -> a"), "{error}");
+}
+
+#[test]
+fn defines_that_double_with_every_level_are_refused_before_they_fill_the_memory() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("define d0 model ( size [ 0.1 0.1 0.1 ] )\n");
+    for level in 1..=20 {
+        let below = level - 1;
+        text += &format!("define d{level} model ( d{below}( ) d{below}( ) )\n");
+    }
+    text += "d20( )\n";
+    let error = load(dir.path(), text.as_bytes()).unwrap_err();
+    assert!(
+        error.contains("expands to more than 10000 models"),
+        "{error}"
+    );
 }
 
 #[test]

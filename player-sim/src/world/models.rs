@@ -25,6 +25,19 @@ pub const BUILTIN: &[&str] = &[
 /// Defines one model may be expanded through at once (its base chain and the defines of the
 /// models inside it). Stage's own files use a handful; more is a mistake in the file.
 const MAX_DEFINE_DEPTH: usize = 32;
+/// Models one instance may expand to, with everything inside it. A robot is a few; defines
+/// that each hold two of the next would double with every level, to billions.
+const MAX_MODELS_PER_INSTANCE: usize = 10_000;
+
+/// Where the expansion of one instance stands.
+#[derive(Default)]
+struct Expansion<'t> {
+    /// The defines being expanded, outermost first: a define met again inside itself is a
+    /// cycle.
+    within: Vec<&'t str>,
+    /// Models made so far.
+    models: usize,
+}
 
 /// Parts of a model that are not models themselves; `define`s may build on them too (Stage's
 /// own `pioneer.inc` defines its sonar transducers with `define p2dxsonar sensor`).
@@ -166,17 +179,31 @@ impl Types {
 
     /// Expands an instance block into a model.
     pub fn instantiate(&self, block: &Block) -> Result<Model, WorldFileError> {
-        self.instantiate_within(block, &mut Vec::new())
+        self.instantiate_within(block, &mut Expansion::default())
     }
 
-    /// `instantiate`, inside the defines `expanding` (outermost first). A define's body may
-    /// hold instances of other defines, which hold others: a define met again inside itself,
-    /// through its base or through a child, would expand for ever.
+    /// `instantiate`, as part of `expanding`. A define's body may hold instances of other
+    /// defines, which hold others: a define met again inside itself, through its base or
+    /// through a child, would expand for ever, and defines holding several of the next grow
+    /// exponentially.
     fn instantiate_within<'t>(
         &'t self,
         block: &Block,
-        expanding: &mut Vec<&'t str>,
+        expanding: &mut Expansion<'t>,
     ) -> Result<Model, WorldFileError> {
+        expanding.models += 1;
+        if expanding.models > MAX_MODELS_PER_INSTANCE {
+            return Err(WorldFileError::at(
+                &block.pos.file,
+                block.pos.line,
+                block.pos.col,
+                format!(
+                    "{} expands to more than {MAX_MODELS_PER_INSTANCE} models: defines that \
+                     hold several of each other?",
+                    block.kind
+                ),
+            ));
+        }
         let mut model = self.expand_type(&block.kind, &block.pos, expanding)?;
         model.declared = block.kind.clone();
         model.pos = block.pos.clone();
@@ -188,7 +215,7 @@ impl Types {
         &'t self,
         kind: &str,
         pos: &Pos,
-        expanding: &mut Vec<&'t str>,
+        expanding: &mut Expansion<'t>,
     ) -> Result<Model, WorldFileError> {
         if BUILTIN.contains(&kind) {
             return Ok(Model {
@@ -206,21 +233,21 @@ impl Types {
                 "unknown model type {kind:?} (not built in, not defined; a missing include?)"
             )));
         };
-        if expanding.contains(&name.as_str()) {
+        if expanding.within.contains(&name.as_str()) {
             return Err(at(format!(
                 "{kind} is defined through itself: {} -> {kind}",
-                expanding.join(" -> ")
+                expanding.within.join(" -> ")
             )));
         }
-        if expanding.len() >= MAX_DEFINE_DEPTH {
+        if expanding.within.len() >= MAX_DEFINE_DEPTH {
             return Err(at(format!(
                 "define chain through {kind} is more than {MAX_DEFINE_DEPTH} defines deep"
             )));
         }
-        expanding.push(name);
+        expanding.within.push(name);
         let mut model = self.expand_type(base, &body.pos, expanding)?;
         self.overlay(&mut model, body, expanding)?;
-        expanding.pop();
+        expanding.within.pop();
         Ok(model)
     }
 
@@ -228,7 +255,7 @@ impl Types {
         &'t self,
         model: &mut Model,
         block: &Block,
-        expanding: &mut Vec<&'t str>,
+        expanding: &mut Expansion<'t>,
     ) -> Result<(), WorldFileError> {
         model.properties.extend(block.properties.iter().cloned());
         for child in &block.children {
