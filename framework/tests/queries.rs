@@ -66,6 +66,19 @@ fn malformed_xml_is_an_error_with_line_and_column() {
 }
 
 #[test]
+fn elements_nested_too_deep_are_an_error_not_a_stack_overflow() {
+    let levels = 100_000;
+    let text = format!(
+        "<query to=\"a\" name=\"b\">{}{}</query>",
+        "<p>".repeat(levels),
+        "</p>".repeat(levels)
+    );
+    let err = Query::parse(&text).unwrap_err();
+    assert!(err.message.contains("nested more than 256 deep"), "{err}");
+    assert_eq!(err.line, 1);
+}
+
+#[test]
 fn a_query_without_target_or_name_says_so() {
     assert!(
         Query::parse("<query name=\"x\"/>")

@@ -2,6 +2,7 @@
 
 use std::net::{IpAddr, Ipv4Addr};
 use std::path::PathBuf;
+use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
@@ -173,11 +174,14 @@ fn serve_web(port: u16) -> Result<WebFront> {
     Ok(web)
 }
 
-fn main() -> Result<()> {
+fn main() -> ExitCode {
     // `--frame-stats` counts the first whole picture from here: a world's start-up included.
     let process_started = Instant::now();
     program_edge::logging::init("info");
-    let mut cli = Cli::parse();
+    program_edge::exit::exit_code("pv3d", run(Cli::parse(), process_started))
+}
+
+fn run(mut cli: Cli, process_started: Instant) -> Result<()> {
     if cli.demo {
         cli.world = Some(pv3d::demo::world_file());
         if cli.files.is_empty() {

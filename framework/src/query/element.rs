@@ -1,6 +1,12 @@
 //! The XML a query or a reply carries: a plain element tree, owned, with no positions (a
 //! query may be built in code as often as parsed).
 
+/// Elements inside elements, at most, in any XML the viewer reads (compositions, queries,
+/// replies). Real ones are a few deep; every level is a call in whatever walks the tree
+/// (includes, printing, even dropping it), so a file of nothing but `<a><a><a>…` would end
+/// the program with a stack overflow instead of an error.
+pub const MAX_ELEMENT_DEPTH: usize = 256;
+
 /// An element: its name, attributes in order, text and child elements.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct XmlElement {

@@ -27,7 +27,7 @@ mod route;
 mod wire;
 mod world;
 
-pub use element::XmlElement;
+pub use element::{MAX_ELEMENT_DEPTH, XmlElement};
 pub use route::{Addressee, route};
 pub use wire::XmlError;
 pub use world::{WORLD, answer_world};

@@ -4,7 +4,7 @@
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::reader::Reader;
 
-use super::{Query, Reply, Target, XmlElement};
+use super::{MAX_ELEMENT_DEPTH, Query, Reply, Target, XmlElement};
 
 /// Text that is not a query or reply, and where.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -76,6 +76,13 @@ pub fn parse_element(text: &str) -> Result<XmlElement, XmlError> {
             .map_err(|e| error_at(text, reader.error_position(), format!("malformed XML: {e}")))?;
         let finished = match event {
             Event::Start(start) => {
+                if open.len() >= MAX_ELEMENT_DEPTH {
+                    return Err(error_at(
+                        text,
+                        at,
+                        format!("elements nested more than {MAX_ELEMENT_DEPTH} deep"),
+                    ));
+                }
                 open.push(start_of(&start, text, at)?);
                 None
             }

@@ -7,6 +7,8 @@ use std::sync::Arc;
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::reader::Reader;
 
+use framework::query::MAX_ELEMENT_DEPTH;
+
 use super::error::{ConfigError, SourcePos};
 
 /// An attribute and where it was written.
@@ -130,6 +132,12 @@ pub fn parse_str(text: &str, file: Arc<PathBuf>) -> Result<Element, ConfigError>
         })?;
         match event {
             Event::Start(start) => {
+                if stack.len() >= MAX_ELEMENT_DEPTH {
+                    return Err(ConfigError::at(
+                        pos_at(event_start),
+                        format!("elements nested more than {MAX_ELEMENT_DEPTH} deep"),
+                    ));
+                }
                 let element = start_element(&start, pos_at(event_start), text, &lines, &file)?;
                 stack.push(element);
             }
@@ -296,6 +304,20 @@ mod tests {
         let id = plugin.attribute("id").unwrap();
         assert_eq!((id.pos.line, id.pos.col), (2, 35));
         assert_eq!(plugin.child("fill").unwrap().text(), "1");
+    }
+
+    #[test]
+    fn elements_nested_past_the_limit_are_refused_where_the_limit_is_passed() {
+        let deep = |levels: usize| "<a>\n".repeat(levels) + &"</a>".repeat(levels);
+        assert!(parse(&deep(MAX_ELEMENT_DEPTH)).is_ok());
+        let err = parse(&deep(100_000)).unwrap_err().to_string();
+        let line = MAX_ELEMENT_DEPTH + 1;
+        assert!(
+            err.starts_with(&format!(
+                "t.xml:{line}:1: elements nested more than 256 deep"
+            )),
+            "{err}"
+        );
     }
 
     #[test]
