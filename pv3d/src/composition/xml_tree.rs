@@ -115,6 +115,9 @@ pub fn parse_file(path: &Path) -> Result<Element, ConfigError> {
 
 /// Parses XML text; `file` is only used for positions.
 pub fn parse_str(text: &str, file: Arc<PathBuf>) -> Result<Element, ConfigError> {
+    // A byte-order mark is not part of the document (editors do not show it): the reader
+    // skips it and counts its positions from after it, so the line index must too.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let lines = LineIndex::new(text);
     let pos_at = |offset: u64| lines.pos(&file, offset as usize);
     let mut reader = Reader::from_str(text);
@@ -247,8 +250,9 @@ fn start_element(
             .into_owned();
         // Point at the attribute itself: find its name after the element's start.
         let start_offset = lines.offset(&pos);
-        let attr_pos = text[start_offset..]
-            .find(&format!("{key}="))
+        let attr_pos = text
+            .get(start_offset..)
+            .and_then(|rest| rest.find(&format!("{key}=")))
             .map(|rel| lines.pos(file, start_offset + rel))
             .unwrap_or_else(|| pos.clone());
         element.attributes.push(Attribute {
@@ -318,6 +322,19 @@ mod tests {
             )),
             "{err}"
         );
+    }
+
+    /// Found by the composition and command_grammar fuzz targets: a file starting with a
+    /// byte-order mark put every position 3 bytes off, and finding an attribute sliced the
+    /// text inside the mark (a panic).
+    #[test]
+    fn a_byte_order_mark_is_skipped_and_positions_are_as_an_editor_shows_them() {
+        let root = parse("\u{feff}<pv3d>\n  <plugin library=\"libpv3d_laser\"/>\n</pv3d>").unwrap();
+        let plugin = root.child("plugin").unwrap();
+        assert_eq!((plugin.pos.line, plugin.pos.col), (2, 3));
+        let library = plugin.attribute("library").unwrap();
+        assert_eq!((library.pos.line, library.pos.col), (2, 11));
+        assert!(parse("\u{feff}  <a b=\"1\"/>").is_ok());
     }
 
     #[test]
