@@ -3,6 +3,9 @@
 //! reports messages/s and bytes/s. The 181-beam laser and 181-range ranger cases are the ones
 //! libplayerc's figures exist for (see BENCHMARKS.md).
 //!
+//! For laser scans two more lines: the scan read in place (`view`), and read in place with
+//! every range converted into a kept buffer (`view + ranges`).
+//!
 //! `cargo bench -p player-proto --bench codec -- --warm-up-time 1 --measurement-time 3`
 
 use std::hint::black_box;
@@ -12,12 +15,12 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 use player_proto::interfaces::camera::{Camera, CameraData, FORMAT_RGB888};
 use player_proto::interfaces::common::{Pose2d, Pose3d};
 use player_proto::interfaces::fiducial::{Fiducial, FiducialData, FiducialItem};
-use player_proto::interfaces::laser::{Laser, LaserScan};
+use player_proto::interfaces::laser::{Laser, LaserScan, LaserScanView};
 use player_proto::interfaces::position2d::{Position2d, Position2dData};
 use player_proto::interfaces::ranger::{Ranger, RangerRanges};
 use player_proto::interfaces::sonar::{Sonar, SonarData};
 use player_proto::message::{Body, Message};
-use player_proto::wire::{DevAddr, Interface, MsgType, Opaque};
+use player_proto::wire::{DevAddr, Header, Interface, MsgType, Opaque};
 
 fn laser(beams: usize) -> Message {
     let scan = LaserScan {
@@ -133,8 +136,41 @@ fn decode(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("body handle", name), &body, |b, body| {
             b.iter(|| black_box(black_box(body).clone()))
         });
+        if name.starts_with("laser") {
+            view_scan(&mut group, name, &header, &body);
+        }
     }
     group.finish();
+}
+
+/// A laser scan read in place (`Laser::DATA_SCAN.view`), for code that looks and lets go: the
+/// whole body checked, no handle, no allocation; then the same with every range converted
+/// into a buffer the reader keeps (what a converter or a drawer does with a scan).
+fn view_scan(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    name: &str,
+    header: &Header,
+    body: &Bytes,
+) {
+    fn view<'a>(header: &Header, body: &'a [u8]) -> LaserScanView<'a> {
+        match Laser::DATA_SCAN.view(header, body) {
+            Some(Ok(scan)) => scan,
+            _ => unreachable!("a laser scan"),
+        }
+    }
+    group.bench_with_input(BenchmarkId::new("view", name), body, |b, body| {
+        b.iter(|| black_box(view(header, black_box(body))))
+    });
+    let mut ranges: Vec<f32> = Vec::new();
+    group.bench_with_input(BenchmarkId::new("view + ranges", name), body, |b, body| {
+        b.iter(|| {
+            let scan = view(header, black_box(body));
+            ranges.clear();
+            scan.ranges.extend_into(&mut ranges);
+            black_box(&mut ranges);
+            black_box(scan.intensity)
+        })
+    });
 }
 
 fn encode(c: &mut Criterion) {

@@ -1,6 +1,6 @@
-//! How the `message_body` fuzz target turns its bytes into a message to decode. It lives here,
-//! not in the target, so that the test of the target's seed corpus reads seeds exactly as the
-//! fuzzer does.
+//! How the `message_body` fuzz target turns its bytes into a message to decode, and what it
+//! checks of views. It lives here, not in the target, so that the test of the target's seed
+//! corpus reads seeds exactly as the fuzzer does.
 
 use bytes::Bytes;
 
@@ -23,4 +23,10 @@ pub fn message_parts(data: &[u8]) -> Option<(Header, Bytes)> {
         size: u32::try_from(body.len()).ok()?,
     };
     Some((header, body))
+}
+
+/// Whether reading `body` in place ([`crate::wire::xdr_view`]) agrees with decoding it: the
+/// same value, or the same error at the same byte. A description of the difference if not.
+pub fn view_agrees(header: &Header, body: &Bytes) -> Result<(), String> {
+    crate::message::Body::view_agrees(header, body)
 }

@@ -9,7 +9,9 @@
 //!   let only one client command.
 //!
 //! Decoding never panics and never allocates more than the bytes received justify; encoding
-//! writes into any [`bytes::BufMut`].
+//! writes into any [`bytes::BufMut`]. A message that is only looked at can be read where it
+//! lies, with no allocation: every struct has a view ([`wire::xdr_view`]), made through its
+//! kind (`Laser::DATA_SCAN.view(&header, &body)`).
 
 #[macro_use]
 mod macros;

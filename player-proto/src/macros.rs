@@ -56,6 +56,49 @@ macro_rules! xdr_struct {
         }
 
         impl $crate::wire::xdr::XdrElement for $name {}
+
+        ::paste::paste! {
+            #[doc = concat!("[`", stringify!($name), "`] read in place from a received body, \
+                each field the view of its own (see [`XdrView`](crate::wire::XdrView)).")]
+            #[derive(Debug, Clone, Copy)]
+            #[allow(missing_docs)]
+            pub struct [<$name View>]<'a> {
+                $( pub $field: $crate::wire::View<'a, $ty>, )*
+                #[doc(hidden)]
+                pub _body: ::core::marker::PhantomData<&'a [u8]>,
+            }
+
+            impl $crate::wire::XdrView for $name {
+                type View<'a> = [<$name View>]<'a>;
+                const FIXED_SIZE: Option<usize> = $crate::wire::xdr_view::fixed_sum(&[
+                    $( <$ty as $crate::wire::XdrView>::FIXED_SIZE, )*
+                ]);
+
+                // The same checks, in the same order, as `decode` above.
+                #[allow(unused_variables)]
+                #[inline(always)]
+                fn view(
+                    input: &[u8],
+                ) -> $crate::wire::xdr::XdrResult<'_, [<$name View>]<'_>> {
+                    $(
+                        $(
+                            $crate::wire::xdr::check_max_length(input, $max)
+                                .map_err(|e| $crate::wire::xdr::in_field(e, stringify!($name), stringify!($field)))?;
+                        )?
+                        let (input, $field) = <$ty as $crate::wire::XdrView>::view(input)
+                            .map_err(|e| $crate::wire::xdr::in_field(e, stringify!($name), stringify!($field)))?;
+                    )*
+                    Ok((input, [<$name View>] { $( $field, )* _body: ::core::marker::PhantomData }))
+                }
+
+                #[allow(unused_variables)]
+                fn to_owned_value(view: [<$name View>]<'_>) -> Self {
+                    Self {
+                        $( $field: <$ty as $crate::wire::XdrView>::to_owned_value(view.$field), )*
+                    }
+                }
+            }
+        }
     };
 }
 
@@ -175,6 +218,35 @@ macro_rules! interface_messages {
                     }
                 )*
                 Ok($crate::message::Message::unknown(header, body))
+            }
+
+            fn view_agrees(
+                header: &$crate::wire::Header,
+                body: &::bytes::Bytes,
+            ) -> Result<(), String> {
+                use $crate::wire::{Xdr, XdrView};
+                let class = header.msg_type.class();
+                let error = |e| $crate::message::DecodeError::from_xdr(*header, body, e).to_string();
+                $(
+                    if class == $crate::wire::MessageClass::$class && header.subtype == $subtype {
+                        let encoded = |value: $ty| {
+                            let mut out = Vec::new();
+                            value.encode(&mut out);
+                            out
+                        };
+                        let decoded = $crate::wire::xdr::decode_all::<$ty>(body)
+                            .map(|(value, _)| encoded(value))
+                            .map_err(error);
+                        let viewed = $crate::wire::xdr_view::view_all::<$ty>(body)
+                            .map(|view| encoded(<$ty as XdrView>::to_owned_value(view)))
+                            .map_err(error);
+                        return match decoded == viewed {
+                            true => Ok(()),
+                            false => Err(format!("decoded {decoded:?}, viewed {viewed:?}")),
+                        };
+                    }
+                )*
+                Ok(())
             }
 
             fn class(&self) -> $crate::wire::MessageClass {

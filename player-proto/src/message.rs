@@ -47,6 +47,23 @@ macro_rules! bodies {
                 Ok(Message::unknown(header, body))
             }
 
+            /// Checks that viewing `body` in place agrees with decoding it: the same value
+            /// (compared by its encoding, so NaNs compare) or the same error. For the tests and
+            /// the `message_body` fuzz target (through [`crate::fuzz_input`]).
+            #[doc(hidden)]
+            pub fn view_agrees(header: &Header, body: &Bytes) -> Result<(), String> {
+                let interf = header.addr.interf;
+                if header.msg_type.class() == MessageClass::Request && header.subtype >= 247 {
+                    return interfaces::universal::Universal::view_agrees(header, body);
+                }
+                $(
+                    if interf == Interface::$code {
+                        return <$ty>::view_agrees(header, body);
+                    }
+                )*
+                Ok(())
+            }
+
             /// The interface this typed body belongs to (`None` for empty, universal and
             /// unknown bodies, which fit any).
             pub fn interface(&self) -> Option<Interface> {
@@ -164,7 +181,7 @@ pub struct DecodeError {
 
 impl DecodeError {
     #[cold]
-    pub(crate) fn from_xdr(header: Header, body: &Bytes, err: XdrError<'_>) -> DecodeError {
+    pub(crate) fn from_xdr(header: Header, body: &[u8], err: XdrError<'_>) -> DecodeError {
         let offset = body.len().saturating_sub(err.input.len());
         DecodeError {
             header,

@@ -132,6 +132,21 @@ proptest! {
     }
 
     #[test]
+    fn viewing_a_body_in_place_agrees_with_decoding_it(
+        original in message(),
+        cut in any::<prop::sample::Index>(),
+    ) {
+        let bytes = original.to_bytes();
+        let body = bytes.slice(crate::wire::HEADER_LEN..);
+        prop_assert_eq!(Body::view_agrees(&original.header, &body), Ok(()));
+        // And where decoding fails, viewing fails alike: same fault, offset and field.
+        let short = body.slice(..cut.index(body.len() + 1));
+        let mut header = original.header;
+        header.size = short.len() as u32;
+        prop_assert_eq!(Body::view_agrees(&header, &short), Ok(()));
+    }
+
+    #[test]
     fn truncated_bodies_fail_cleanly(original in message(), cut in any::<prop::sample::Index>()) {
         let bytes = original.to_bytes();
         let body = bytes.slice(crate::wire::HEADER_LEN..);

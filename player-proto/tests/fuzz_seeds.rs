@@ -1,10 +1,11 @@
 //! The fuzz seed corpus is worth its bytes: every `message_body` seed decodes to a typed body
 //! under the header the fuzz target builds from its first four bytes (so the fuzzer starts
-//! from real, deep messages rather than shallow errors), and re-encodes byte for byte.
+//! from real, deep messages rather than shallow errors), re-encodes byte for byte, and reads
+//! in place as it decodes, whole and cut at every byte.
 
 use std::path::Path;
 
-use player_proto::fuzz_input::message_parts;
+use player_proto::fuzz_input::{message_parts, view_agrees};
 use player_proto::message::{Body, Message};
 
 #[test]
@@ -26,6 +27,13 @@ fn every_message_body_seed_decodes_to_a_typed_body() {
         );
         assert!(message.trailing.is_empty(), "{name}: has trailing bytes");
         assert_eq!(&message.to_bytes()[40..], &body[..], "{name}");
+        // Read in place, and cut anywhere: the view agrees with the decoder.
+        for cut in 0..=body.len() {
+            let mut short = header;
+            short.size = cut as u32;
+            let agrees = view_agrees(&short, &body.slice(..cut));
+            assert_eq!(agrees, Ok(()), "{name} cut at {cut}");
+        }
         checked += 1;
     }
     assert!(checked >= 30, "only {checked} seeds");

@@ -7,8 +7,9 @@
 
 use std::fmt;
 
-use crate::message::{Body, Message};
-use crate::wire::{Header, Interface, MessageClass};
+use crate::message::{Body, DecodeError, Message};
+use crate::wire::xdr_view::view_all;
+use crate::wire::{Header, Interface, MessageClass, View, XdrView};
 
 /// One message of the protocol: the interface, class and subtype that name it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -101,6 +102,26 @@ impl<T> BodyKind<T> {
     /// `value` as a message body of this kind.
     pub fn to_body(&self, value: T) -> Body {
         (self.wrap)(value)
+    }
+}
+
+impl<T: XdrView> BodyKind<T> {
+    /// The body of a message of this kind read in place (see [`crate::wire::xdr_view`]):
+    /// `None` when `header` names another kind or the body is empty (a "get" request, which
+    /// decodes as [`Body::Empty`]), the decoder's own error when the body is not one. For code
+    /// that looks at a message and lets it go; bytes after the body are let be.
+    // Inlined: a view is a few numbers and slices, built best in the caller's registers;
+    // returned through memory from a call, copying it out cost as much as making it.
+    #[inline(always)]
+    pub fn view<'a>(
+        &self,
+        header: &Header,
+        body: &'a [u8],
+    ) -> Option<Result<View<'a, T>, DecodeError>> {
+        if !self.kind.matches(header) || body.is_empty() {
+            return None;
+        }
+        Some(view_all::<T>(body).map_err(|err| DecodeError::from_xdr(*header, body, err)))
     }
 }
 

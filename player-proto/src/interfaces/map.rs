@@ -9,10 +9,11 @@ use bytes::{BufMut, Bytes};
 use nom::number::complete::be_u32;
 
 use super::common::{Pose2d, Segment};
-use crate::wire::Opaque;
 use crate::wire::xdr::{
     Xdr, XdrFault, XdrResult, decode_packed_bytes, encode_packed_bytes, fail, pad4,
 };
+use crate::wire::xdr_view::view_packed_bytes;
+use crate::wire::{Opaque, XdrView};
 
 pub const REQ_GET_INFO: u8 = 1;
 pub const REQ_GET_DATA: u8 = 2;
@@ -119,6 +120,59 @@ impl Xdr for MapData {
 
     fn encoded_len(&self) -> usize {
         28 + self.data.len() + pad4(self.data.len())
+    }
+}
+
+/// [`MapData`] read in place: the tile's cells stay in the received body.
+#[derive(Debug, Clone, Copy)]
+pub struct MapDataView<'a> {
+    pub col: u32,
+    pub row: u32,
+    pub width: u32,
+    pub height: u32,
+    pub data_range: i8,
+    pub data: &'a [u8],
+}
+
+impl XdrView for MapData {
+    type View<'a> = MapDataView<'a>;
+    const FIXED_SIZE: Option<usize> = None;
+
+    // The same checks, in the same order, as `decode` above.
+    fn view(input: &[u8]) -> XdrResult<'_, MapDataView<'_>> {
+        let (input, col) = u32::view(input)?;
+        let (input, row) = u32::view(input)?;
+        let (input, width) = u32::view(input)?;
+        let (input, height) = u32::view(input)?;
+        let (input, count) = u32::view(input)?;
+        let (input, data_range) = i8::view(input)?;
+        let (rest, length) = u32::view(input)?;
+        if length > count {
+            return fail(input, XdrFault::LengthAboveCount { count, length });
+        }
+        let (rest, data) = view_packed_bytes(input, rest, length as usize)?;
+        Ok((
+            rest,
+            MapDataView {
+                col,
+                row,
+                width,
+                height,
+                data_range,
+                data,
+            },
+        ))
+    }
+
+    fn to_owned_value(view: MapDataView<'_>) -> MapData {
+        MapData {
+            col: view.col,
+            row: view.row,
+            width: view.width,
+            height: view.height,
+            data_range: view.data_range,
+            data: Opaque(Bytes::copy_from_slice(view.data)),
+        }
     }
 }
 

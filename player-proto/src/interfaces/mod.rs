@@ -67,6 +67,11 @@ pub trait MessageSet: Sized {
     /// spent more time in those moves than in converting its ranges).
     fn decode_message(header: Header, body: Bytes) -> Result<Message, DecodeError>;
 
+    /// Whether viewing `body` in place agrees with decoding it (see [`crate::wire::xdr_view`]);
+    /// for the tests and the fuzz target.
+    #[doc(hidden)]
+    fn view_agrees(header: &Header, body: &Bytes) -> Result<(), String>;
+
     /// The class this body belongs to.
     fn class(&self) -> MessageClass;
 

@@ -11,6 +11,7 @@ pub mod strings;
 pub mod xdr;
 pub mod xdr_bytes;
 mod xdr_numbers;
+pub mod xdr_view;
 
 pub use address::{AddrParseError, DevAddr};
 pub use banner::{BANNER_LEN, Banner, BannerError};
@@ -21,3 +22,4 @@ pub use interface::Interface;
 pub use serde_impls::serde_bytes;
 pub use strings::{Opaque, PlayerString};
 pub use xdr::{FixedBytes, Xdr, XdrElement, XdrError, XdrFault};
+pub use xdr_view::{View, XdrArray, XdrView};
