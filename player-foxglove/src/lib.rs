@@ -43,8 +43,8 @@ use player_proto::interfaces::common::{Pose2d, Pose3d};
 use player_proto::interfaces::localize::Localize;
 use player_proto::interfaces::player::Player;
 use player_proto::interfaces::{
-    camera::Camera, fiducial::Fiducial, laser::Laser, map::Map, planner::Planner,
-    position2d::Position2d, ranger::Ranger, sonar::Sonar,
+    camera::Camera, fiducial::Fiducial, laser::Laser, laser::LaserScanView, map::Map,
+    planner::Planner, position2d::Position2d, ranger::Ranger, sonar::Sonar,
 };
 use player_proto::message::{Body, Message};
 use player_proto::wire::{Header, Interface, MsgType};
@@ -106,13 +106,33 @@ impl Converter {
         if !matches!(header.msg_type, MsgType::Data | MsgType::Ack) {
             return Vec::new();
         }
-        match Message::decode(*header, body.clone()) {
-            Ok(message) => self.convert(robot, &message),
-            Err(e) => {
-                tracing::debug!("{robot}: not converted: {e}");
-                Vec::new()
-            }
-        }
+        // Laser scans, the messages that come most often and weigh most, are read where they
+        // lie: the conversion copies each range once, into the Foxglove scan, with no owned
+        // scan in between.
+        let scan = match Laser::DATA_SCAN.view(header, body) {
+            Some(scan) => Some(scan),
+            None => Laser::DATA_SCANPOSE
+                .view(header, body)
+                .map(|pose| pose.map(|pose| pose.scan)),
+        };
+        let converted = match scan {
+            Some(scan) => scan.map(|scan| self.laser_scan(robot, header, &scan)),
+            None => Message::decode(*header, body.clone()).map(|m| self.convert(robot, &m)),
+        };
+        converted.unwrap_or_else(|e| {
+            tracing::debug!("{robot}: not converted: {e}");
+            Vec::new()
+        })
+    }
+
+    fn laser_scan(&mut self, name: &str, header: &Header, scan: &LaserScanView<'_>) -> Vec<Output> {
+        let index = header.addr.index;
+        let frame = device_frame(name, "laser", index);
+        let time = timestamp(header.timestamp);
+        vec![Output {
+            topic: format!("/{name}/laser/{index}/scan"),
+            message: FoxgloveMessage::LaserScan(scans::laser(time, &frame, scan)),
+        }]
     }
 
     fn convert(&mut self, name: &str, message: &Message) -> Vec<Output> {
@@ -163,8 +183,6 @@ impl Converter {
                 }
                 Vec::new()
             }
-            Body::Laser(Laser::Scan(scan)) => scans(vec![scans::laser(time, &frame, scan)]),
-            Body::Laser(Laser::ScanPose(sp)) => scans(vec![scans::laser(time, &frame, &sp.scan)]),
             Body::Laser(Laser::Geometry(g)) => vec![tf(&g.pose)],
             Body::Ranger(Ranger::Geometry(g) | Ranger::GeometryData(g)) => {
                 state.rangers.entry(index).or_default().geometry = Some(g.clone());

@@ -9,16 +9,16 @@ use player_proto::interfaces::ranger::{RangerConfig, RangerGeometry};
 
 use crate::frames::pose3d;
 
-/// A laser scan in its device's frame.
-pub fn laser(time: Timestamp, frame: &str, scan: &laser::LaserScan) -> LaserScan {
+/// A laser scan in its device's frame, read from where it lies in the received body.
+pub fn laser(time: Timestamp, frame: &str, scan: &laser::LaserScanView<'_>) -> LaserScan {
     LaserScan {
         timestamp: Some(time),
         frame_id: frame.into(),
         pose: Some(identity()),
         start_angle: f64::from(scan.min_angle),
         end_angle: f64::from(scan.max_angle),
-        ranges: scan.ranges.iter().map(|&r| f64::from(r)).collect(),
-        intensities: scan.intensity.0.iter().map(|&i| f64::from(i)).collect(),
+        ranges: scan.ranges.iter().map(f64::from).collect(),
+        intensities: scan.intensity.iter().map(|&i| f64::from(i)).collect(),
     }
 }
 

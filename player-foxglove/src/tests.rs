@@ -84,9 +84,59 @@ fn a_real_laser_becomes_laser_scans_with_its_ranges() {
         let ranges: Vec<f64> = scan.ranges.iter().map(|&r| f64::from(r)).collect();
         assert_eq!(converted.ranges, ranges);
         assert_eq!(converted.start_angle, f64::from(scan.min_angle));
+        assert_eq!(converted.end_angle, f64::from(scan.max_angle));
+        let intensities: Vec<f64> = scan.intensity.iter().map(|&i| f64::from(i)).collect();
+        assert_eq!(converted.intensities, intensities);
         checked += 1;
     }
     assert!(checked >= 10, "{checked} scans");
+}
+
+#[test]
+fn a_scan_with_its_pose_converts_as_its_scan_and_a_damaged_one_to_nothing() {
+    use player_proto::interfaces::common::Pose2d;
+    use player_proto::interfaces::laser::{LaserScan, LaserScanPose};
+    use player_proto::wire::{DevAddr, HEADER_LEN, Opaque};
+    let scan = LaserScan {
+        min_angle: -1.5,
+        max_angle: 1.5,
+        resolution: 1.0,
+        max_range: 8.0,
+        ranges: vec![1.0, 2.5, 4.0, 8.0],
+        intensity: Opaque::from(vec![0, 1, 2, 3]),
+        id: 3,
+    };
+    let laser = DevAddr::local(Interface::LASER, 1);
+    let with_pose = LaserScanPose {
+        scan,
+        pose: Pose2d::new(1.0, 2.0, 0.5),
+    };
+    let message = Message::typed(laser, MsgType::Data, Laser::ScanPose(with_pose));
+    let wire = message.to_bytes();
+    let body = wire.slice(HEADER_LEN..);
+    let mut converter = Converter::new();
+    let outputs = converter.server_message("r", &message.header, &body);
+    let [
+        Output {
+            topic,
+            message: FoxgloveMessage::LaserScan(converted),
+        },
+    ] = &outputs[..]
+    else {
+        panic!("{outputs:?}");
+    };
+    assert_eq!(topic, "/r/laser/1/scan");
+    assert_eq!(converted.frame_id, "r/laser/1");
+    assert_eq!(converted.ranges, [1.0, 2.5, 4.0, 8.0]);
+    assert_eq!(converted.intensities, [0.0, 1.0, 2.0, 3.0]);
+    // Cut inside the ranges: nothing converted, nothing panics.
+    let mut header = message.header;
+    header.size = 30;
+    assert!(
+        converter
+            .server_message("r", &header, &body.slice(..30))
+            .is_empty()
+    );
 }
 
 #[test]
