@@ -46,6 +46,19 @@ fn has(counts: &BTreeMap<(String, String), usize>, schema: &str, topic: &str) ->
     counts.contains_key(&(schema.to_string(), topic.to_string()))
 }
 
+/// The topic and scan of outputs that must be one laser scan.
+fn one_scan(outputs: &[Output]) -> (&str, &foxglove::messages::LaserScan) {
+    match outputs {
+        [
+            Output {
+                topic,
+                message: FoxgloveMessage::LaserScan(scan),
+            },
+        ] => (topic, scan),
+        _ => panic!("not one scan: {outputs:?}"),
+    }
+}
+
 #[test]
 fn a_real_laser_becomes_laser_scans_with_its_ranges() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../captures/laser_push.jsonl");
@@ -70,15 +83,7 @@ fn a_real_laser_becomes_laser_scans_with_its_ranges() {
             continue;
         };
         let outputs = converter.server_message("localhost:6665", &header, &body);
-        let [
-            Output {
-                topic,
-                message: FoxgloveMessage::LaserScan(converted),
-            },
-        ] = &outputs[..]
-        else {
-            panic!("{outputs:?}");
-        };
+        let (topic, converted) = one_scan(&outputs);
         assert_eq!(topic, "/localhost:6665/laser/0/scan");
         assert_eq!(converted.frame_id, "localhost:6665/laser/0");
         let ranges: Vec<f64> = scan.ranges.iter().map(|&r| f64::from(r)).collect();
@@ -116,15 +121,7 @@ fn a_scan_with_its_pose_converts_as_its_scan_and_a_damaged_one_to_nothing() {
     let body = wire.slice(HEADER_LEN..);
     let mut converter = Converter::new();
     let outputs = converter.server_message("r", &message.header, &body);
-    let [
-        Output {
-            topic,
-            message: FoxgloveMessage::LaserScan(converted),
-        },
-    ] = &outputs[..]
-    else {
-        panic!("{outputs:?}");
-    };
+    let (topic, converted) = one_scan(&outputs);
     assert_eq!(topic, "/r/laser/1/scan");
     assert_eq!(converted.frame_id, "r/laser/1");
     assert_eq!(converted.ranges, [1.0, 2.5, 4.0, 8.0]);

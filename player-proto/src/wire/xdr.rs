@@ -169,6 +169,38 @@ pub trait XdrElement: Xdr {
     }
 }
 
+/// The length of the counted array at the front of `input` (the `x_count` member, then XDR's
+/// own length), checked before anything is allocated or read for it: not above the count, and
+/// not more elements of at least `element_size` bytes than the bytes left can hold. Returns
+/// the input after the two words.
+#[inline(always)]
+pub fn counted_length(input: &[u8], element_size: usize) -> XdrResult<'_, usize> {
+    let (after_count, count) = take_u32(input)?;
+    let (rest, length) = take_u32(after_count)?;
+    if length > count {
+        return fail(after_count, XdrFault::LengthAboveCount { count, length });
+    }
+    let n = length as usize;
+    if n.saturating_mul(element_size.max(1)) > rest.len() {
+        return fail(
+            after_count,
+            XdrFault::LengthBeyondBody {
+                length,
+                remaining: rest.len(),
+            },
+        );
+    }
+    Ok((rest, n))
+}
+
+#[inline(always)]
+fn take_u32(input: &[u8]) -> XdrResult<'_, u32> {
+    match input.split_first_chunk::<4>() {
+        Some((raw, rest)) => Ok((rest, u32::from_be_bytes(*raw))),
+        None => fail(input, XdrFault::Truncated),
+    }
+}
+
 /// A counted array (`uint32_t x_count; T *x;`): the count member, XDR's length prefix, then
 /// the elements.
 impl<T: XdrElement> Xdr for Vec<T> {
@@ -177,21 +209,7 @@ impl<T: XdrElement> Xdr for Vec<T> {
     // Inlined like the structs holding it (see `xdr_struct!`).
     #[inline(always)]
     fn decode<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, Self> {
-        let (after_count, count) = u32::decode(input, body)?;
-        let (rest, length) = u32::decode(after_count, body)?;
-        if length > count {
-            return fail(after_count, XdrFault::LengthAboveCount { count, length });
-        }
-        let n = length as usize;
-        if n.saturating_mul(T::MIN_WIRE_SIZE.max(1)) > rest.len() {
-            return fail(
-                after_count,
-                XdrFault::LengthBeyondBody {
-                    length,
-                    remaining: rest.len(),
-                },
-            );
-        }
+        let (rest, n) = counted_length(input, T::MIN_WIRE_SIZE)?;
         let mut items = Vec::with_capacity(n);
         let (rest, ()) = T::decode_many(rest, body, n, &mut items)?;
         Ok((rest, items))

@@ -7,6 +7,7 @@ use bytes::{BufMut, Bytes};
 
 use super::strings::{Opaque, PlayerString};
 use super::xdr::{Xdr, XdrFault, XdrResult, fail};
+use super::xdr_view::{view_counted_bytes, view_packed_bytes};
 
 /// Bytes needed to pad `len` up to the next multiple of 4.
 #[inline]
@@ -19,12 +20,8 @@ pub const fn pad4(len: usize) -> usize {
 /// Inlined, like the decoders of the structs holding byte arrays (see `xdr_struct!`).
 #[inline(always)]
 pub fn decode_counted_bytes<'a>(input: &'a [u8], body: &Bytes) -> XdrResult<'a, Bytes> {
-    let (after_count, count) = u32::decode(input, body)?;
-    let (rest, length) = u32::decode(after_count, body)?;
-    if length > count {
-        return fail(after_count, XdrFault::LengthAboveCount { count, length });
-    }
-    decode_packed_bytes(after_count, rest, length as usize, body)
+    let (rest, bytes) = view_counted_bytes(input)?;
+    Ok((rest, share_or_copy(body, bytes)))
 }
 
 /// Decodes `len` packed bytes and their padding from `rest`. `length_at` is where the length
@@ -36,18 +33,8 @@ pub fn decode_packed_bytes<'a>(
     len: usize,
     body: &Bytes,
 ) -> XdrResult<'a, Bytes> {
-    let padded = len.saturating_add(pad4(len));
-    if padded > rest.len() {
-        return fail(
-            length_at,
-            XdrFault::LengthBeyondBody {
-                length: u32::try_from(len).unwrap_or(u32::MAX),
-                remaining: rest.len(),
-            },
-        );
-    }
-    let bytes = share_or_copy(body, &rest[..len]);
-    Ok((&rest[padded..], bytes))
+    let (rest, bytes) = view_packed_bytes(length_at, rest, len)?;
+    Ok((rest, share_or_copy(body, bytes)))
 }
 
 /// Writes a counted byte array: count, length, bytes, zero padding.

@@ -20,7 +20,7 @@ use std::marker::PhantomData;
 use bytes::Bytes;
 
 use super::strings::{Opaque, PlayerString};
-use super::xdr::{Xdr, XdrElement, XdrFault, XdrResult, fail};
+use super::xdr::{Xdr, XdrElement, XdrFault, XdrResult, counted_length, fail};
 use super::xdr_bytes::{FixedBytes, pad4};
 
 /// The borrowed reading of `T` from bytes that live for `'a`.
@@ -290,21 +290,7 @@ impl<T: XdrElement + XdrView> XdrView for Vec<T> {
 
     #[inline(always)]
     fn view(input: &[u8]) -> XdrResult<'_, XdrArray<'_, T>> {
-        let (after_count, count) = u32::view(input)?;
-        let (rest, length) = u32::view(after_count)?;
-        if length > count {
-            return fail(after_count, XdrFault::LengthAboveCount { count, length });
-        }
-        let n = length as usize;
-        if n.saturating_mul(T::MIN_WIRE_SIZE.max(1)) > rest.len() {
-            return fail(
-                after_count,
-                XdrFault::LengthBeyondBody {
-                    length,
-                    remaining: rest.len(),
-                },
-            );
-        }
+        let (rest, n) = counted_length(input, T::MIN_WIRE_SIZE)?;
         let end = match T::FIXED_SIZE {
             // The check above, for these elements: they are MIN_WIRE_SIZE bytes each.
             Some(size) => match n.checked_mul(size).filter(|&len| len <= rest.len()) {
