@@ -61,8 +61,13 @@ fn font() -> Result<&'static MathFont, FormulaError> {
 }
 
 /// `text` (`$…$`) typeset in `colour` at `dpi`, on a transparent background, rows bottom-up
-/// as the scene's pictures are.
+/// as the scene's pictures are. Typeset once per process: the same arguments again give the
+/// same picture (see [`super::cache`]).
 pub fn typeset(text: &str, colour: Rgba, dpi: u32) -> Result<Pixels, FormulaError> {
+    super::cache::typeset_once(text, colour, dpi, || typeset_now(text, colour, dpi))
+}
+
+fn typeset_now(text: &str, colour: Rgba, dpi: u32) -> Result<Pixels, FormulaError> {
     let latex = math_of(text).ok_or_else(|| FormulaError::NotMath { text: text.into() })?;
     if !(1..=MAX_DPI).contains(&dpi) {
         return Err(FormulaError::BadResolution(dpi));
@@ -122,6 +127,24 @@ mod tests {
             .find(|p| p[3] == u8::MAX)
             .unwrap();
         assert_eq!(&ink[..3], &[255, 255, 255], "ink in the colour asked for");
+    }
+
+    #[test]
+    fn a_formula_is_typeset_once_and_its_picture_shared() {
+        let text = r"$\sum_{i=1}^{1024} robot_i$";
+        let first = typeset(text, Rgba::WHITE, DEFAULT_DPI).unwrap();
+        let again = typeset(text, Rgba::WHITE, DEFAULT_DPI).unwrap();
+        assert_eq!(first.generation(), again.generation(), "one picture");
+        let (kept, bytes) = super::super::cache::kept_now();
+        assert!(kept >= 1 && bytes >= first.bytes().len());
+        let other_colour = typeset(text, Rgba([255, 0, 0, 255]), DEFAULT_DPI).unwrap();
+        assert_ne!(other_colour.generation(), first.generation());
+        // Errors are kept too, and stay errors.
+        let broken = r"$\frac{1}{$";
+        assert_eq!(
+            typeset(broken, Rgba::WHITE, DEFAULT_DPI),
+            typeset(broken, Rgba::WHITE, DEFAULT_DPI)
+        );
     }
 
     #[test]
