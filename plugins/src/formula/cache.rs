@@ -1,6 +1,8 @@
 //! Formulas typeset once per process: the same text, colour and resolution give the same
-//! picture, so a formula label on each of a thousand robots is typeset once (milliseconds
-//! each), and its one picture — one [`Pixels::generation`] — is uploaded to the GPU once.
+//! picture, so a formula label on each of a thousand robots is typeset once, and its one
+//! picture — one [`Pixels::generation`] — is uploaded to the GPU once. Typesetting a short
+//! formula at the default resolution takes about 0.14 ms, taking it from here 51 ns
+//! (`cargo bench -p plugins --bench formula`): 1 024 labels 0.19 ms instead of 140 ms.
 //!
 //! The cache is small and bounded: at most [`MAX_FORMULAS`] formulas and [`MAX_BYTES`] of
 //! pixels, the oldest forgotten first; a picture larger than the whole budget is not kept. A
