@@ -35,7 +35,19 @@ cargo +nightly fuzz run -O "$target" "$work" "corpus/$target" "${seeds[@]}" -- \
 status=$?
 executed=$(grep -a 'stat::number_of_executed_units' "$log" | awk '{print $2}')
 time=$(grep -a -o 'Done [0-9]* runs in [0-9]* second' "$log" | awk '{print $5}')
+# A run stopped by hand prints no "Done" line: its seconds from its average rate.
+if [ -z "$time" ] && [ -n "$executed" ]; then
+  rate=$(grep -a 'stat::average_exec_per_sec' "$log" | awk '{print $2}')
+  [ "${rate:-0}" -gt 0 ] && time="about $(( executed / rate ))"
+fi
 corpus=$(find "$work" -type f | wc -l)
-verdict=$([ "$status" -eq 0 ] && echo "no crash" || echo "CRASH (exit $status, see fuzz/$log)")
-echo "$target | ${executed:-?} | ${time:-?} s | $(( ${executed:-0} / (${time:-0} > 0 ? ${time:-1} : 1) ))/s | $corpus | $verdict"
+# Stopped by hand (SIGINT: libFuzzer exits 72, cargo fuzz 1) is not a crash: the log says so.
+if [ "$status" -eq 0 ]; then
+  verdict="no crash"
+elif grep -aq 'libFuzzer: run interrupted' "$log" && ! grep -aq 'deadly signal\|panicked' "$log"; then
+  verdict="no crash; stopped by hand"
+else
+  verdict="CRASH (exit $status, see fuzz/$log)"
+fi
+echo "$target | ${executed:-?} | ${time:-?} s | ${rate:-$(( ${executed:-0} / (${time:-0} > 0 ? ${time:-1} : 1) ))}/s | $corpus | $verdict"
 exit $status
