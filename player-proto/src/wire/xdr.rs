@@ -17,6 +17,8 @@
 use bytes::{BufMut, Bytes};
 use nom::error::{ErrorKind, ParseError};
 
+use super::xdr_view::XdrView;
+
 /// The result of decoding one XDR item: the remaining input and the value.
 pub type XdrResult<'a, T> = nom::IResult<&'a [u8], T, XdrError<'a>>;
 
@@ -175,8 +177,8 @@ pub trait XdrElement: Xdr {
 /// the input after the two words.
 #[inline(always)]
 pub fn counted_length(input: &[u8], element_size: usize) -> XdrResult<'_, usize> {
-    let (after_count, count) = take_u32(input)?;
-    let (rest, length) = take_u32(after_count)?;
+    let (after_count, count) = u32::view(input)?;
+    let (rest, length) = u32::view(after_count)?;
     if length > count {
         return fail(after_count, XdrFault::LengthAboveCount { count, length });
     }
@@ -191,14 +193,6 @@ pub fn counted_length(input: &[u8], element_size: usize) -> XdrResult<'_, usize>
         );
     }
     Ok((rest, n))
-}
-
-#[inline(always)]
-fn take_u32(input: &[u8]) -> XdrResult<'_, u32> {
-    match input.split_first_chunk::<4>() {
-        Some((raw, rest)) => Ok((rest, u32::from_be_bytes(*raw))),
-        None => fail(input, XdrFault::Truncated),
-    }
 }
 
 /// A counted array (`uint32_t x_count; T *x;`): the count member, XDR's length prefix, then

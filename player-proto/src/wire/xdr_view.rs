@@ -116,12 +116,9 @@ impl<T: XdrElement + XdrView + Default + Copy + fmt::Debug, const N: usize> XdrV
 /// as [`super::xdr::decode_counted_bytes`], returning the bytes in place.
 #[inline(always)]
 pub fn view_counted_bytes(input: &[u8]) -> XdrResult<'_, &[u8]> {
-    let (after_count, count) = u32::view(input)?;
-    let (rest, length) = u32::view(after_count)?;
-    if length > count {
-        return fail(after_count, XdrFault::LengthAboveCount { count, length });
-    }
-    view_packed_bytes(after_count, rest, length as usize)
+    let (rest, len) = counted_length(input, 1)?;
+    // The length was read 4 bytes in: where a padding that does not fit is reported.
+    view_packed_bytes(&input[4..], rest, len)
 }
 
 /// `len` packed bytes and their padding from `rest`; `length_at` is where the length was read,
