@@ -7,6 +7,15 @@
 #
 #   bash fuzz/run.sh TARGET [RUNS] [SECONDS]      # defaults: 10 000 000 runs, 3 600 s
 #
+# SANITIZER=none: built without AddressSanitizer (in target/plain), and the crates that
+# rasterize and encode pictures without coverage feedback (rustc-raster-uninstrumented.sh).
+# For a target whose time goes to those crates (valid_composition: a formula label's
+# typesetting): two to three times the inputs a second. Safe Rust gains little from ASan;
+# what is lost is libFuzzer's -malloc_limit_mb (it needs ASan's allocator hooks) — one
+# allocation over 2 GiB resident still ends the run through -rss_limit_mb.
+# LANE=NAME: another run of the same target beside the first, on another core, sharing its
+# corpus, with a log of its own (target/TARGET.NAME.log).
+#
 # Needs a nightly toolchain and cargo-fuzz (`cargo install cargo-fuzz`).
 set -uo pipefail
 cd "$(dirname "$0")"
@@ -28,8 +37,13 @@ max_len=()
 case $target in
   stage_world) max_len=(-max_len=16384) ;;
 esac
-log=target/$target.log
-cargo +nightly fuzz run -O "$target" "$work" "corpus/$target" "${seeds[@]}" -- \
+log=target/$target${LANE:+.$LANE}.log
+build=()
+if [ "${SANITIZER:-address}" = none ]; then
+  build=(-s none --target-dir target/plain)
+  export RUSTC_WRAPPER=$PWD/rustc-raster-uninstrumented.sh
+fi
+cargo +nightly fuzz run -O "${build[@]}" "$target" "$work" "corpus/$target" "${seeds[@]}" -- \
   -runs="$runs" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 \
   -print_final_stats=1 "${max_len[@]}" >"$log" 2>&1
 status=$?
