@@ -37,7 +37,18 @@ def test_a_replayed_real_laser_reads_as_numpy(sim_process, recording):
         assert robot.laser(0).read(timeout=5.0).time != scan.time
 
 
-def test_ctrl_c_interrupts_a_blocking_read(sim_process, recording):
+@pytest.fixture
+def ctrl_c_raises():
+    """Ctrl-C as at a terminal, where Python turns it into KeyboardInterrupt. A process
+    started in the background by a non-interactive shell (`cmd &`: a CI runner's script can
+    be one) inherits SIGINT ignored, and Python then leaves it ignored: the read would run its
+    whole timeout and the test would fail for the way it was started."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
+
+
+def test_ctrl_c_interrupts_a_blocking_read(sim_process, recording, ctrl_c_raises):
     port, _ = sim_process("--replay", recording, "--paused")
     with player3.connect("127.0.0.1", port, timeout=3.0) as robot:
         laser = robot.laser(0)
