@@ -77,8 +77,8 @@ fn an_idle_window_does_not_redraw_and_a_busy_one_keeps_its_interval() {
     // Nothing changes: start-up takes a few frames (the window's first events, fonts, panels
     // fading in), and then none until the run's deadline. How many start-up frames there are
     // depends on how fast they come — panels fade in over a fixed time — so two runs' counts
-    // differ by several frames on a loaded machine (15 in a 2 s run against 18 in a 6 s one, every
-    // one of them in the first 0.3 s): what says "idle" is the pause, not the count.
+    // differ by several frames on a loaded machine (15 in a 2 s run against 18 in a 6 s one,
+    // every one of them in the first 0.3 s): what says "idle" is the pause, not the count.
     let out = xvfb.pv3d(&[&ground, "--quit-after", "6", "--frame-stats"]);
     assert!(
         out.status.success(),
