@@ -34,7 +34,7 @@ mod relayed_device;
 pub mod robot;
 mod survey;
 
-use std::net::{IpAddr, Ipv4Addr};
+use std::net::{IpAddr, Ipv4Addr, SocketAddr, TcpListener};
 use std::time::{Duration, Instant};
 
 use player_proto::client::{ClientOptions, ConnectError, Tap, fan_out};
@@ -56,6 +56,13 @@ pub enum RelayError {
     Upstream(#[from] ConnectError),
     #[error("cannot start a relay thread: {0}")]
     Thread(String),
+    /// A robot's observer port is taken (or not this machine's): the relay would otherwise
+    /// run without serving that robot to anyone.
+    #[error("cannot listen for observers on {addr}: {source}")]
+    Listen {
+        addr: SocketAddr,
+        source: std::io::Error,
+    },
 }
 
 /// One robot server and the relay port its observers connect to.
@@ -141,6 +148,7 @@ impl Relay {
         if config.routes.is_empty() {
             return Err(RelayError::NoRobots);
         }
+        check_listen_ports(config.bind, &config.routes)?;
         let downstream = DownstreamOptions {
             bind: config.bind,
             commanders: config.commanders,
@@ -189,4 +197,19 @@ impl Relay {
     pub fn observers(&self) -> usize {
         self.robots.iter().map(RelayedRobot::observers).sum()
     }
+}
+
+/// Binds every fixed observer port of `routes` on `bind` once, all at the same time (two
+/// robots given one port fail too), and lets them go: a port taken now is refused before
+/// anything starts rather than tried again each time its robot connects. [`Relay::start`]
+/// checks; a program may check sooner, before it starts anything else.
+pub fn check_listen_ports(bind: IpAddr, routes: &[Route]) -> Result<(), RelayError> {
+    let mut held = Vec::new();
+    for route in routes.iter().filter(|r| r.listen_port != 0) {
+        let addr = SocketAddr::new(bind, route.listen_port);
+        let listener =
+            TcpListener::bind(addr).map_err(|source| RelayError::Listen { addr, source })?;
+        held.push(listener);
+    }
+    Ok(())
 }

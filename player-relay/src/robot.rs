@@ -171,7 +171,6 @@ impl Follower {
             if outcome == Err(true) || self.stop.load(Ordering::SeqCst) {
                 break;
             }
-            retry_at = None;
             let connected = self.upstream.state() == ConnectionState::Connected;
             // The fronts' survey does not wait for the downstream port: a port that cannot be
             // bound keeps Player observers out, not the web page.
@@ -181,11 +180,16 @@ impl Follower {
             self.surveyed = connected;
             let server = self.shared.lock().server.clone();
             match (connected, server) {
+                // Data wakes the thread many times a second: a port that could not be bound
+                // is tried again only once the delay is over.
+                (true, None) if retry_at.is_some_and(|at| Instant::now() < at) => {}
                 (true, None) => {
-                    if !self.start_serving() {
-                        retry_at = Some(Instant::now() + REBIND_DELAY);
-                    }
+                    retry_at = match self.start_serving(retry_at.is_none()) {
+                        true => None,
+                        false => Some(Instant::now() + REBIND_DELAY),
+                    };
                 }
+                (false, None) => retry_at = None,
                 (false, Some(server)) => {
                     tracing::warn!(
                         port = self.upstream.port(),
@@ -195,7 +199,6 @@ impl Follower {
                     server.shutdown();
                 }
                 (true, Some(server)) => self.forward(&server),
-                (false, None) => {}
             }
         }
         if let Some(server) = self.shared.lock().server.take() {
@@ -204,8 +207,9 @@ impl Follower {
         self.shared.changed.notify_all();
     }
 
-    /// Serves the robot downstream; false if its port cannot be bound now.
-    fn start_serving(&mut self) -> bool {
+    /// Serves the robot downstream; false if its port cannot be bound now (said as an error
+    /// the `first` time, then only to the debug log until it can).
+    fn start_serving(&mut self, first: bool) -> bool {
         let port = self.shared.lock().port.unwrap_or(0);
         match serve_robot(&self.upstream, &self.subscribed, port, &self.downstream) {
             Ok(server) => {
@@ -223,11 +227,16 @@ impl Follower {
                 self.forward(&server);
                 true
             }
-            Err(e) => {
+            Err(e) if first => {
                 tracing::error!(
                     upstream = self.upstream.port(),
-                    "cannot serve observers: {e}"
+                    "cannot serve observers: {e} (trying again every {} s)",
+                    REBIND_DELAY.as_secs()
                 );
+                false
+            }
+            Err(e) => {
+                tracing::debug!(upstream = self.upstream.port(), "still cannot serve: {e}");
                 false
             }
         }

@@ -143,6 +143,8 @@ fn run(cli: Cli) -> Result<()> {
         (None, true) => Commanders::FirstToAsk,
         (None, false) => Commanders::Nobody,
     };
+    // Before anything else starts: a relay that cannot listen says why, and only that.
+    player_relay::check_listen_ports(cli.bind, &routes)?;
     for route in routes.iter().filter(|r| r.listen_port != 0) {
         eprintln!(
             "{}:{} → {}:{}",
