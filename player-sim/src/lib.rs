@@ -4,7 +4,9 @@
 //! * [`mapfile`] — maps read from images as Player's `mapfile` driver reads them.
 //! * [`nav`] — Player's navigation drivers: localization (`amcl`, `fakelocalize`) and the
 //!   `wavefront` planner that drives a robot.
-//! * [`devices`], [`camera_frames`], [`serve`] — the simulation served over the Player protocol.
+//! * [`devices`], [`camera_frames`], [`serve`] — the simulation served over the Player protocol,
+//!   stepped by `stepper` at its pace or in lockstep with its clients.
+//! * [`sim_record`] — the simulation's own recording, stamped with simulated time.
 //! * [`replay`] — a recording served as the Player servers it was recorded from.
 //! * [`speech`] — speech heard from a file or standard input, and said into a log and WAV files.
 //! * [`sim`] — the simulation: motion, collisions, sensors by ray casting.
@@ -24,6 +26,9 @@ pub mod replay;
 pub mod serve;
 pub mod served;
 pub mod sim;
+pub mod sim_record;
 pub mod speech;
+mod stepper;
+pub use stepper::StepObserver;
 pub mod world;
 pub mod worldfile;

@@ -3,13 +3,15 @@
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::time::Duration;
 
 use anyhow::{Context, Result};
 use clap::Parser;
 use player_sim::replay::ReplayOptions;
-use player_sim::serve::{ServeOptions, serve};
+use player_sim::serve::{LockstepOptions, ServeOptions, serve};
 use player_sim::served::{DEFAULT_PORT, cfgs_beside, default_devices, from_cfgs, shift_ports};
 use player_sim::sim::{Noise, Simulation};
+use player_sim::sim_record::SimRecording;
 use player_sim::world::World;
 
 /// Serve a simulated Stage world over the Player protocol.
@@ -49,9 +51,10 @@ struct Cli {
     #[arg(long)]
     port_base: Option<u16>,
 
-    /// Simulated seconds per real second (0: as fast as possible).
-    #[arg(long, default_value_t = 1.0)]
-    speedup: f64,
+    /// Simulated seconds per real second (0: as fast as possible); by default 1, and 0 in
+    /// lockstep, where the clients set the pace.
+    #[arg(long)]
+    speedup: Option<f64>,
 
     /// Seed of the sensor noise and of Stage's wander controller (how long a robot keeps
     /// turning): a run is reproduced exactly by its seed.
@@ -62,6 +65,34 @@ struct Cli {
     /// reading that hits something (0: exact readings).
     #[arg(long, default_value_t = 0.0, value_name = "METRES")]
     range_noise: f64,
+
+    /// Step in lockstep with the clients that drive robots: a step is taken once every
+    /// connection that has commanded a device sent its command for the step, so a run depends
+    /// on what the programs decide, not on how fast the machine runs them. A --speedup given
+    /// still caps the pace.
+    #[arg(long)]
+    lockstep: bool,
+
+    /// How long a lockstep step waits for a client's command, wall-clock seconds; a client that
+    /// misses it is not waited for until it commands again (0: wait for ever).
+    #[arg(
+        long,
+        default_value_t = 5.0,
+        value_name = "SECONDS",
+        requires = "lockstep"
+    )]
+    patience: f64,
+
+    /// Record every robot's devices, every step, stamped with simulated time (MCAP when the
+    /// name ends in .mcap, else .prec): a lockstep run's recording is the same, byte for byte,
+    /// every time.
+    #[arg(long, value_name = "FILE", conflicts_with = "replay")]
+    record: Option<PathBuf>,
+
+    /// Simulate this many seconds, then exit (a whole recording: one stopped by Ctrl-C reads
+    /// up to its last whole chunk).
+    #[arg(long, value_name = "SECONDS", conflicts_with = "headless_once")]
+    until: Option<f64>,
 
     /// Step N times, then exit.
     #[arg(long, value_name = "N")]
@@ -90,15 +121,30 @@ fn run(cli: Cli) -> Result<()> {
     let Some(world_path) = &cli.world else {
         anyhow::bail!("name a world file, or a recording with --replay");
     };
+    let speedup = cli.speedup.unwrap_or(if cli.lockstep { 0.0 } else { 1.0 });
     anyhow::ensure!(
-        cli.speedup >= 0.0 && cli.speedup.is_finite(),
+        speedup >= 0.0 && speedup.is_finite(),
         "--speedup must be 0 or more"
     );
     anyhow::ensure!(
         cli.range_noise >= 0.0 && cli.range_noise.is_finite(),
         "--range-noise must be 0 or more metres"
     );
+    anyhow::ensure!(
+        cli.patience >= 0.0 && cli.patience.is_finite(),
+        "--patience must be 0 (for ever) or more seconds"
+    );
     let world = World::load(world_path)?;
+    let max_steps = match cli.until {
+        Some(seconds) => {
+            anyhow::ensure!(
+                seconds >= 0.0 && seconds.is_finite(),
+                "--until must be 0 or more simulated seconds"
+            );
+            Some((seconds / world.interval).round() as u64)
+        }
+        None => cli.headless_once,
+    };
     let mut ignored = world.ignored.clone();
     let mut cfgs = cli.cfg.clone();
     if cfgs.is_empty() {
@@ -123,11 +169,22 @@ fn run(cli: Cli) -> Result<()> {
         "{robots} robots, {} devices",
         devices.len()
     );
+    let recorder = match &cli.record {
+        Some(path) => Some(
+            player_mcap::recorder(path)
+                .with_context(|| format!("recording to {}", path.display()))?,
+        ),
+        None => None,
+    };
     let options = ServeOptions {
         bind: cli.bind,
-        speedup: cli.speedup,
-        max_steps: cli.headless_once,
-        free_ports: false,
+        speedup,
+        max_steps,
+        lockstep: cli.lockstep.then(|| LockstepOptions {
+            patience: (cli.patience > 0.0).then(|| Duration::from_secs_f64(cli.patience)),
+        }),
+        record: recorder.as_ref().map(SimRecording::to),
+        ..ServeOptions::default()
     };
     let mut sim = Simulation::new(world);
     sim.noise = Noise {
@@ -142,6 +199,17 @@ fn run(cli: Cli) -> Result<()> {
         port_ranges(&ports)
     );
     running.wait();
+    if let Some(recorder) = recorder {
+        let stats = recorder.finish().context("finishing the recording")?;
+        if let Some(path) = &cli.record {
+            eprintln!(
+                "player-sim: recorded {} records ({} bytes) to {}",
+                stats.written,
+                stats.bytes,
+                path.display()
+            );
+        }
+    }
     Ok(())
 }
 

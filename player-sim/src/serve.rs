@@ -5,16 +5,26 @@ use std::net::IpAddr;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
-use player_proto::server::{DeviceKey, Server, ServerConfig, ServerError};
+use player_proto::server::{Lockstep, Server, ServerConfig, ServerError};
 use player_proto::wire::DevAddr;
 
 use crate::devices::SimDevice;
 use crate::served::{ServedDevice, attach_navigation, devices_beside};
 use crate::sim::Simulation;
+use crate::sim_record::{PortRecord, SimRecording};
+use crate::stepper::{Published, StepObserver, step_loop};
 use crate::world::World;
 use crate::worldfile::WorldFileError;
+
+/// Lockstep serving ([`player_proto::server::Lockstep`]): a step is taken once every client
+/// driving a robot has sent its command for it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LockstepOptions {
+    /// How long a step waits for a driver's command (wall clock); `None`: for ever.
+    pub patience: Option<Duration>,
+}
 
 /// How a simulation is served.
 #[derive(Debug, Clone)]
@@ -26,6 +36,12 @@ pub struct ServeOptions {
     pub max_steps: Option<u64>,
     /// Serve on free ports chosen by the system instead of the configured ones.
     pub free_ports: bool,
+    /// Step in lockstep with the clients that drive robots.
+    pub lockstep: Option<LockstepOptions>,
+    /// Record every device of every port each step, stamped with simulated time.
+    pub record: Option<SimRecording>,
+    /// Called after each step with the simulation (ground truth for a grader).
+    pub observer: Option<StepObserver>,
 }
 
 impl Default for ServeOptions {
@@ -35,6 +51,9 @@ impl Default for ServeOptions {
             speedup: 1.0,
             max_steps: None,
             free_ports: false,
+            lockstep: None,
+            record: None,
+            observer: None,
         }
     }
 }
@@ -44,6 +63,8 @@ pub struct Running {
     pub sim: Arc<Mutex<Simulation>>,
     /// (configured port, port actually served on).
     pub ports: Vec<(u16, u16)>,
+    /// The turnstile of a lockstep simulation.
+    pub lockstep: Option<Arc<Lockstep>>,
     stop: Arc<AtomicBool>,
     stepper: Option<JoinHandle<()>>,
     _server: Server,
@@ -58,6 +79,11 @@ impl Running {
             .map(|(_, a)| *a)
     }
 
+    /// Whether the stepping thread has ended (after `max_steps`).
+    pub fn finished(&self) -> bool {
+        self.stepper.as_ref().is_none_or(JoinHandle::is_finished)
+    }
+
     /// Waits until the stepping thread ends (after `max_steps`, or never).
     pub fn wait(mut self) {
         if let Some(t) = self.stepper.take() {
@@ -67,6 +93,9 @@ impl Running {
 
     pub fn stop(&mut self) {
         self.stop.store(true, Ordering::Relaxed);
+        if let Some(lockstep) = &self.lockstep {
+            lockstep.release(1);
+        }
         if let Some(t) = self.stepper.take() {
             let _ = t.join();
         }
@@ -124,18 +153,39 @@ pub fn serve(
     config.bind = options.bind;
     // One thread publishes every robot's data each step: it writes to the sockets itself.
     config.publisher_writes = true;
+    let lockstep = options
+        .lockstep
+        .map(|l| Arc::new(Lockstep::new(l.patience)));
+    config.lockstep = lockstep.clone();
     let robots: Vec<usize> = configured
         .iter()
         .map(|&p| config.robot(if options.free_ports { 0 } else { p }))
         .collect();
+    // The recording names ports as configured, so that it does not depend on free ports.
+    let order = Arc::new(Mutex::new(()));
+    let host = options.bind.to_string();
+    let records: Vec<Option<PortRecord>> = configured
+        .iter()
+        .map(|&port| {
+            options
+                .record
+                .as_ref()
+                .map(|r| PortRecord::open(r, &host, port, order.clone()))
+        })
+        .collect();
+    let slot = |port: u16| configured.binary_search(&port).expect("collected above");
     for d in &devices {
-        let robot = robots[configured.binary_search(&d.port).expect("collected above")];
+        let at = slot(d.port);
         config.device(
-            robot,
+            robots[at],
             d.addr(),
             SimDevice {
                 sim: sim.clone(),
                 served: d.clone(),
+                record: records[at]
+                    .clone()
+                    .map(|r| (r, recorded_addr(d, options.bind))),
+                greets: options.lockstep.is_some(),
             },
         );
     }
@@ -147,18 +197,21 @@ pub fn serve(
         .collect();
     // Each device found once in the server: the step asks after every one at every step.
     let publisher = server.publisher();
-    let published: Vec<(DeviceKey, crate::served::Source)> = devices
+    let published: Vec<Published> = devices
         .iter()
         .filter_map(|d| {
-            let actual = ports
-                .iter()
-                .find(|(c, _)| *c == d.port)
-                .map_or(d.port, |(_, a)| *a);
+            let at = slot(d.port);
             let addr = DevAddr {
-                robot: u32::from(actual),
+                robot: u32::from(ports[at].1),
                 ..d.addr()
             };
-            Some((publisher.find(addr)?, d.source.clone()))
+            Some(Published {
+                key: publisher.find(addr)?,
+                source: d.source.clone(),
+                record: records[at]
+                    .clone()
+                    .map(|r| (r, recorded_addr(d, options.bind))),
+            })
         })
         .collect();
     let stop = Arc::new(AtomicBool::new(false));
@@ -166,74 +219,39 @@ pub fn serve(
         let (sim, stop) = (sim.clone(), stop.clone());
         std::thread::Builder::new()
             .name("player-sim step".into())
-            .spawn(move || step_loop(&sim, &published, &publisher, &options, &stop))
+            .spawn({
+                let lockstep = lockstep.clone();
+                move || {
+                    step_loop(
+                        &sim,
+                        &published,
+                        &publisher,
+                        &options,
+                        lockstep.as_deref(),
+                        &stop,
+                    )
+                }
+            })
             .expect("spawning the simulation thread")
     };
     Ok(Running {
         sim,
         ports,
+        lockstep,
         stop,
         stepper: Some(stepper),
         _server: server,
     })
 }
 
-fn step_loop(
-    sim: &Mutex<Simulation>,
-    devices: &[(DeviceKey, crate::served::Source)],
-    publisher: &player_proto::server::Publisher,
-    options: &ServeOptions,
-    stop: &AtomicBool,
-) {
-    let interval = sim.lock().expect("simulation").world.interval;
-    let period = if options.speedup > 0.0 {
-        Some(Duration::from_secs_f64(interval / options.speedup))
-    } else {
-        None
+/// A device's address in the simulation's recording: the served host, the configured port.
+fn recorded_addr(device: &ServedDevice, bind: IpAddr) -> DevAddr {
+    let ip = match bind {
+        IpAddr::V4(ip) if !ip.is_unspecified() => ip,
+        _ => std::net::Ipv4Addr::LOCALHOST,
     };
-    let started = Instant::now();
-    let mut steps = 0u64;
-    while !stop.load(Ordering::Relaxed) && options.max_steps.is_none_or(|max| steps < max) {
-        let outgoing: Vec<_> = {
-            let mut sim = sim.lock().expect("simulation");
-            sim.step();
-            let id = u32::try_from(sim.steps).unwrap_or(u32::MAX);
-            // The step's scans in one sensing scope: the robots' index is checked once.
-            sim.sensing(|sim| {
-                devices
-                    .iter()
-                    .filter(|(key, _)| publisher.subscribers_of(*key) > 0)
-                    .flat_map(|(key, source)| {
-                        let key = *key;
-                        SimDevice::data(sim, source, id)
-                            .into_iter()
-                            .map(move |(subtype, body)| (key, source, subtype, body))
-                    })
-                    .map(|(key, source, subtype, body)| {
-                        let time = if source.stamped_by_wall_clock() {
-                            wall_clock()
-                        } else {
-                            sim.time
-                        };
-                        (key, subtype, body, time)
-                    })
-                    .collect()
-            })
-        };
-        publisher.publish_to_all(outgoing);
-        steps += 1;
-        if let Some(period) = period {
-            let due = started + period.mul_f64(steps as f64);
-            if let Some(wait) = due.checked_duration_since(Instant::now()) {
-                std::thread::sleep(wait);
-            }
-        }
+    DevAddr {
+        host: DevAddr::host_from_ipv4(ip),
+        ..device.addr()
     }
-}
-
-/// Seconds since the Unix epoch, as Player's server clock reads.
-fn wall_clock() -> f64 {
-    std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0.0, |d| d.as_secs_f64())
 }

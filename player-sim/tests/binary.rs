@@ -107,3 +107,46 @@ fn a_log_written_to_a_pipe_carries_no_colour_codes() {
         "escape codes in a piped log: {log:?}"
     );
 }
+
+#[test]
+fn a_lockstep_run_nobody_drives_goes_on_after_the_patience_and_records_itself() {
+    let world = Path::new(env!("CARGO_MANIFEST_DIR")).join("../stage-worlds/simple.world");
+    let dir = tempfile::tempdir().unwrap();
+    let record = dir.path().join("run.mcap");
+    let started = Instant::now();
+    let output = Command::new(env!("CARGO_BIN_EXE_player-sim"))
+        .arg(&world)
+        .args(["--lockstep", "--patience", "0.3", "--until", "2"])
+        .args(["--port-base", &free_port().to_string()])
+        .arg("--record")
+        .arg(&record)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "{stderr}");
+    assert!(stderr.contains("runs on its own"), "{stderr}");
+    assert!(
+        started.elapsed() < Duration::from_secs(10),
+        "20 steps, nobody waited for past the patience"
+    );
+    let file = std::fs::File::open(&record).unwrap();
+    let mut records = player_mcap::McapRecords::new(std::io::BufReader::new(file));
+    let (mut last_ns, mut data) = (0, 0);
+    while let Some(record) = records.next_record().unwrap() {
+        last_ns = last_ns.max(record.time_ns);
+        if let player_proto::recording::Event::Message { header, .. } = &record.event {
+            data += 1;
+            let recorded = record.time_ns as f64 / 1e9;
+            assert!(
+                (header.timestamp - recorded).abs() < 1e-6,
+                "stamped with simulated time: {} at {recorded}",
+                header.timestamp
+            );
+        }
+    }
+    assert!(
+        last_ns.abs_diff(2_000_000_000) < 1_000,
+        "the last step at 2 s simulated: {last_ns} ns"
+    );
+    assert!(data >= 20 * 3, "every device every step: {data}");
+}

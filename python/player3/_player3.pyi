@@ -22,12 +22,23 @@ class RequestRefused(PlayerError):
     """The server refused a request (a NACK, or a subscription denied)."""
 
 def connect(
-    host: str = "localhost", port: int = 6665, timeout: float = 5.0, read_only: bool = False
+    host: Optional[str] = None,
+    port: Optional[int] = None,
+    timeout: float = 5.0,
+    read_only: bool = False,
 ) -> Robot:
-    """Connects to the Player server at host:port; `read_only` observes only."""
+    """Connects to the Player server at host:port (default: $PLAYER_HOST and $PLAYER_PORT,
+    else localhost:6665); `read_only` observes only."""
 
-def simulate(world: Union[str, PathLike[str]], speedup: float = 1.0) -> World:
-    """Serves a Stage world file in this process, on free local ports."""
+def simulate(
+    world: Union[str, PathLike[str]],
+    speedup: Optional[float] = None,
+    lockstep: bool = False,
+    patience: Optional[float] = 5.0,
+    seed: int = 0,
+) -> World:
+    """Serves a Stage world file in this process, on free local ports; `lockstep` steps
+    once every driving client has commanded (or `World.step()` says so)."""
 
 class Device:
     """A device the server offers."""
@@ -45,6 +56,10 @@ class World:
         """A connected Robot, by name ("r0") or by index."""
     def robots(self) -> List[str]:
         """Names of the robots, in port order."""
+    lockstep: bool
+    time: float
+    def step(self, steps: int = 1, timeout: float = 10.0) -> float:
+        """Lockstep: takes `steps` steps now, without waiting for drivers; the new time."""
     def close(self) -> None: ...
     def __enter__(self) -> World: ...
     def __exit__(self, *exc: object) -> bool: ...

@@ -38,15 +38,31 @@ impl Device {
 
 /// Connects to the Player server at `host:port`, waiting at most `timeout` seconds.
 /// `read_only=True` observes: commands and configuration requests raise `PermissionError`.
+/// Without a host or port, `PLAYER_HOST` and `PLAYER_PORT` from the environment are used
+/// (a grader sets them for the program it runs), else localhost and 6665.
 #[pyfunction]
-#[pyo3(signature = (host = "localhost", port = 6665, timeout = 5.0, read_only = false))]
+#[pyo3(signature = (host = None, port = None, timeout = 5.0, read_only = false))]
 pub fn connect(
     py: Python<'_>,
-    host: &str,
-    port: i64,
+    host: Option<String>,
+    port: Option<i64>,
     timeout: f64,
     read_only: bool,
 ) -> PyResult<Robot> {
+    let host = match host {
+        Some(host) => host,
+        None => std::env::var("PLAYER_HOST").unwrap_or_else(|_| "localhost".into()),
+    };
+    let port = match port {
+        Some(port) => port,
+        None => match std::env::var("PLAYER_PORT") {
+            Ok(text) => text.trim().parse::<i64>().map_err(|_| {
+                PyValueError::new_err(format!("PLAYER_PORT must be a port number, got {text:?}"))
+            })?,
+            Err(_) => 6665,
+        },
+    };
+    let host = host.as_str();
     let port = u16::try_from(port)
         .ok()
         .filter(|&p| p != 0)

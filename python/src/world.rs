@@ -5,8 +5,9 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
+use std::time::{Duration, Instant};
 
-use player_sim::serve::{Running, ServeOptions, serve};
+use player_sim::serve::{LockstepOptions, Running, ServeOptions, serve};
 use player_sim::served::{DEFAULT_PORT, Source, cfgs_beside, default_devices, from_cfgs};
 use player_sim::sim::Simulation;
 use player_sim::world::World as WorldFile;
@@ -33,17 +34,44 @@ pub struct World {
 }
 
 /// Serves the world file (with the `.cfg` files beside it, as player-sim does) on free local
-/// ports. `speedup` is simulated seconds per real second (0: as fast as possible).
+/// ports. `speedup` is simulated seconds per real second (0: as fast as possible; by default
+/// 1, and 0 in lockstep, where the programs set the pace).
+/// `lockstep=True` takes a step once every client driving a robot has sent its command for
+/// it (or `World.step()` says so), waiting at most `patience` seconds for one (None: for
+/// ever); `seed` draws the noise and the wander controller's turns.
 #[pyfunction]
-#[pyo3(signature = (world, speedup = 1.0))]
-pub fn simulate(py: Python<'_>, world: PathBuf, speedup: f64) -> PyResult<World> {
+#[pyo3(signature = (world, speedup = None, lockstep = false, patience = Some(5.0), seed = 0))]
+pub fn simulate(
+    py: Python<'_>,
+    world: PathBuf,
+    speedup: Option<f64>,
+    lockstep: bool,
+    patience: Option<f64>,
+    seed: u64,
+) -> PyResult<World> {
+    let speedup = speedup.unwrap_or(if lockstep { 0.0 } else { 1.0 });
     if !(speedup >= 0.0 && speedup.is_finite()) {
         return Err(PyValueError::new_err(format!(
             "speedup must be 0 or more, got {speedup}"
         )));
     }
+    let patience = match patience {
+        Some(p) if p > 0.0 && p.is_finite() => Some(Duration::from_secs_f64(p)),
+        None => None,
+        Some(p) => {
+            return Err(PyValueError::new_err(format!(
+                "patience must be more than 0 seconds (or None: for ever), got {p}"
+            )));
+        }
+    };
+    let options = ServeOptions {
+        speedup,
+        free_ports: true,
+        lockstep: lockstep.then_some(LockstepOptions { patience }),
+        ..ServeOptions::default()
+    };
     let path = world.clone();
-    let (running, robots) = py.detach(move || start(&world, speedup))?;
+    let (running, robots) = py.detach(move || start(&world, options, seed))?;
     Ok(World {
         running: Mutex::new(Some(running)),
         robots,
@@ -51,7 +79,7 @@ pub fn simulate(py: Python<'_>, world: PathBuf, speedup: f64) -> PyResult<World>
     })
 }
 
-fn start(path: &Path, speedup: f64) -> PyResult<(Running, Vec<PortRobots>)> {
+fn start(path: &Path, options: ServeOptions, seed: u64) -> PyResult<(Running, Vec<PortRobots>)> {
     let failed = |e: &dyn std::fmt::Display| {
         PlayerError::new_err(format!("cannot simulate {}: {e}", path.display()))
     };
@@ -83,12 +111,9 @@ fn start(path: &Path, speedup: f64) -> PyResult<(Running, Vec<PortRobots>)> {
             entry.push(spec.name.clone());
         }
     }
-    let options = ServeOptions {
-        speedup,
-        free_ports: true,
-        ..ServeOptions::default()
-    };
-    let running = serve(Simulation::new(world), devices, options).map_err(|e| failed(&e))?;
+    let mut sim = Simulation::new(world);
+    sim.noise.seed = seed;
+    let running = serve(sim, devices, options).map_err(|e| failed(&e))?;
     let robots = names
         .into_iter()
         .map(|(configured, names)| (running.port(configured).unwrap_or(configured), names))
@@ -130,6 +155,18 @@ impl World {
     fn names(&self) -> Vec<String> {
         self.robots.iter().flat_map(|(_, n)| n.clone()).collect()
     }
+
+    /// The simulation's lockstep turnstile and clock, while it is served.
+    fn served<R>(&self, f: impl FnOnce(&Running) -> R) -> PyResult<R> {
+        let running = self.running.lock().unwrap_or_else(|e| e.into_inner());
+        match running.as_ref() {
+            Some(running) => Ok(f(running)),
+            None => Err(PlayerError::new_err(format!(
+                "the simulation of {} was closed",
+                self.path.display()
+            ))),
+        }
+    }
 }
 
 #[pymethods]
@@ -155,6 +192,56 @@ impl World {
     /// The names of the robots (those with a `position2d`), in port order.
     fn robots(&self) -> Vec<String> {
         self.names()
+    }
+
+    /// Whether the world steps in lockstep with its driving clients.
+    #[getter]
+    fn lockstep(&self) -> PyResult<bool> {
+        self.served(|r| r.lockstep.is_some())
+    }
+
+    /// Simulated seconds so far.
+    #[getter]
+    fn time(&self) -> PyResult<f64> {
+        self.served(|r| r.sim.lock().map_or(0.0, |sim| sim.time))
+    }
+
+    /// Lockstep: takes `steps` steps now, without waiting for the clients that drive robots,
+    /// and returns the simulated time once they are taken (their data published). For a
+    /// program that reads without commanding; a command is a client's own turn already.
+    #[pyo3(signature = (steps = 1, timeout = 10.0))]
+    fn step(&self, py: Python<'_>, steps: i64, timeout: f64) -> PyResult<f64> {
+        let steps = u64::try_from(steps)
+            .ok()
+            .filter(|&s| s > 0)
+            .ok_or_else(|| {
+                PyValueError::new_err(format!("steps must be 1 or more, got {steps}"))
+            })?;
+        let limit = timeout_arg(timeout, "stepping the world")?;
+        let Some(lockstep) = self.served(|r| r.lockstep.clone())? else {
+            return Err(PlayerError::new_err(format!(
+                "{} is not simulated in lockstep: it steps by itself (simulate(..., lockstep=True))",
+                self.path.display()
+            )));
+        };
+        let target = lockstep.steps() + steps;
+        lockstep.release(steps);
+        let deadline = Instant::now() + limit;
+        loop {
+            let slice = deadline
+                .saturating_duration_since(Instant::now())
+                .min(Duration::from_millis(50));
+            if py.detach(|| lockstep.wait_for_step(target, slice)) {
+                return self.time();
+            }
+            py.check_signals()?;
+            if Instant::now() >= deadline {
+                return Err(pyo3::exceptions::PyTimeoutError::new_err(format!(
+                    "stepping {}: {steps} step(s) not taken within {timeout} s",
+                    self.path.display()
+                )));
+            }
+        }
     }
 
     /// The local ports served, one per configured Player port.

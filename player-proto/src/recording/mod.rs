@@ -34,7 +34,7 @@ pub mod writer;
 pub use format::{Event, Record};
 pub use index::RecordingIndex;
 pub use reader::{ReadError, RecordingReader};
-pub use recorder::{Recorder, RecorderError, RecorderStats};
+pub use recorder::{ConnectionOpener, Recorder, RecorderError, RecorderStats};
 pub use sink::RecordSink;
 pub use writer::{RecordingWriter, WriteError};
 

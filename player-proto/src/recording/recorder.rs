@@ -42,6 +42,9 @@ pub enum RecorderError {
     Panicked,
 }
 
+/// Declares a connection (host, port) at a time of the caller's clock; returns its tap.
+pub type ConnectionOpener = Arc<dyn Fn(&str, u16, SystemTime) -> ConnectionTap + Send + Sync>;
+
 /// Counters of a recording, readable while it runs.
 #[derive(Debug, Default)]
 struct Counters {
@@ -127,10 +130,17 @@ impl Recorder {
     /// The tap to put in [`crate::client::ClientOptions::tap`]: each robot connection it is
     /// asked for gets a connection number, declared in the file at once.
     pub fn tap(&self) -> Tap {
+        let opener = self.opener();
+        Arc::new(move |host: &str, port: u16| opener(host, port, SystemTime::now()))
+    }
+
+    /// Like [`Self::tap`], with the time of each connection's declaration given: for a
+    /// recording on a clock of its own (a simulation's).
+    pub fn opener(&self) -> ConnectionOpener {
         let queue = self.queue.clone().expect("a recorder being recorded to");
         let counters = self.counters.clone();
         let connections = self.connections.clone();
-        Arc::new(move |host: &str, port: u16| {
+        Arc::new(move |host: &str, port: u16, at: SystemTime| {
             let connection = connections.fetch_add(1, Ordering::Relaxed);
             let sink = Sink {
                 queue: queue.clone(),
@@ -138,7 +148,7 @@ impl Recorder {
                 connection,
             };
             sink.push(
-                to_ns(SystemTime::now()),
+                to_ns(at),
                 Event::Connection {
                     host: host.to_string(),
                     port,

@@ -25,6 +25,14 @@ pub trait Device: Send + 'static {
         true
     }
 
+    /// Data a new subscriber is sent at once, after its subscription's ACK: (subtype, body,
+    /// timestamp). None by default, as in Player, where data comes with the driver's next
+    /// update; a lockstep simulation, which does not step until its clients command, sends
+    /// what it has now, so that a program can read before its first command.
+    fn greeting(&mut self) -> Vec<(u8, Body, f64)> {
+        Vec::new()
+    }
+
     /// A client unsubscribed or went away.
     fn on_unsubscribe(&mut self) {}
 

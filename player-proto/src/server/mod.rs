@@ -40,6 +40,7 @@
 mod control;
 mod device;
 mod direct;
+mod lockstep;
 mod publisher;
 mod queue;
 mod session;
@@ -53,6 +54,7 @@ use std::time::{Duration, Instant};
 pub use crate::delivery::{DataMode, ReplaceAction, ReplaceRule};
 pub use control::{CommandGate, Commanders, Peer};
 pub use device::{Device, Reply};
+pub use lockstep::{Lockstep, StepCause};
 pub use publisher::{DeviceKey, Publisher};
 pub use queue::{OutQueue, QUEUE_LIMIT};
 use state::{DeviceSlot, ServerState};
@@ -85,6 +87,9 @@ pub struct ServerConfig {
     pub publisher_writes: bool,
     /// Name of the server's threads, to tell its CPU time from others' in one process.
     pub thread_name: String,
+    /// A lockstep simulation's turnstile: every admitted command is reported to it, and a
+    /// driver's second command in one step waits for the step ([`Lockstep`]).
+    pub lockstep: Option<Arc<Lockstep>>,
     ports: Vec<u16>,
     devices: Vec<(usize, DevAddr, Box<dyn Device>)>,
 }
@@ -100,6 +105,7 @@ impl Default for ServerConfig {
             send_buffer: None,
             publisher_writes: false,
             thread_name: "player-server".into(),
+            lockstep: None,
             ports: Vec::new(),
             devices: Vec::new(),
         }
@@ -195,6 +201,7 @@ impl Server {
             devices,
             sessions: Mutex::default(),
             gate: CommandGate::new(config.commanders),
+            lockstep: config.lockstep,
             queue_rules: config.queue_rules,
             next_peer: AtomicU64::new(0),
             open: Mutex::new(0),

@@ -78,7 +78,14 @@ pub(crate) async fn serve(
     };
     loop {
         match reader.read().await {
-            Ok(Incoming::Message(message)) => handler.handle(message),
+            Ok(Incoming::Message(message)) => {
+                if message.header.msg_type == MsgType::Cmd
+                    && let Some(lockstep) = &state.lockstep
+                {
+                    lockstep.turn(client.id).await;
+                }
+                handler.handle(message);
+            }
             // Player drops a message whose body does not decode, without a reply.
             Ok(Incoming::Undecodable(e)) => tracing::warn!(%peer, "dropped: {e}"),
             Ok(Incoming::Closed) => break,
@@ -93,6 +100,9 @@ pub(crate) async fn serve(
     }
     handler.unsubscribe_all();
     state.gate.left(client);
+    if let Some(lockstep) = &state.lockstep {
+        lockstep.left(client.id);
+    }
     session.close();
     let _ = writer.await;
 }
@@ -185,7 +195,12 @@ impl Handler<'_> {
         let mut message = message;
         message.header.addr = slot.addr;
         match message.header.msg_type {
-            MsgType::Cmd => slot.device.lock().expect("device").on_command(&message),
+            MsgType::Cmd => {
+                slot.device.lock().expect("device").on_command(&message);
+                if let Some(lockstep) = &self.state.lockstep {
+                    lockstep.commanded(self.session.peer.id);
+                }
+            }
             MsgType::Req => match slot.device.lock().expect("device").on_request(&message) {
                 Reply::Ack(body) => self.reply(&message, MsgType::Ack, body),
                 Reply::Nack => self.reply(&message, MsgType::Nack, Body::Empty),
@@ -278,6 +293,7 @@ impl Handler<'_> {
         };
         let mut device = slot.device.lock().expect("device");
         let key = (interf, index);
+        let mut greeting = Vec::new();
         let granted = match req.access {
             OPEN_MODE => {
                 // The device's hook runs with no session lock held: a device may take its own
@@ -298,6 +314,7 @@ impl Handler<'_> {
                         .insert(key);
                     if added {
                         slot.subscribers().push(self.session.clone());
+                        greeting = device.greeting();
                     }
                     OPEN_MODE
                 } else {
@@ -326,6 +343,10 @@ impl Handler<'_> {
         };
         drop(device);
         self.reply(message, MsgType::Ack, Body::Player(Player::Device(reply)));
+        for (subtype, body, time) in greeting {
+            let data = Message::new(slot.addr, MsgType::Data, subtype, body).at(time);
+            self.session.send(Arc::new(data));
+        }
     }
 
     fn unsubscribe_all(&mut self) {

@@ -119,6 +119,8 @@ pub(crate) struct ServerState {
     pub sessions: Mutex<HashMap<u16, Vec<Weak<SessionState>>>>,
     /// Who may command devices.
     pub gate: CommandGate,
+    /// Set when the server is a lockstep simulation's.
+    pub lockstep: Option<Arc<super::Lockstep>>,
     /// The replace rules every connection's queue starts with.
     pub queue_rules: Vec<ReplaceRule>,
     /// For [`Peer::id`].

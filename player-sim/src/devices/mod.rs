@@ -24,16 +24,23 @@ use player_proto::interfaces::simulation::{Simulation as SimMsg, SimulationPose2
 use player_proto::interfaces::sonar::{Sonar, SonarGeometry};
 use player_proto::message::{Body, Message};
 use player_proto::server::{Device, Reply};
+use player_proto::wire::DevAddr;
 
 use crate::camera_frames::camera_data;
 use crate::served::{ServedDevice, Source};
 use crate::sim::{Command, Simulation};
+use crate::sim_record::PortRecord;
 use crate::world::{Pose, RangerSpec, SensorSpec};
 
 /// A served device, backed by the shared simulation.
 pub struct SimDevice {
     pub sim: Arc<Mutex<Simulation>>,
     pub served: ServedDevice,
+    /// The simulation's own recording of this device's port, and the device's address there.
+    pub record: Option<(PortRecord, DevAddr)>,
+    /// Send a new subscriber the data of the step the simulation is at (lockstep: it does not
+    /// step until its clients command, and they read first).
+    pub greets: bool,
 }
 
 fn pose3(p: Pose, z: f64) -> Pose3d {
@@ -258,6 +265,21 @@ impl Device for SimDevice {
         &self.served.driver
     }
 
+    fn greeting(&mut self) -> Vec<(u8, Body, f64)> {
+        if !self.greets {
+            return Vec::new();
+        }
+        let sim = self.sim.lock().expect("simulation");
+        let id = u32::try_from(sim.steps).unwrap_or(u32::MAX);
+        let time = sim.time;
+        sim.sensing(|sim| {
+            SimDevice::data(sim, &self.served.source, id)
+                .into_iter()
+                .map(|(subtype, body)| (subtype, body, time))
+                .collect()
+        })
+    }
+
     fn on_subscribe(&mut self) -> bool {
         if let Source::Localize(driver) = &self.served.source {
             localize::subscribed(&mut self.sim.lock().expect("simulation"), driver);
@@ -266,6 +288,16 @@ impl Device for SimDevice {
     }
 
     fn on_command(&mut self, command: &Message) {
+        if let Some((record, addr)) = &self.record {
+            let time = self.sim.lock().expect("simulation").time;
+            let mut recorded = command.clone().at(time);
+            recorded.header.addr = *addr;
+            record.raw(
+                time,
+                player_proto::capture::Direction::ClientToServer,
+                &recorded,
+            );
+        }
         if let Source::Speech(output) = &self.served.source {
             speech::say(output, command);
             return;

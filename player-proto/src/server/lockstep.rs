@@ -1,0 +1,369 @@
+//! Lockstep: a simulation that advances one step once every client driving a robot has sent
+//! its command for the step, so that a run depends on what the programs decide and not on
+//! how fast the machine lets them decide it.
+//!
+//! A **driver** is a connection that has sent a command to a device. Each step waits until
+//! every present driver has sent a command since the previous step (or until
+//! [`Lockstep::release`] lets steps go without them). A driver whose command does not come
+//! within the patience is marked absent — the step goes on without it, with one log line —
+//! until it commands again. With no present driver at all (none yet, or all gone), the
+//! step waits the same patience for one to appear, then the simulation runs on its own until
+//! one does.
+//!
+//! A driver's second command in one step waits (its session awaits [`Lockstep::turn`]) until
+//! the step it answered has been taken: otherwise the command would land before or after the
+//! step as the scheduler pleased.
+
+use std::collections::BTreeMap;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Condvar, Mutex, MutexGuard};
+use std::time::{Duration, Instant};
+
+use tokio::sync::watch;
+
+/// How long the stepper sleeps at most between looks at its stop flag.
+const STOP_CHECK: Duration = Duration::from_millis(50);
+
+/// Where a driver stands in the current step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Turn {
+    /// The step waits for its command.
+    Pending,
+    /// It sent its command for this step.
+    Answered,
+    /// It missed a step's patience: not waited for until it commands again.
+    Absent,
+}
+
+#[derive(Debug)]
+struct Turns {
+    /// Steps taken so far.
+    step: u64,
+    /// By connection ([`super::Peer::id`]).
+    drivers: BTreeMap<u64, Turn>,
+    /// Steps that may go without waiting for anyone ([`Lockstep::release`]).
+    released: u64,
+    /// Since when the step has been waiting (for the patience).
+    waiting_since: Instant,
+    /// The simulation runs on its own: no driver present, and the patience for one passed.
+    running_alone: bool,
+}
+
+impl Turns {
+    /// Drivers not absent: how many, and how many of them answered.
+    fn present(&self) -> (usize, usize) {
+        self.drivers
+            .values()
+            .fold((0, 0), |(present, answered), turn| match turn {
+                Turn::Absent => (present, answered),
+                Turn::Answered => (present + 1, answered + 1),
+                Turn::Pending => (present + 1, answered),
+            })
+    }
+}
+
+/// Why the stepper may take a step ([`Lockstep::next_step`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum StepCause {
+    /// Every present driver sent its command.
+    Answered,
+    /// A step was released (`world.step()`).
+    Released,
+    /// Drivers that did not answer within the patience, now absent (connection ids).
+    Late(Vec<u64>),
+    /// No driver is present.
+    Alone,
+}
+
+/// The shared turnstile of a lockstep simulation: sessions report commands and departures,
+/// the stepper waits for its turn.
+#[derive(Debug)]
+pub struct Lockstep {
+    /// `None`: wait for drivers for ever.
+    patience: Option<Duration>,
+    turns: Mutex<Turns>,
+    changed: Condvar,
+    steps: watch::Sender<u64>,
+}
+
+impl Lockstep {
+    /// A turnstile that waits at most `patience` (wall clock) for a driver's command.
+    pub fn new(patience: Option<Duration>) -> Lockstep {
+        Lockstep {
+            patience,
+            turns: Mutex::new(Turns {
+                step: 0,
+                drivers: BTreeMap::new(),
+                released: 0,
+                waiting_since: Instant::now(),
+                running_alone: false,
+            }),
+            changed: Condvar::new(),
+            steps: watch::channel(0).0,
+        }
+    }
+
+    fn lock(&self) -> MutexGuard<'_, Turns> {
+        self.turns.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// Steps taken so far.
+    pub fn steps(&self) -> u64 {
+        self.lock().step
+    }
+
+    /// Waits (asynchronously) until connection `peer` may command: at once, unless it already
+    /// answered the step being waited for, in which case until that step has been taken.
+    pub async fn turn(&self, peer: u64) {
+        let mut taken = self.steps.subscribe();
+        loop {
+            let waiting_on = {
+                let turns = self.lock();
+                match turns.drivers.get(&peer) {
+                    Some(Turn::Answered) => turns.step,
+                    _ => return,
+                }
+            };
+            if taken.wait_for(|&s| s > waiting_on).await.is_err() {
+                return;
+            }
+        }
+    }
+
+    /// Connection `peer` sent a command: it is a driver, and it has answered this step.
+    pub fn commanded(&self, peer: u64) {
+        let mut turns = self.lock();
+        turns.drivers.insert(peer, Turn::Answered);
+        if turns.running_alone {
+            turns.running_alone = false;
+            tracing::info!("lockstep: a driver arrived; each step waits for its command");
+        }
+        drop(turns);
+        self.changed.notify_all();
+    }
+
+    /// Connection `peer` closed: the steps stop waiting for it.
+    pub fn left(&self, peer: u64) {
+        let mut turns = self.lock();
+        if turns.drivers.remove(&peer).is_some() && turns.present().0 == 0 {
+            turns.waiting_since = Instant::now();
+        }
+        drop(turns);
+        self.changed.notify_all();
+    }
+
+    /// Lets `steps` more steps go without waiting for anyone.
+    pub fn release(&self, steps: u64) {
+        self.lock().released += steps;
+        self.changed.notify_all();
+    }
+
+    /// Blocks the stepper until the next step may be taken, or `stop` is set (then `None`).
+    /// The caller takes the step, then calls [`Self::stepped`].
+    pub fn next_step(&self, stop: &AtomicBool) -> Option<StepCause> {
+        let mut turns = self.lock();
+        loop {
+            if stop.load(Ordering::Relaxed) {
+                return None;
+            }
+            if turns.released > 0 {
+                turns.released -= 1;
+                return Some(StepCause::Released);
+            }
+            let (present, answered) = turns.present();
+            if present > 0 {
+                if answered == present {
+                    return Some(StepCause::Answered);
+                }
+            } else if turns.running_alone {
+                return Some(StepCause::Alone);
+            }
+            let waited = turns.waiting_since.elapsed();
+            if let Some(patience) = self.patience
+                && waited >= patience
+            {
+                return Some(self.give_up_waiting(&mut turns));
+            }
+            let nap = self
+                .patience
+                .map_or(STOP_CHECK, |p| p.saturating_sub(waited).min(STOP_CHECK));
+            turns = self
+                .changed
+                .wait_timeout(turns, nap)
+                .unwrap_or_else(|e| e.into_inner())
+                .0;
+        }
+    }
+
+    /// The patience ran out: whoever is pending is absent from now on.
+    fn give_up_waiting(&self, turns: &mut Turns) -> StepCause {
+        let late: Vec<u64> = turns
+            .drivers
+            .iter()
+            .filter(|(_, t)| **t == Turn::Pending)
+            .map(|(&id, _)| id)
+            .collect();
+        if late.is_empty() {
+            turns.running_alone = true;
+            tracing::info!(
+                "lockstep: no client has commanded for {:.1} s; the simulation runs on its own \
+                 until one does",
+                self.patience.unwrap_or_default().as_secs_f64()
+            );
+            return StepCause::Alone;
+        }
+        for id in &late {
+            turns.drivers.insert(*id, Turn::Absent);
+        }
+        turns.running_alone = turns.present().0 == 0;
+        tracing::warn!(
+            "lockstep: {} client(s) sent no command within {:.1} s; going on without them until \
+             they command again",
+            late.len(),
+            self.patience.unwrap_or_default().as_secs_f64()
+        );
+        StepCause::Late(late)
+    }
+
+    /// The step was taken: present drivers owe the next one, and commands held back go.
+    pub fn stepped(&self) {
+        let step = {
+            let mut turns = self.lock();
+            turns.step += 1;
+            for turn in turns.drivers.values_mut() {
+                if *turn == Turn::Answered {
+                    *turn = Turn::Pending;
+                }
+            }
+            turns.waiting_since = Instant::now();
+            turns.step
+        };
+        self.steps.send_replace(step);
+        self.changed.notify_all();
+    }
+
+    /// Blocks until at least `step` steps have been taken, at most `limit`; whether they were.
+    pub fn wait_for_step(&self, step: u64, limit: Duration) -> bool {
+        let deadline = Instant::now() + limit;
+        let mut turns = self.lock();
+        while turns.step < step {
+            let Some(left) = deadline.checked_duration_since(Instant::now()) else {
+                return false;
+            };
+            turns = self
+                .changed
+                .wait_timeout(turns, left)
+                .unwrap_or_else(|e| e.into_inner())
+                .0;
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::Arc;
+
+    static NEVER: AtomicBool = AtomicBool::new(false);
+
+    #[test]
+    fn a_step_waits_for_every_present_driver() {
+        let lockstep = Lockstep::new(Some(Duration::from_secs(30)));
+        lockstep.commanded(1);
+        lockstep.commanded(2);
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Answered));
+        lockstep.stepped();
+        lockstep.commanded(1);
+        let shared = Arc::new(lockstep);
+        let stepper = {
+            let shared = shared.clone();
+            std::thread::spawn(move || shared.next_step(&NEVER))
+        };
+        std::thread::sleep(Duration::from_millis(100));
+        assert!(!stepper.is_finished(), "driver 2 has not answered");
+        shared.commanded(2);
+        assert_eq!(stepper.join().unwrap(), Some(StepCause::Answered));
+    }
+
+    #[test]
+    fn a_late_driver_is_named_then_not_waited_for() {
+        let lockstep = Lockstep::new(Some(Duration::from_millis(50)));
+        lockstep.commanded(7);
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Answered));
+        lockstep.stepped();
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Late(vec![7])));
+        lockstep.stepped();
+        let started = Instant::now();
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Alone));
+        assert!(
+            started.elapsed() < Duration::from_millis(40),
+            "an absent driver is not waited for"
+        );
+        lockstep.commanded(7);
+        lockstep.stepped();
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Late(vec![7])));
+    }
+
+    #[test]
+    fn without_drivers_the_patience_passes_once_then_steps_go() {
+        let lockstep = Lockstep::new(Some(Duration::from_millis(30)));
+        let started = Instant::now();
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Alone));
+        assert!(started.elapsed() >= Duration::from_millis(30));
+        lockstep.stepped();
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Alone));
+    }
+
+    #[test]
+    fn released_steps_go_and_a_stop_ends_the_wait() {
+        let lockstep = Lockstep::new(None);
+        lockstep.release(2);
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Released));
+        lockstep.stepped();
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Released));
+        lockstep.stepped();
+        assert!(lockstep.wait_for_step(2, Duration::ZERO));
+        let stop = AtomicBool::new(true);
+        assert_eq!(lockstep.next_step(&stop), None);
+    }
+
+    #[test]
+    fn a_driver_that_leaves_is_not_waited_for() {
+        let lockstep = Lockstep::new(None);
+        lockstep.commanded(1);
+        lockstep.commanded(2);
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Answered));
+        lockstep.stepped();
+        lockstep.commanded(1);
+        lockstep.left(2);
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Answered));
+    }
+
+    #[test]
+    fn a_second_command_in_a_step_waits_for_the_step() {
+        let lockstep = Arc::new(Lockstep::new(None));
+        let runtime = tokio::runtime::Builder::new_current_thread()
+            .enable_all()
+            .build()
+            .unwrap();
+        runtime.block_on(async {
+            lockstep.turn(3).await; // not a driver yet: at once
+            lockstep.commanded(3);
+            let held = tokio::time::timeout(Duration::from_millis(50), lockstep.turn(3)).await;
+            assert!(held.is_err(), "answered already: waits for the step");
+            let stepper = {
+                let lockstep = lockstep.clone();
+                std::thread::spawn(move || {
+                    lockstep.next_step(&NEVER);
+                    lockstep.stepped();
+                })
+            };
+            tokio::time::timeout(Duration::from_secs(5), lockstep.turn(3))
+                .await
+                .expect("the step was taken");
+            stepper.join().unwrap();
+        });
+    }
+}
