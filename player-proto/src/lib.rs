@@ -7,6 +7,8 @@
 //! * [`delivery`] — data modes and replace rules, shared by [`client`] and [`server`].
 //! * [`access`] — what an observer may send, for read-only clients and for servers that
 //!   let only one client command.
+//! * [`robot_id`] — who a robot is (its server, and its name where it has one), said alike
+//!   by every front.
 //!
 //! Decoding never panics and never allocates more than the bytes received justify; encoding
 //! writes into any [`bytes::BufMut`]. A message that is only looked at can be read where it
@@ -25,6 +27,7 @@ pub mod fuzz_input;
 pub mod interfaces;
 pub mod message;
 pub mod recording;
+pub mod robot_id;
 pub mod server;
 pub mod summary;
 pub mod transport;
@@ -34,4 +37,5 @@ pub mod wire;
 mod roundtrip_tests;
 
 pub use message::{Body, DecodeError, Message};
+pub use robot_id::RobotId;
 pub use wire::{DevAddr, Header, Interface, MsgType};

@@ -37,7 +37,8 @@ mod survey;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr, TcpListener};
 use std::time::{Duration, Instant};
 
-use player_proto::client::{ClientOptions, ConnectError, Tap, fan_out};
+use player_proto::RobotId;
+use player_proto::client::{ClientOptions, ConnectError, RobotTap, fan_out, for_robot};
 use player_proto::server::Commanders;
 
 pub use downstream::DownstreamOptions;
@@ -56,6 +57,9 @@ pub enum RelayError {
     Upstream(#[from] ConnectError),
     #[error("cannot start a relay thread: {0}")]
     Thread(String),
+    /// Two robots given one name: every front would show them as one.
+    #[error("two robots are named {0}")]
+    SameName(String),
     /// A robot's observer port is taken (or not this machine's): the relay would otherwise
     /// run without serving that robot to anyone.
     #[error("cannot listen for observers on {addr}: {source}")]
@@ -65,11 +69,11 @@ pub enum RelayError {
     },
 }
 
-/// One robot server and the relay port its observers connect to.
+/// One robot (its server, and its name where it has one) and the relay port its observers
+/// connect to.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Route {
-    pub host: String,
-    pub port: u16,
+    pub robot: RobotId,
     /// 0: any free port (see [`RelayedRobot::listen_port`]).
     pub listen_port: u16,
 }
@@ -79,8 +83,7 @@ impl Route {
     /// with a simulation beside them want.
     pub fn loopback(port: u16) -> Route {
         Route {
-            host: "127.0.0.1".into(),
-            port,
+            robot: RobotId::new("127.0.0.1", port),
             listen_port: 0,
         }
     }
@@ -99,10 +102,11 @@ pub struct RelayConfig {
     /// are the relay's.
     pub upstream: ClientOptions,
     /// Fronts that are not Player clients (the web page, a Foxglove server): each is told
-    /// everything every robot's server sends the relay. With any front, the relay subscribes
+    /// every robot, by its [`RobotId`], and everything its server sends the relay. With any
+    /// front, the relay subscribes
     /// to every device of a robot and asks what describes them (geometries, map tiles) each
     /// time it connects, since nobody downstream will ask for it.
-    pub fronts: Vec<Tap>,
+    pub fronts: Vec<RobotTap>,
     /// Whether a front passes commands on to the robots (Zenoh's authorised controller), so
     /// the upstream clients must not be read-only even when no observer may command.
     pub fronts_command: bool,
@@ -149,6 +153,7 @@ impl Relay {
             return Err(RelayError::NoRobots);
         }
         check_listen_ports(config.bind, &config.routes)?;
+        check_names(&config.routes)?;
         let downstream = DownstreamOptions {
             bind: config.bind,
             commanders: config.commanders,
@@ -159,7 +164,6 @@ impl Relay {
             read_only: config.commanders == Commanders::Nobody && !config.fronts_command,
             // The newest scan is all an observer gets: the robot need not queue older ones.
             replace_old_data: true,
-            tap: fan_out(config.fronts.clone()),
             ..config.upstream
         };
         let survey = !config.fronts.is_empty();
@@ -167,11 +171,17 @@ impl Relay {
             .routes
             .iter()
             .map(|route| {
+                // Each front hears of the robot as the route names it.
+                let taps = config.fronts.iter().cloned();
+                let taps = taps.map(|front| for_robot(front, route.robot.clone()));
+                let upstream = ClientOptions {
+                    tap: fan_out(taps.collect()),
+                    ..upstream.clone()
+                };
                 RelayedRobot::start(
-                    &route.host,
-                    route.port,
+                    &route.robot,
                     route.listen_port,
-                    upstream.clone(),
+                    upstream,
                     downstream.clone(),
                     survey,
                 )
@@ -210,6 +220,17 @@ pub fn check_listen_ports(bind: IpAddr, routes: &[Route]) -> Result<(), RelayErr
         let listener =
             TcpListener::bind(addr).map_err(|source| RelayError::Listen { addr, source })?;
         held.push(listener);
+    }
+    Ok(())
+}
+
+/// Refuses two routes with one name (two unnamed robots are told apart by their servers).
+fn check_names(routes: &[Route]) -> Result<(), RelayError> {
+    let mut names = std::collections::HashSet::new();
+    for name in routes.iter().filter_map(|r| r.robot.name()) {
+        if !names.insert(name) {
+            return Err(RelayError::SameName(name.to_string()));
+        }
     }
     Ok(())
 }

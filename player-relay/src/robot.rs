@@ -10,6 +10,7 @@ use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
+use player_proto::RobotId;
 use player_proto::client::{Client, ClientOptions, ConnectionState};
 use player_proto::server::Server;
 use player_proto::wire::{DevAddr, Interface};
@@ -46,6 +47,7 @@ impl Shared {
 
 /// A relayed robot; stops its thread and its servers when dropped.
 pub struct RelayedRobot {
+    id: RobotId,
     upstream: Arc<Client>,
     shared: Arc<Shared>,
     stop: Arc<AtomicBool>,
@@ -55,8 +57,7 @@ pub struct RelayedRobot {
 
 impl RelayedRobot {
     pub(crate) fn start(
-        host: &str,
-        port: u16,
+        id: &RobotId,
         listen_port: u16,
         client: ClientOptions,
         downstream: DownstreamOptions,
@@ -71,11 +72,12 @@ impl RelayedRobot {
             })),
             ..client
         };
-        let upstream = Arc::new(Client::spawn(host, port, options)?);
+        let upstream = Arc::new(Client::spawn(id.host(), id.port(), options)?);
         let shared = Arc::new(Shared::default());
         shared.publish(|s| s.port = (listen_port != 0).then_some(listen_port));
         let stop = Arc::new(AtomicBool::new(false));
         let follower = Follower {
+            id: id.clone(),
             upstream: upstream.clone(),
             shared: shared.clone(),
             stop: stop.clone(),
@@ -86,16 +88,22 @@ impl RelayedRobot {
             forwarded: HashMap::new(),
         };
         let thread = std::thread::Builder::new()
-            .name(format!("relay {host}:{port}"))
+            .name(format!("relay {id}"))
             .spawn(move || follower.run(woken))
             .map_err(|e| RelayError::Thread(e.to_string()))?;
         Ok(RelayedRobot {
+            id: id.clone(),
             upstream,
             shared,
             stop,
             wake,
             thread: Some(thread),
         })
+    }
+
+    /// Who the robot is, as the fronts are told.
+    pub fn id(&self) -> &RobotId {
+        &self.id
     }
 
     pub fn upstream(&self) -> &Arc<Client> {
@@ -142,6 +150,7 @@ impl Drop for RelayedRobot {
 
 /// The thread's state.
 struct Follower {
+    id: RobotId,
     upstream: Arc<Client>,
     shared: Arc<Shared>,
     stop: Arc<AtomicBool>,
@@ -175,7 +184,7 @@ impl Follower {
             // The fronts' survey does not wait for the downstream port: a port that cannot be
             // bound keeps Player observers out, not the web page.
             if connected && self.survey && !self.surveyed {
-                crate::survey::start(&self.upstream, &self.subscribed);
+                crate::survey::start(&self.id, &self.upstream, &self.subscribed);
             }
             self.surveyed = connected;
             let server = self.shared.lock().server.clone();
@@ -191,10 +200,7 @@ impl Follower {
                 }
                 (false, None) => retry_at = None,
                 (false, Some(server)) => {
-                    tracing::warn!(
-                        port = self.upstream.port(),
-                        "robot gone: dropping its observers"
-                    );
+                    tracing::warn!(robot = %self.id, "robot gone: dropping its observers");
                     self.shared.publish(|s| s.server = None);
                     server.shutdown();
                 }
@@ -214,11 +220,7 @@ impl Follower {
         match serve_robot(&self.upstream, &self.subscribed, port, &self.downstream) {
             Ok(server) => {
                 let bound = server.port(0);
-                tracing::info!(
-                    upstream = self.upstream.port(),
-                    port = bound,
-                    "serving the robot to observers"
-                );
+                tracing::info!(robot = %self.id, port = bound, "serving the robot to observers");
                 let server = Arc::new(server);
                 self.shared.publish(|s| {
                     s.port = Some(bound);
@@ -229,14 +231,14 @@ impl Follower {
             }
             Err(e) if first => {
                 tracing::error!(
-                    upstream = self.upstream.port(),
+                    robot = %self.id,
                     "cannot serve observers: {e} (trying again every {} s)",
                     REBIND_DELAY.as_secs()
                 );
                 false
             }
             Err(e) => {
-                tracing::debug!(upstream = self.upstream.port(), "still cannot serve: {e}");
+                tracing::debug!(robot = %self.id, "still cannot serve: {e}");
                 false
             }
         }

@@ -6,6 +6,7 @@
 use std::sync::Arc;
 use std::time::Duration;
 
+use player_proto::RobotId;
 use player_proto::client::Client;
 use player_proto::client::describe::describe;
 
@@ -15,18 +16,17 @@ use crate::relayed_device::UpstreamSubscriptions;
 const SURVEY_WAIT: Duration = Duration::from_secs(5);
 
 /// Surveys the robot on a thread of its own: the relay's robot thread never waits on it.
-pub(crate) fn start(upstream: &Arc<Client>, subscribed: &UpstreamSubscriptions) {
-    let (upstream, subscribed) = (upstream.clone(), subscribed.clone());
-    let name = format!("survey {}:{}", upstream.host(), upstream.port());
+pub(crate) fn start(id: &RobotId, upstream: &Arc<Client>, subscribed: &UpstreamSubscriptions) {
+    let (id, upstream, subscribed) = (id.clone(), upstream.clone(), subscribed.clone());
     let spawned = std::thread::Builder::new()
-        .name(name)
-        .spawn(move || survey(&upstream, &subscribed));
+        .name(format!("survey {id}"))
+        .spawn(move || survey(&id, &upstream, &subscribed));
     if let Err(e) = spawned {
         tracing::error!("cannot start a survey thread: {e}");
     }
 }
 
-fn survey(upstream: &Client, subscribed: &UpstreamSubscriptions) {
+fn survey(id: &RobotId, upstream: &Client, subscribed: &UpstreamSubscriptions) {
     let mut pending = Vec::new();
     for device in upstream.devices() {
         let addr = upstream.addr(device.addr.interf, device.addr.index);
@@ -58,7 +58,7 @@ fn survey(upstream: &Client, subscribed: &UpstreamSubscriptions) {
     }
     let described = describe(devices, SURVEY_WAIT);
     tracing::debug!(
-        robot = %format!("{}:{}", upstream.host(), upstream.port()),
+        robot = %id,
         ?described,
         "surveyed for the fronts"
     );

@@ -57,12 +57,8 @@ fn serve_world(world: &str) -> Running {
 fn relay_with_front(port: u16, topic: &str) -> (Relay, FoxgloveLive) {
     let live = FoxgloveLive::start(IpAddr::V4(Ipv4Addr::LOCALHOST), 0).expect("front starts");
     let relay = Relay::start(RelayConfig {
-        routes: vec![Route {
-            host: "127.0.0.1".into(),
-            port,
-            listen_port: 0,
-        }],
-        fronts: vec![live.tap()],
+        routes: vec![Route::loopback(port)],
+        fronts: vec![live.robot_tap()],
         ..RelayConfig::default()
     })
     .expect("relay starts");

@@ -96,9 +96,8 @@ fn the_library_refuses_a_taken_port_before_starting_a_robot() {
     let port = taken.local_addr().expect("bound").port();
     let config = RelayConfig {
         routes: vec![Route {
-            host: "127.0.0.1".into(),
-            port: 6665,
             listen_port: port,
+            ..Route::loopback(6665)
         }],
         ..RelayConfig::default()
     };

@@ -8,6 +8,7 @@ use std::net::IpAddr;
 use std::sync::{Arc, RwLock};
 use std::time::{Duration, Instant};
 
+use player_proto::RobotId;
 use player_proto::client::Client;
 use player_proto::interfaces::planner::{Planner, PlannerCmd};
 use player_proto::interfaces::position2d::{Position2d, Position2dCmdPos, Position2dCmdVel};
@@ -21,7 +22,7 @@ use crate::page::FromPage;
 /// held: five repeats lost in a row stop the base.
 pub const DEAD_MAN: Duration = Duration::from_millis(500);
 
-/// The robots a page may command, by name (`host:port`), and the rule for who may.
+/// The robots a page may command, by name (as [`RobotId`] says it), and the rule for who may.
 pub struct Control {
     gate: CommandGate,
     rule: Commanders,
@@ -43,9 +44,9 @@ impl Control {
         }
     }
 
-    /// Makes a robot commandable from the pages (the relay's upstream client for it).
-    pub fn add_robot(&self, client: Arc<Client>) {
-        let name = format!("{}:{}", client.host(), client.port());
+    /// Makes the robot `id` commandable from the pages (the relay's upstream client for it).
+    pub fn add_robot(&self, id: RobotId, client: Arc<Client>) {
+        let name = id.to_string();
         let mut robots = self.robots.write().unwrap_or_else(|e| e.into_inner());
         robots.insert(name, client);
     }

@@ -8,8 +8,9 @@ use std::sync::{Arc, Mutex, MutexGuard};
 use std::time::{Instant, SystemTime};
 
 use axum::extract::ws::Utf8Bytes;
+use player_proto::RobotId;
 use player_proto::capture::Direction;
-use player_proto::client::{DeviceStats, Tap, TapEvent};
+use player_proto::client::{DeviceStats, RobotTap, TapEvent};
 use player_proto::message::Message;
 use player_proto::wire::{DevAddr, Header, Interface, MsgType};
 use tokio::sync::broadcast;
@@ -75,12 +76,13 @@ impl Hub {
         self.robots.lock().unwrap_or_else(|e| e.into_inner())
     }
 
-    /// A tap for the relay's upstream clients (`RelayConfig::fronts`).
-    pub fn tap(self: &Arc<Hub>) -> Tap {
+    /// A tap for the relay's robots (`RelayConfig::fronts`): each is shown as its
+    /// [`RobotId`] says it (its name, else `host:port`).
+    pub fn robot_tap(self: &Arc<Hub>) -> RobotTap {
         let hub = self.clone();
-        Arc::new(move |host: &str, port: u16| {
+        Arc::new(move |robot: &RobotId| {
             let hub = hub.clone();
-            let name = format!("{host}:{port}");
+            let name = robot.to_string();
             hub.set_link(&name, Link::Connecting);
             Arc::new(move |_time: SystemTime, event: TapEvent<'_>| match event {
                 TapEvent::Opened(_) => hub.set_link(&name, Link::Connected),

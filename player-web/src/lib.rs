@@ -24,7 +24,8 @@ use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 use std::time::Duration;
 
-use player_proto::client::{Client, Tap};
+use player_proto::RobotId;
+use player_proto::client::{Client, RobotTap, Tap, unnamed};
 use player_proto::server::Commanders;
 
 use control::Control;
@@ -107,14 +108,24 @@ impl WebFront {
         self.port
     }
 
-    /// The tap to give the relay (`RelayConfig::fronts`).
-    pub fn tap(&self) -> Tap {
-        self.hub.tap()
+    /// The tap to give the relay (`RelayConfig::fronts`): robots shown by their names.
+    pub fn robot_tap(&self) -> RobotTap {
+        self.hub.robot_tap()
     }
 
-    /// Makes a relayed robot commandable from the page (by the controller only).
+    /// A tap for Player clients that know no names (pv3d's): robots shown as `host:port`.
+    pub fn tap(&self) -> Tap {
+        unnamed(self.robot_tap())
+    }
+
+    /// Makes a robot commandable from the page (by the controller only), as `host:port`.
     pub fn add_robot(&self, client: Arc<Client>) {
-        self.control.add_robot(client);
+        self.add_robot_as(RobotId::new(client.host(), client.port()), client);
+    }
+
+    /// Makes the relayed robot `id` commandable from the page (by the controller only).
+    pub fn add_robot_as(&self, id: RobotId, client: Arc<Client>) {
+        self.control.add_robot(id, client);
     }
 }
 

@@ -1,5 +1,5 @@
-//! The publishing side: a relay front ([`ZenohFront::tap`] goes in the relay's `fronts`) that
-//! puts every robot of the relay into Zenoh under `player/<site>/<host>_<port>/…` (see
+//! The publishing side: a relay front ([`ZenohFront::robot_tap`] goes in the relay's `fronts`)
+//! that puts every robot of the relay into Zenoh under `player/<site>/<robot>/…` (see
 //! [`crate::keys`]), answers the `devices` and `replies` queryables from what it saw, keeps a
 //! liveliness token per connected robot, and passes commands from the one authorised
 //! controller to the robot's upstream client.
@@ -8,8 +8,9 @@ use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard};
 
+use player_proto::RobotId;
 use player_proto::capture::Direction;
-use player_proto::client::{Client, ConnectionTap, Tap, TapEvent};
+use player_proto::client::{Client, ConnectionTap, RobotTap, Tap, TapEvent, unnamed};
 use player_proto::wire::MsgType;
 use zenoh::Session;
 use zenoh::Wait;
@@ -121,11 +122,12 @@ impl ZenohFront {
         })
     }
 
-    /// The tap to put in `RelayConfig::fronts`.
-    pub fn tap(&self) -> Tap {
+    /// The tap to put in `RelayConfig::fronts`: each robot keyed by its name where it has one
+    /// ([`RobotKey::of_robot`]).
+    pub fn robot_tap(&self) -> RobotTap {
         let shared = self.shared.clone();
-        Arc::new(move |host: &str, port: u16| -> ConnectionTap {
-            let robot = RobotKey::new(&shared.config.site, host, port);
+        Arc::new(move |robot: &RobotId| -> ConnectionTap {
+            let robot = RobotKey::of_robot(&shared.config.site, robot);
             let shared = shared.clone();
             Arc::new(move |time, event| {
                 let event = match event {
@@ -156,15 +158,31 @@ impl ZenohFront {
         })
     }
 
-    /// Lets commands reach this robot through its relay client (whose host and port name it).
+    /// The tap for Player clients that know no names: robots keyed `<host>_<port>`.
+    pub fn tap(&self) -> Tap {
+        unnamed(self.robot_tap())
+    }
+
+    /// Lets commands reach this unnamed robot through its relay client (whose host and port
+    /// name it).
     pub fn add_robot(&self, client: Arc<Client>) {
-        let robot = RobotKey::new(&self.shared.config.site, client.host(), client.port());
+        self.add_robot_as(&RobotId::new(client.host(), client.port()), client);
+    }
+
+    /// Lets commands reach the robot `id` through its relay client.
+    pub fn add_robot_as(&self, id: &RobotId, client: Arc<Client>) {
+        let robot = self.key_of(id);
         self.shared.robots().entry(robot).or_default().client = Some(client);
     }
 
-    /// The key of a robot of this front.
+    /// The key of an unnamed robot of this front.
     pub fn robot_key(&self, host: &str, port: u16) -> RobotKey {
         RobotKey::new(&self.shared.config.site, host, port)
+    }
+
+    /// The key of the robot `id` on this front.
+    pub fn key_of(&self, id: &RobotId) -> RobotKey {
+        RobotKey::of_robot(&self.shared.config.site, id)
     }
 
     /// DATA messages dropped because Zenoh could not take them fast enough.

@@ -1,7 +1,8 @@
-//! The key space. Every robot is `player/<site>/<host>_<port>`, named after the Player server
-//! the publishing relay reaches it at, so two sites never clash and a robot keeps its name
-//! across restarts (a bridge finds it again under the same key and serves it on the same
-//! port). Under it:
+//! The key space. Every robot is `player/<site>/<robot>`: its name where it has one (given on
+//! the relay's command line or by the world it simulates: see `player_proto::RobotId`), else
+//! `<host>_<port>`, named after the Player server the publishing relay reaches it at. So two
+//! sites never clash and a robot keeps its key across restarts (a bridge finds it again under
+//! the same key and serves it on the same port). Under it:
 //!
 //! | key | what |
 //! |---|---|
@@ -16,6 +17,7 @@
 
 use std::fmt;
 
+use player_proto::RobotId;
 use player_proto::wire::Interface;
 
 /// The first chunk of every key.
@@ -25,7 +27,8 @@ pub const ROOT: &str = "player";
 #[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct RobotKey {
     pub site: String,
-    /// `<host>_<port>`, with characters Zenoh keys may not hold replaced.
+    /// The robot's name, else `<host>_<port>`, with characters Zenoh keys may not hold
+    /// replaced.
     pub robot: String,
 }
 
@@ -46,10 +49,22 @@ pub fn chunk(text: &str) -> String {
 }
 
 impl RobotKey {
+    /// The key of the unnamed robot served at `host:port`.
     pub fn new(site: &str, host: &str, port: u16) -> RobotKey {
         RobotKey {
             site: chunk(site),
             robot: chunk(&format!("{host}_{port}")),
+        }
+    }
+
+    /// The key of `robot`: its name where it has one.
+    pub fn of_robot(site: &str, robot: &RobotId) -> RobotKey {
+        match robot.name() {
+            Some(name) => RobotKey {
+                site: chunk(site),
+                robot: chunk(name),
+            },
+            None => RobotKey::new(site, robot.host(), robot.port()),
         }
     }
 
@@ -164,6 +179,17 @@ mod tests {
         assert_eq!(key, "player/lab-A/10.0.0.2_6665/laser/0/data");
         assert_eq!(RobotKey::of_key(&key), Some(robot));
         assert_eq!(device_of_key(&key), Some((Interface::LASER, 0, Leaf::Data)));
+    }
+
+    #[test]
+    fn a_named_robot_is_keyed_by_its_name() {
+        let robot = RobotId::new("10.0.0.2", 6665);
+        assert_eq!(
+            RobotKey::of_robot("A", &robot),
+            RobotKey::new("A", "10.0.0.2", 6665)
+        );
+        let named = RobotKey::of_robot("A", &robot.named("r0").unwrap());
+        assert_eq!(named.alive(), "player/A/r0/alive");
     }
 
     #[test]

@@ -30,7 +30,8 @@ use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 use std::time::{SystemTime, UNIX_EPOCH};
 
-use player_proto::client::{ConnectionTap, Tap};
+use player_proto::RobotId;
+use player_proto::client::{ConnectionTap, RobotTap, Tap, unnamed};
 
 use hub::Hub;
 pub use outbox::{BACKLOG_BYTES, MESSAGE_BACKLOG};
@@ -103,15 +104,21 @@ impl FoxgloveLive {
         self.hub.topics()
     }
 
-    /// The tap to give each Player client (e.g. `RelayConfig::fronts`): everything the
-    /// servers send goes to the viewers.
-    pub fn tap(&self) -> Tap {
+    /// The tap to give the relay (`RelayConfig::fronts`): everything the robots' servers
+    /// send goes to the viewers, under topics `/<robot>/…` named as [`RobotId`] says it (its
+    /// name, else `host:port`).
+    pub fn robot_tap(&self) -> RobotTap {
         let hub = self.hub.clone();
-        Arc::new(move |host: &str, port: u16| -> ConnectionTap {
+        Arc::new(move |robot: &RobotId| -> ConnectionTap {
             let hub = hub.clone();
-            let robot = format!("{host}:{port}");
+            let robot = robot.to_string();
             Arc::new(move |time, event| hub.event(&robot, time, event))
         })
+    }
+
+    /// The tap to give Player clients that know no names: topics `/<host:port>/…`.
+    pub fn tap(&self) -> Tap {
+        unnamed(self.robot_tap())
     }
 }
 

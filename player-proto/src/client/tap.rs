@@ -8,6 +8,7 @@ use std::time::SystemTime;
 use bytes::Bytes;
 
 use crate::capture::Direction;
+use crate::robot_id::RobotId;
 use crate::wire::{Banner, Header};
 
 /// What one connection's tap is told.
@@ -31,6 +32,22 @@ pub type ConnectionTap = Arc<dyn Fn(SystemTime, TapEvent<'_>) + Send + Sync>;
 
 /// Called once per robot thread, with its host and port, for that connection's tap.
 pub type Tap = Arc<dyn Fn(&str, u16) -> ConnectionTap + Send + Sync>;
+
+/// Called once per robot with who it is (its name included, where it has one), for that
+/// robot's connection tap: how a relay hands its robots to the fronts it feeds.
+pub type RobotTap = Arc<dyn Fn(&RobotId) -> ConnectionTap + Send + Sync>;
+
+/// A client [`Tap`] from a [`RobotTap`], for clients that know no names: each robot is
+/// `host:port`.
+pub fn unnamed(tap: RobotTap) -> Tap {
+    Arc::new(move |host: &str, port: u16| tap(&RobotId::new(host, port)))
+}
+
+/// A client [`Tap`] for the one robot `id`: every connection of its client is told as `id`,
+/// whatever host and port the client reaches it at.
+pub fn for_robot(tap: RobotTap, id: RobotId) -> Tap {
+    Arc::new(move |_host: &str, _port: u16| tap(&id))
+}
 
 /// One tap that tells every one of `taps`, in order (a recorder and a web page, say); none
 /// when there are none.

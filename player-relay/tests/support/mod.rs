@@ -104,11 +104,7 @@ impl Robot {
 /// A relay in front of `robot`, served on any free port.
 pub fn relay_for(robot: &Robot, config: RelayConfig) -> (Relay, u16) {
     let relay = Relay::start(RelayConfig {
-        routes: vec![Route {
-            host: "127.0.0.1".into(),
-            port: robot.port(),
-            listen_port: 0,
-        }],
+        routes: vec![Route::loopback(robot.port())],
         upstream: quick(),
         ..config
     })

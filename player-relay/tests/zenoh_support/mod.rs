@@ -91,7 +91,7 @@ impl Site {
             .collect();
         let relay = Relay::start(RelayConfig {
             routes,
-            fronts: vec![front.tap()],
+            fronts: vec![front.robot_tap()],
             fronts_command: true,
             upstream: quick(),
             ..RelayConfig::default()

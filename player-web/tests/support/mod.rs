@@ -50,7 +50,7 @@ impl Front {
         let relay = Relay::start(RelayConfig {
             routes,
             commanders: rule,
-            fronts: vec![web.tap()],
+            fronts: vec![web.robot_tap()],
             ..RelayConfig::default()
         })
         .expect("the relay starts");

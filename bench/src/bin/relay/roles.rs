@@ -101,9 +101,8 @@ pub fn serve_relay(args: &Args) -> Result<()> {
         .iter()
         .enumerate()
         .map(|(i, &port)| Route {
-            host: "127.0.0.1".into(),
-            port,
             listen_port: args.listen.get(i).copied().unwrap_or(0),
+            ..Route::loopback(port)
         })
         .collect();
     let (web, foxglove) = if args.fronts {
@@ -114,8 +113,8 @@ pub fn serve_relay(args: &Args) -> Result<()> {
     } else {
         (None, None)
     };
-    let mut fronts: Vec<_> = web.iter().map(WebFront::tap).collect();
-    fronts.extend(foxglove.iter().map(FoxgloveLive::tap));
+    let mut fronts: Vec<_> = web.iter().map(WebFront::robot_tap).collect();
+    fronts.extend(foxglove.iter().map(FoxgloveLive::robot_tap));
     let relay = Relay::start(RelayConfig {
         routes,
         fronts,

@@ -57,7 +57,7 @@ pub fn serve_site(args: &Args) -> Result<()> {
         .collect();
     let relay = Relay::start(RelayConfig {
         routes,
-        fronts: vec![front.tap()],
+        fronts: vec![front.robot_tap()],
         ..RelayConfig::default()
     })?;
     let start = std::time::Instant::now();

@@ -1,6 +1,7 @@
 //! `player-relay ROBOT…` — serve Player robots to many observers over one connection per
 //! robot. Each ROBOT is `HOST:PORT` (observers connect to PORT + `--port-offset` on the relay)
-//! or `HOST:PORT=LISTEN`.
+//! or `HOST:PORT=LISTEN`, and may be named for the fronts: `HOST:PORT=NAME`,
+//! `HOST:PORT=LISTEN=NAME`.
 
 use std::net::IpAddr;
 use std::process::ExitCode;
@@ -9,6 +10,7 @@ use std::time::Duration;
 use anyhow::{Result, bail};
 use clap::Parser;
 use player_foxglove::live::FoxgloveLive;
+use player_proto::RobotId;
 use player_proto::server::Commanders;
 use player_relay::{DEFAULT_SEND_BUFFER, Relay, RelayConfig, Route};
 
@@ -23,9 +25,10 @@ const DEFAULT_PORT_OFFSET: u16 = 1000;
 #[derive(Parser, Debug)]
 #[command(version, about)]
 struct Cli {
-    /// Robot servers, `HOST:PORT` or `HOST:PORT=LISTEN`.
+    /// Robot servers, `HOST:PORT` or `HOST:PORT=LISTEN`; `=NAME` after either names the robot
+    /// on the web page, in Foxglove and in Zenoh (else it is `HOST:PORT` there).
     #[arg(required_unless_present_any = ["demo", "world", "from_zenoh"], value_parser = parse_robot)]
-    robots: Vec<(String, u16, Option<u16>)>,
+    robots: Vec<(RobotId, Option<u16>)>,
 
     /// Relay the demo's robots instead: stage-worlds/multirobot.world simulated in-process by
     /// player-sim on free ports (no Player server needed).
@@ -76,26 +79,30 @@ struct Cli {
     seconds: Option<f64>,
 }
 
-fn parse_robot(text: &str) -> Result<(String, u16, Option<u16>), String> {
-    let (server, listen) = match text.split_once('=') {
-        Some((server, listen)) => {
-            let listen = listen
+/// `HOST:PORT`, with `=LISTEN` (a port number) and `=NAME` (anything else) after it, either or
+/// both (`HOST:PORT=LISTEN=NAME`).
+fn parse_robot(text: &str) -> Result<(RobotId, Option<u16>), String> {
+    let mut parts = text.split('=');
+    let server = parts.next().unwrap_or_default();
+    let (mut listen, mut name) = (None, None);
+    for part in parts {
+        if !part.is_empty() && part.chars().all(|c| c.is_ascii_digit()) {
+            let port = part
                 .parse::<u16>()
-                .map_err(|_| format!("bad listen port {listen:?} in {text:?}"))?;
-            (server, Some(listen))
+                .map_err(|_| format!("bad listen port {part:?} in {text:?}"))?;
+            if listen.replace(port).is_some() {
+                return Err(format!("two listen ports in {text:?}"));
+            }
+        } else if name.replace(part).is_some() {
+            return Err(format!("two names in {text:?}"));
         }
-        None => (text, None),
-    };
-    let (host, port) = server
-        .rsplit_once(':')
-        .ok_or_else(|| format!("expected HOST:PORT[=LISTEN], got {text:?}"))?;
-    let port = port
-        .parse::<u16>()
-        .map_err(|_| format!("bad port {port:?} in {text:?}"))?;
-    if host.is_empty() {
-        return Err(format!("no host in {text:?}"));
     }
-    Ok((host.to_string(), port, listen))
+    let robot = server.parse::<RobotId>().map_err(|e| e.to_string())?;
+    let robot = match name {
+        Some(name) => robot.named(name).map_err(|e| e.to_string())?,
+        None => robot,
+    };
+    Ok((robot, listen))
 }
 
 fn main() -> ExitCode {
@@ -115,28 +122,21 @@ fn run(cli: Cli) -> Result<()> {
     let mut robots = cli.robots;
     if let Some(demo) = &demo {
         // The demo's ports are wherever the system put them: observers get free ports too.
-        robots = demo
-            .ports
-            .iter()
-            .map(|&(_, port)| ("127.0.0.1".to_string(), port, Some(0)))
-            .collect();
+        robots = demo.robots.iter().map(|id| (id.clone(), Some(0))).collect();
     }
     let mut routes = Vec::new();
-    for (host, port, listen) in robots {
+    for (robot, listen) in robots {
         let listen_port = match listen {
             Some(listen) => listen,
-            None => port.checked_add(cli.port_offset).ok_or_else(|| {
+            None => robot.port().checked_add(cli.port_offset).ok_or_else(|| {
                 anyhow::anyhow!(
-                    "{host}:{port} + --port-offset {} is past the last port",
+                    "{} + --port-offset {} is past the last port",
+                    robot.server(),
                     cli.port_offset
                 )
             })?,
         };
-        routes.push(Route {
-            host,
-            port,
-            listen_port,
-        });
+        routes.push(Route { robot, listen_port });
     }
     let commanders = match (cli.controller, cli.first_to_command) {
         (Some(ip), _) => Commanders::Address(ip),
@@ -147,8 +147,10 @@ fn run(cli: Cli) -> Result<()> {
     player_relay::check_listen_ports(cli.bind, &routes)?;
     for route in routes.iter().filter(|r| r.listen_port != 0) {
         eprintln!(
-            "{}:{} → {}:{}",
-            route.host, route.port, cli.bind, route.listen_port
+            "{} → {}:{}",
+            said(&route.robot),
+            cli.bind,
+            route.listen_port
         );
     }
     let mut fronts = Vec::new();
@@ -157,7 +159,7 @@ fn run(cli: Cli) -> Result<()> {
         Some(port) => {
             let live = FoxgloveLive::start(cli.bind, port)?;
             eprintln!("Foxglove WebSocket → ws://{}:{}", cli.bind, live.port());
-            fronts.push(live.tap());
+            fronts.push(live.robot_tap());
             Some(live)
         }
         None => None,
@@ -166,14 +168,14 @@ fn run(cli: Cli) -> Result<()> {
         Some(port) => {
             let web = player_web::WebFront::start(cli.bind, port, commanders)?;
             eprintln!("web page: http://{}:{}/", cli.bind, web.port());
-            fronts.push(web.tap());
+            fronts.push(web.robot_tap());
             Some(web)
         }
         None => None,
     };
     let zenoh = cli.zenoh.start(cli.bind, commanders)?;
     if let Some(front) = &zenoh.front {
-        fronts.push(front.tap());
+        fronts.push(front.robot_tap());
     }
     // With --from-zenoh alone there is nothing to relay from here.
     let relay = match routes.is_empty() && zenoh.bridge.is_some() {
@@ -191,7 +193,7 @@ fn run(cli: Cli) -> Result<()> {
     let robots = relay.as_ref().map_or(&[][..], Relay::robots);
     if let Some(web) = &web {
         for robot in robots {
-            web.add_robot(robot.upstream().clone());
+            web.add_robot_as(robot.id().clone(), robot.upstream().clone());
         }
     }
     if let Some(relay) = &relay {
@@ -200,14 +202,8 @@ fn run(cli: Cli) -> Result<()> {
     if let Some(relay) = relay.as_ref().filter(|_| demo.is_some()) {
         relay.wait_serving(Duration::from_secs(5));
         for robot in relay.robots() {
-            let upstream = robot.upstream();
             if let Some(port) = robot.listen_port() {
-                eprintln!(
-                    "{}:{} → {}:{port}",
-                    upstream.host(),
-                    upstream.port(),
-                    cli.bind
-                );
+                eprintln!("{} → {}:{port}", said(robot.id()), cli.bind);
             }
         }
     }
@@ -224,4 +220,36 @@ fn run(cli: Cli) -> Result<()> {
     drop(demo);
     drop(foxglove);
     Ok(())
+}
+
+/// `HOST:PORT`, or `NAME (HOST:PORT)` for a named robot.
+fn said(robot: &RobotId) -> String {
+    match robot.name() {
+        Some(name) => format!("{name} ({})", robot.server()),
+        None => robot.server(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_robot;
+
+    #[test]
+    fn a_robot_may_be_given_a_listen_port_a_name_or_both() {
+        let parsed = |text| parse_robot(text).map(|(id, listen)| (id.to_string(), listen));
+        assert_eq!(parsed("h:6665"), Ok(("h:6665".into(), None)));
+        assert_eq!(parsed("h:6665=7000"), Ok(("h:6665".into(), Some(7000))));
+        assert_eq!(parsed("h:6665=r0"), Ok(("r0".into(), None)));
+        assert_eq!(parsed("h:6665=7000=r0"), Ok(("r0".into(), Some(7000))));
+        assert_eq!(parsed("h:6665=r0=7000"), Ok(("r0".into(), Some(7000))));
+        for wrong in [
+            "h:6665=1=2",
+            "h:6665=a=b",
+            "h:6665=99999",
+            "h",
+            "h:6665=a b",
+        ] {
+            assert!(parse_robot(wrong).is_err(), "{wrong}");
+        }
+    }
 }

@@ -128,7 +128,7 @@ impl Zenoh {
     pub fn add_robots(&self, relay: &Relay) {
         if let Some(front) = &self.front {
             for robot in relay.robots() {
-                front.add_robot(robot.upstream().clone());
+                front.add_robot_as(robot.id(), robot.upstream().clone());
             }
         }
     }

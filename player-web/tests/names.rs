@@ -1,0 +1,76 @@
+//! The page names a robot as the relay was told to (`HOST:PORT=NAME`, a world's model), and
+//! its commands reach the robot by that name.
+
+mod support;
+
+use std::time::Duration;
+
+use futures_util::{SinkExt, StreamExt};
+use player_proto::RobotId;
+use player_proto::server::Commanders;
+use player_relay::{Relay, RelayConfig, Route};
+use player_web::WebFront;
+use serde_json::{Value, json};
+use support::{LOCALHOST, serve_world};
+use tokio_tungstenite::tungstenite::Message;
+
+#[test]
+fn rows_and_commands_use_the_robots_names() {
+    let running = serve_world("simple.world", None);
+    let web = WebFront::start(LOCALHOST, 0, Commanders::Everyone).expect("the page is served");
+    let port = running.ports[0].1;
+    let robot = RobotId::new("127.0.0.1", port).named("scout").unwrap();
+    let relay = Relay::start(RelayConfig {
+        routes: vec![Route {
+            robot: robot.clone(),
+            listen_port: 0,
+        }],
+        commanders: Commanders::Everyone,
+        fronts: vec![web.robot_tap()],
+        ..RelayConfig::default()
+    })
+    .expect("the relay starts");
+    for robot in relay.robots() {
+        web.add_robot_as(robot.id().clone(), robot.upstream().clone());
+    }
+    let runtime = tokio::runtime::Builder::new_current_thread()
+        .enable_all()
+        .build()
+        .unwrap();
+    let (rows, refusals) = runtime.block_on(async {
+        let url = format!("ws://127.0.0.1:{}/ws", web.port());
+        let (mut page, _) = tokio_tungstenite::connect_async(url).await.unwrap();
+        let stop = |robot: &str| {
+            let command = json!({"type": "velocity", "robot": robot, "device": "position2d:0",
+                "command": {"vel": {"px": 0, "py": 0, "pa": 0}, "state": 1}});
+            Message::Text(command.to_string().into())
+        };
+        // One command by the name, one by the server: only the second is refused.
+        page.send(stop("scout")).await.unwrap();
+        page.send(stop(&robot.server())).await.unwrap();
+        let mut refusals = Vec::new();
+        loop {
+            let next = tokio::time::timeout(Duration::from_secs(10), page.next()).await;
+            let Ok(Some(Ok(Message::Text(text)))) = next else {
+                panic!("the page's socket gave no status frame: {next:?}");
+            };
+            let value: Value = serde_json::from_str(&text).unwrap();
+            match value["type"].as_str() {
+                Some("refused") => refusals.push(value["why"].to_string()),
+                Some("status") if refusals.len() == 1 => break (value["rows"].clone(), refusals),
+                _ => {}
+            }
+        }
+    });
+    let names: Vec<&str> = rows
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|row| row["robot"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["scout"]);
+    assert!(
+        refusals[0].contains(&robot.server()),
+        "a robot is no longer known by its server: {refusals:?}"
+    );
+}
