@@ -24,7 +24,7 @@ use std::io::{Read, Seek, Write};
 use player_proto::recording::{ReadError, RecordingReader, RecordingWriter, WriteError};
 
 pub use reader::{McapReadError, McapRecords};
-pub use sink::{RecordError, recorder};
+pub use sink::{RecordError, recorder, reproducible_recorder};
 pub use writer::{McapOptions, McapRecordWriter, McapWriteError};
 
 /// The conventional file extension of an MCAP file.

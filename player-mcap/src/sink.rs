@@ -37,6 +37,18 @@ pub enum RecordError {
 
 /// A recorder writing to `path`: MCAP when it is named `*.mcap`, else a `.prec`.
 pub fn recorder(path: &Path) -> Result<Recorder, RecordError> {
+    recorder_chunked(path, Some(CHUNK_AT_MOST))
+}
+
+/// A recorder for records on a clock of their own (a lockstep simulation's): an MCAP file's
+/// chunks end only when full, not a second after the last, so that the same records make the
+/// same bytes however fast they came.
+pub fn reproducible_recorder(path: &Path) -> Result<Recorder, RecordError> {
+    recorder_chunked(path, None)
+}
+
+/// A recorder whose MCAP chunks also end `chunk_at_most` after the last one, if given.
+fn recorder_chunked(path: &Path, chunk_at_most: Option<Duration>) -> Result<Recorder, RecordError> {
     let mcap = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case(EXTENSION));
@@ -62,6 +74,7 @@ pub fn recorder(path: &Path) -> Result<Recorder, RecordError> {
     Ok(Recorder::to_sink(McapSink {
         writer: Some(writer),
         chunk_started: Instant::now(),
+        chunk_at_most,
         length,
     })?)
 }
@@ -71,6 +84,8 @@ pub struct McapSink {
     /// `None` once finished.
     writer: Option<McapRecordWriter<Counted<BufWriter<File>>>>,
     chunk_started: Instant,
+    /// How long a chunk may stay open while nothing arrives (`None`: until it is full).
+    chunk_at_most: Option<Duration>,
     /// The file's length so far, kept by its writer.
     length: Arc<AtomicU64>,
 }
@@ -91,7 +106,10 @@ impl RecordSink for McapSink {
     }
 
     fn flush(&mut self) -> Result<(), McapWriteError> {
-        if self.chunk_started.elapsed() >= CHUNK_AT_MOST {
+        if self
+            .chunk_at_most
+            .is_some_and(|most| self.chunk_started.elapsed() >= most)
+        {
             self.chunk_started = Instant::now();
             self.writer().flush()?;
         }

@@ -169,13 +169,20 @@ fn run(cli: Cli) -> Result<()> {
         "{robots} robots, {} devices",
         devices.len()
     );
+    // A lockstep run's recording is the same bytes every time: its MCAP chunks end when full,
+    // not after a second of wall-clock time.
     let recorder = match &cli.record {
-        Some(path) => Some(
-            player_mcap::recorder(path)
-                .with_context(|| format!("recording to {}", path.display()))?,
-        ),
+        Some(path) if cli.lockstep => Some(player_mcap::reproducible_recorder(path)),
+        Some(path) => Some(player_mcap::recorder(path)),
         None => None,
-    };
+    }
+    .transpose()
+    .with_context(|| {
+        format!(
+            "recording to {}",
+            cli.record.as_deref().unwrap_or(Path::new("")).display()
+        )
+    })?;
     let options = ServeOptions {
         bind: cli.bind,
         speedup,

@@ -39,6 +39,8 @@ enum Turn {
 struct Turns {
     /// Steps taken so far.
     step: u64,
+    /// Whether any connection has commanded.
+    ever_driven: bool,
     /// By connection ([`super::Peer::id`]).
     drivers: BTreeMap<u64, Turn>,
     /// Steps that may go without waiting for anyone ([`Lockstep::release`]).
@@ -94,6 +96,7 @@ impl Lockstep {
             patience,
             turns: Mutex::new(Turns {
                 step: 0,
+                ever_driven: false,
                 drivers: BTreeMap::new(),
                 released: 0,
                 waiting_since: Instant::now(),
@@ -111,6 +114,11 @@ impl Lockstep {
     /// Steps taken so far.
     pub fn steps(&self) -> u64 {
         self.lock().step
+    }
+
+    /// Whether any connection has commanded since the simulation started.
+    pub fn ever_driven(&self) -> bool {
+        self.lock().ever_driven
     }
 
     /// Waits (asynchronously) until connection `peer` may command: at once, unless it already
@@ -135,6 +143,7 @@ impl Lockstep {
     pub fn commanded(&self, peer: u64) {
         let mut turns = self.lock();
         turns.drivers.insert(peer, Turn::Answered);
+        turns.ever_driven = true;
         if turns.running_alone {
             turns.running_alone = false;
             tracing::info!("lockstep: a driver arrived; each step waits for its command");
