@@ -33,6 +33,7 @@ pub mod downstream;
 mod relayed_device;
 pub mod robot;
 mod survey;
+pub mod world;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr, TcpListener};
 use std::time::{Duration, Instant};

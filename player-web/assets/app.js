@@ -5,7 +5,7 @@
 
 const canvas = document.getElementById("view");
 const ctx = canvas.getContext("2d");
-const robots = new Map(); // "host:port" -> robot
+const robots = new Map(); // the robot's name (else "host:port") -> robot
 let controller = false;
 let selected = null; // { robot, index }
 let socket = null;
@@ -40,6 +40,9 @@ function onMessage(m) {
     }
     case "message":
       onPlayer(robotOf(m.robot), m);
+      break;
+    case "world":
+      setWalls(m.walls);
       break;
     case "status":
       showRows(m.rows);
@@ -161,6 +164,7 @@ function draw() {
   ctx.clearRect(0, 0, canvas.width, canvas.height);
   worldTransform();
   ctx.imageSmoothingEnabled = false;
+  drawWalls();
   for (const robot of robots.values()) {
     for (const { info, grid } of robot.maps.values()) {
       ctx.save();
@@ -171,6 +175,7 @@ function draw() {
   }
   drawGrid();
   for (const [name, robot] of robots) drawRobot(name, robot);
+  drawLabels();
 }
 
 function drawGrid() {
@@ -309,7 +314,8 @@ function cross(x, y, r, colour) {
   ctx.stroke();
 }
 
-// The view frames the maps when there are any, else every robot, until someone moves it.
+// The view frames the maps and walls when there are any, else every robot, until someone
+// moves it.
 function frame() {
   let box = null;
   const grow = (x, y) => {
@@ -321,6 +327,7 @@ function frame() {
       grow(info.origin.px + info.width * info.scale, info.origin.py + info.height * info.scale);
     }
   }
+  growByWalls(grow);
   const mapBox = box;
   if (!box) for (const robot of robots.values()) for (const { d } of bases(robot)) grow(d.State.pos.px, d.State.pos.py);
   if (!box || canvas.width === 0) return;
@@ -521,6 +528,8 @@ function connect() {
 window.playerWeb = {
   robots,
   view,
+  labels,
+  get walls() { return walls; },
   get selected() { return selected; },
   get controller() { return controller; },
   screenOf(robot, index) {

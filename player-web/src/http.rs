@@ -1,4 +1,4 @@
-//! The page's HTTP side: the page and its two assets, compiled into the binary (a classroom
+//! The page's HTTP side: the page and its assets, compiled into the binary (a classroom
 //! may have no internet, so nothing comes from a CDN), and the WebSocket upgrade.
 
 use std::net::SocketAddr;
@@ -25,6 +25,7 @@ const MAX_WRITE_BUFFER: usize = 2 * 1024 * 1024;
 
 const INDEX: &str = include_str!("../assets/index.html");
 const SCRIPT: &str = include_str!("../assets/app.js");
+const WORLD_SCRIPT: &str = include_str!("../assets/world.js");
 const STYLE: &str = include_str!("../assets/style.css");
 
 #[derive(Clone)]
@@ -33,7 +34,7 @@ struct Shared {
     control: Arc<Control>,
 }
 
-/// The routes: `/` (the page), `/app.js`, `/style.css`, `/ws` (the live socket).
+/// The routes: `/` (the page), `/app.js`, `/world.js`, `/style.css`, `/ws` (the live socket).
 pub fn router(hub: Arc<Hub>, control: Arc<Control>) -> Router {
     Router::new()
         .route(
@@ -43,6 +44,10 @@ pub fn router(hub: Arc<Hub>, control: Arc<Control>) -> Router {
         .route(
             "/app.js",
             get(|| async { asset("text/javascript; charset=utf-8", SCRIPT) }),
+        )
+        .route(
+            "/world.js",
+            get(|| async { asset("text/javascript; charset=utf-8", WORLD_SCRIPT) }),
         )
         .route(
             "/style.css",

@@ -16,6 +16,7 @@ use player_proto::wire::{DevAddr, Header, Interface, MsgType};
 use tokio::sync::broadcast;
 
 use crate::page::{DeviceRow, Kind, Link, Row, ToPage};
+use crate::walls::Walls;
 
 /// Frames a page may fall behind before it is sent the newest of everything instead: about
 /// a second of 16 robots' data.
@@ -56,6 +57,8 @@ struct Rate {
 
 pub struct Hub {
     robots: Mutex<BTreeMap<String, Robot>>,
+    /// The world's walls, as a frame, once known.
+    world: Mutex<Option<Frame>>,
     live: broadcast::Sender<Frame>,
     status_at: Mutex<Instant>,
 }
@@ -64,6 +67,7 @@ impl Default for Hub {
     fn default() -> Hub {
         Hub {
             robots: Mutex::new(BTreeMap::new()),
+            world: Mutex::new(None),
             live: broadcast::channel(BROADCAST_DEPTH).0,
             status_at: Mutex::new(Instant::now()),
         }
@@ -97,16 +101,26 @@ impl Hub {
         })
     }
 
+    /// Shows `walls` under the robots, on every page from now on (and those open).
+    pub fn set_walls(&self, walls: &Walls) {
+        let frame = to_json(&ToPage::World { walls });
+        *self.world.lock().unwrap_or_else(|e| e.into_inner()) = Some(frame.clone());
+        let _ = self.live.send(frame);
+    }
+
     /// Every new frame, from now on.
     pub fn subscribe(&self) -> broadcast::Receiver<Frame> {
         self.live.subscribe()
     }
 
-    /// What a page that opens now is sent first: every robot's link, then the newest of
-    /// everything, then the rows.
+    /// What a page that opens now is sent first: the world's walls, every robot's link,
+    /// then the newest of everything, then the rows.
     pub fn snapshot(&self) -> Vec<Frame> {
+        let mut frames: Vec<Frame> = (self.world.lock().unwrap_or_else(|e| e.into_inner()))
+            .iter()
+            .cloned()
+            .collect();
         let robots = self.robots();
-        let mut frames = Vec::new();
         for (name, robot) in robots.iter() {
             frames.push(to_json(&ToPage::Robot {
                 robot: name,

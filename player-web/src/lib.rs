@@ -12,13 +12,15 @@
 //! * [`socket`] — one task per page: a page that falls behind gets the newest of everything
 //!   instead of a backlog; one that stops reading is closed after [`socket::SEND_TIMEOUT`];
 //! * [`control`] — the same command rule as the relay's Player ports, and a dead-man stop;
-//! * [`http`] — the page, its script and style, compiled in (no CDN, no internet needed).
+//! * [`http`] — the page, its script and style, compiled in (no CDN, no internet needed);
+//! * [`walls`] — the world's walls, where the relay knows them (the world it simulates).
 
 pub mod control;
 pub mod http;
 pub mod hub;
 pub mod page;
 pub mod socket;
+pub mod walls;
 
 use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
@@ -116,6 +118,11 @@ impl WebFront {
     /// A tap for Player clients that know no names (pv3d's): robots shown as `host:port`.
     pub fn tap(&self) -> Tap {
         unnamed(self.robot_tap())
+    }
+
+    /// Draws `walls` (the world's, where the relay knows them) under the robots.
+    pub fn set_walls(&self, walls: &walls::Walls) {
+        self.hub.set_walls(walls);
     }
 
     /// Makes a robot commandable from the page (by the controller only), as `host:port`.

@@ -27,6 +27,8 @@ pub enum ToPage<'a> {
     Hello { controller: bool, rule: String },
     /// A robot's connection changed.
     Robot { robot: &'a str, link: &'a Link },
+    /// The walls of the world the robots are in, where the relay knows them.
+    World { walls: &'a crate::walls::Walls },
     /// A message a robot's server sent: data, or a reply that describes a device.
     Message {
         robot: &'a str,

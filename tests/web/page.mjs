@@ -1,7 +1,8 @@
 // Drives the relay's web page in Debian's Chromium, headless, through Playwright, and prints
 // what it saw as one line of JSON for the Rust test that started the robots to check.
 //
-//   node page.mjs draw    URL OUT.png                 robots' poses on the page and the colour under each
+//   node page.mjs draw    URL OUT.png                 robots' poses on the page and the colour under each,
+//                                                     the names written, the world's walls and their colour
 //
 // VIEWPORT=WIDTHxHEIGHT sets the window (1200x750 by default; 390x844 is a phone).
 //   node page.mjs follow  URL ROBOT SECONDS           the page's pose of ROBOT, sampled
@@ -71,7 +72,22 @@ async function draw(page, out) {
     const r = (id) => { const b = document.querySelector(id).getBoundingClientRect(); return [b.left, b.top, b.width, b.height]; };
     return { view: r("#view"), rows: r("#rows"), rowCount: document.querySelectorAll("#rows tbody tr").length };
   });
-  return { robots, layout };
+  // The walls the page was sent, and the colour drawn at the middle of the largest ones.
+  const walls = await page.evaluate(() => {
+    const w = window.playerWeb;
+    if (!w.walls) return null;
+    const ctx = document.getElementById("view").getContext("2d");
+    const ratio = window.devicePixelRatio || 1;
+    const area = (r) => (r[2] - r[0]) * (r[3] - r[1]);
+    const largest = [...w.walls.rects].sort((a, b) => area(b) - area(a)).slice(0, 8);
+    const pixels = largest.map((r) => {
+      const [sx, sy] = w.worldToCss((r[0] + r[2]) / 2, (r[1] + r[3]) / 2);
+      return [...ctx.getImageData(Math.round(sx * ratio), Math.round(sy * ratio), 1, 1).data].slice(0, 3);
+    });
+    return { rects: w.walls.rects.length, polygons: w.walls.polygons.length, pixels };
+  });
+  const labels = await page.evaluate(() => window.playerWeb.labels.map((l) => l.name));
+  return { robots, layout, walls, labels };
 }
 
 async function follow(page, robot, seconds) {

@@ -8,9 +8,11 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
+use player_proto::RobotId;
 use player_proto::server::Commanders;
 use player_relay::{Relay, RelayConfig, Route};
 use player_sim::serve::{Running, ServeOptions, serve_world_file};
+use player_sim::world::World;
 use player_web::WebFront;
 
 pub const LOCALHOST: IpAddr = IpAddr::V4(Ipv4Addr::LOCALHOST);
@@ -47,6 +49,32 @@ impl Front {
             .iter()
             .map(|&(_, port)| Route::loopback(port))
             .collect();
+        Front::relay(running, web, routes, rule)
+    }
+
+    /// As `player-relay --world WORLD --web` shows `running` (WORLD from stage-worlds/):
+    /// each robot named after its model, the world's walls drawn.
+    pub fn start_as_world(running: &Running, world: &str, rule: Commanders) -> Front {
+        let path = repo_root().join("stage-worlds").join(world);
+        let loaded = World::load(&path).expect("the world loads");
+        let names = player_relay::world::names(&path, &loaded).expect("its .cfg reads");
+        let web = WebFront::start(LOCALHOST, 0, rule).expect("the page is served");
+        web.set_walls(&player_relay::world::walls(&loaded));
+        let routes = running
+            .ports
+            .iter()
+            .map(|&(configured, port)| Route {
+                robot: match names.get(&configured) {
+                    Some(name) => RobotId::new("127.0.0.1", port).named(name).unwrap(),
+                    None => RobotId::new("127.0.0.1", port),
+                },
+                listen_port: 0,
+            })
+            .collect();
+        Front::relay(running, web, routes, rule)
+    }
+
+    fn relay(running: &Running, web: WebFront, routes: Vec<Route>, rule: Commanders) -> Front {
         let relay = Relay::start(RelayConfig {
             routes,
             commanders: rule,
@@ -55,7 +83,7 @@ impl Front {
         })
         .expect("the relay starts");
         for robot in relay.robots() {
-            web.add_robot(robot.upstream().clone());
+            web.add_robot_as(robot.id().clone(), robot.upstream().clone());
         }
         assert_eq!(
             relay.wait_serving(Duration::from_secs(10)),

@@ -1,19 +1,20 @@
 //! `player-relay --demo` and `--world FILE`: a world served in-process, so that one command
 //! shows robots in a browser (`--web`), in Foxglove or in Zenoh with nothing else running.
 
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 use player_proto::RobotId;
 use player_sim::serve::{Running, ServeOptions, serve_world_file};
-use player_sim::served::{Source, devices_beside};
 use player_sim::world::World;
 
 /// A world served in-process, and its robots as the fronts name them.
 pub struct Demo {
-    /// One per served port, named after the world's model served there (see [`names`]).
+    /// One per served port, named after the world's model served there
+    /// (`player_relay::world::names`).
     pub robots: Vec<RobotId>,
+    /// The world as its file gave it (its walls for the web page).
+    pub world: World,
     /// Serves until dropped.
     _running: Running,
 }
@@ -49,7 +50,9 @@ pub fn serve(path: &Path) -> Result<Demo> {
         running.ports.len(),
         path.display()
     );
-    let names = names(path)?;
+    let world = World::load(path).with_context(|| format!("reading {}", path.display()))?;
+    let names = player_relay::world::names(path, &world)
+        .with_context(|| format!("reading the .cfg beside {}", path.display()))?;
     let robots = running
         .ports
         .iter()
@@ -66,33 +69,7 @@ pub fn serve(path: &Path) -> Result<Demo> {
         .collect();
     Ok(Demo {
         robots,
+        world,
         _running: running,
     })
-}
-
-/// The name of the one model whose base (`position2d`) each configured port serves first; a
-/// port serving several bases (Stage's one-port worlds) or none of its own (a map, navigation
-/// drivers reaching a base through `passthrough`, listed after the base's own .cfg) gives no
-/// name: those robots are their servers.
-fn names(path: &Path) -> Result<BTreeMap<u16, String>> {
-    let world = World::load(path).with_context(|| format!("reading {}", path.display()))?;
-    let devices = devices_beside(path, &world, &mut Vec::new())
-        .with_context(|| format!("reading the .cfg beside {}", path.display()))?;
-    let mut home: BTreeMap<usize, u16> = BTreeMap::new();
-    for device in &devices {
-        if let Source::Position { robot } = device.source {
-            home.entry(robot).or_insert(device.port);
-        }
-    }
-    let mut bases: BTreeMap<u16, Vec<usize>> = BTreeMap::new();
-    for (robot, port) in home {
-        bases.entry(port).or_default().push(robot);
-    }
-    Ok(bases
-        .into_iter()
-        .filter_map(|(port, robots)| match robots.as_slice() {
-            [robot] => Some((port, world.robots.get(*robot)?.name.clone())),
-            _ => None,
-        })
-        .collect())
 }

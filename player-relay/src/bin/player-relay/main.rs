@@ -167,6 +167,9 @@ fn run(cli: Cli) -> Result<()> {
     let web = match cli.web {
         Some(port) => {
             let web = player_web::WebFront::start(cli.bind, port, commanders)?;
+            if let Some(demo) = &demo {
+                web.set_walls(&player_relay::world::walls(&demo.world));
+            }
             eprintln!("web page: http://{}:{}/", cli.bind, web.port());
             fronts.push(web.robot_tap());
             Some(web)
