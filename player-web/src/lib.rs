@@ -10,7 +10,8 @@
 //!   player-proto's own types ([`page`]), kept newest-per-device for pages that open later
 //!   and broadcast to those open;
 //! * [`socket`] — one task per page: a page that falls behind gets the newest of everything
-//!   instead of a backlog; one that stops reading is closed after [`socket::SEND_TIMEOUT`];
+//!   instead of a backlog; one that stops reading is closed after
+//!   [`player_front::STALLED_AFTER`], as every front's viewers are;
 //! * [`control`] — the same command rule as the relay's Player ports, and a dead-man stop;
 //! * [`http`] — the page, its script and style, compiled in (no CDN, no internet needed);
 //! * [`walls`] — the world's walls, where the relay knows them (the world it simulates).
@@ -67,7 +68,7 @@ impl WebFront {
             .build()
             .map_err(WebError::Runtime)?;
         let addr = SocketAddr::new(bind, port);
-        let listener = listen(addr)
+        let listener = player_front::socket::listen(addr, PAGE_SEND_BUFFER)
             .and_then(|std| {
                 let _entered = runtime.enter();
                 tokio::net::TcpListener::from_std(std)
@@ -136,22 +137,9 @@ impl WebFront {
     }
 }
 
-/// A listener whose connections start with a small kernel send buffer (Linux hands the
-/// listener's to each accepted socket): a page that stops reading fills it in a moment and is
-/// closed (see [`socket::SEND_TIMEOUT`]) instead of holding megabytes of stale frames.
-fn listen(addr: SocketAddr) -> std::io::Result<std::net::TcpListener> {
-    use socket2::{Domain, Socket, Type};
-    let socket = Socket::new(Domain::for_address(addr), Type::STREAM, None)?;
-    socket.set_reuse_address(true)?;
-    socket.set_send_buffer_size(PAGE_SEND_BUFFER)?;
-    socket.bind(&addr.into())?;
-    // Hundreds of pages may open at once (a class told the address at the same moment).
-    socket.listen(1024)?;
-    socket.set_nonblocking(true)?;
-    Ok(socket.into())
-}
-
-/// Kernel send buffer per page: a few frames of a few robots.
+/// Kernel send buffer per page: a few frames of a few robots. A page that stops reading
+/// fills it in a moment and is closed (see [`player_front::STALLED_AFTER`]) instead of
+/// holding megabytes of stale frames.
 pub const PAGE_SEND_BUFFER: usize = 64 * 1024;
 
 impl Drop for WebFront {

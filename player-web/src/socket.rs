@@ -1,29 +1,21 @@
 //! One page's WebSocket: the newest of everything first, then every new frame as it comes;
 //! the page's commands checked and carried out. A page that falls behind is sent the newest
-//! of everything again rather than a backlog; one that stops reading altogether is closed,
-//! and nobody else waits for it.
+//! of everything again rather than a backlog; one that stops reading altogether is closed
+//! after [`player_front::STALLED_AFTER`] (every front's rule, `player_front::socket`), and
+//! nobody else waits for it.
 
 use std::net::SocketAddr;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::time::Duration;
 
-use axum::extract::ws::{CloseFrame, Message, Utf8Bytes, WebSocket};
-use futures_util::{SinkExt, StreamExt};
+use axum::extract::ws::{Message, WebSocket};
+use futures_util::StreamExt;
+use player_front::socket::{CloseCode, Out, SendError, close, send_within};
 use tokio::sync::broadcast::error::{RecvError, TryRecvError};
 
 use crate::control::{Control, DEAD_MAN, Driven, peer};
 use crate::hub::{Hub, to_json};
 use crate::page::{FromPage, ToPage};
-
-/// How long one frame may take to leave: a page that reads nothing for this long is closed.
-pub const SEND_TIMEOUT: Duration = Duration::from_secs(5);
-
-/// WebSocket close codes: 1002 protocol error, 1008 policy violation (a page that is not
-/// reading), 1009 message too big.
-const CLOSE_PROTOCOL: u16 = 1002;
-const CLOSE_POLICY: u16 = 1008;
-const CLOSE_TOO_BIG: u16 = 1009;
 
 /// The most frames written at once.
 const BATCH: usize = 64;
@@ -43,7 +35,7 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
     let mut dead_man = tokio::time::interval(DEAD_MAN / 2);
     let why = 'serve: {
         if let Err(why) = send_all(&mut out, first).await {
-            break 'serve why;
+            break 'serve why.to_string();
         }
         loop {
             tokio::select! {
@@ -63,7 +55,7 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
                         }
                     }
                     if let Err(why) = send_all(&mut out, frames).await {
-                        break 'serve why;
+                        break 'serve why.to_string();
                     }
                 }
                 message = incoming.next() => {
@@ -77,7 +69,7 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
                         Some(Ok(Message::Close(_))) | None => break 'serve "the page closed".to_string(),
                         Some(Err(e)) => {
                             let why = format!("the socket failed: {e}");
-                            close(&mut out, close_code(&e), &why).await;
+                            close(&mut out, CloseCode::of_error(&e), &why).await;
                             break 'serve why;
                         }
                     };
@@ -99,61 +91,14 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
     control.left(page);
 }
 
-type Out = futures_util::stream::SplitSink<WebSocket, Message>;
-
-async fn send(out: &mut Out, frame: crate::hub::Frame) -> Result<(), String> {
+async fn send(out: &mut Out, frame: crate::hub::Frame) -> Result<(), SendError> {
     send_all(out, vec![frame]).await
 }
 
-/// Writes `frames` and flushes them, all within [`SEND_TIMEOUT`]; a page that takes longer
-/// is not reading, and is closed.
-async fn send_all(out: &mut Out, frames: Vec<crate::hub::Frame>) -> Result<(), String> {
-    let write = async {
-        for frame in frames {
-            out.feed(Message::Text(frame)).await?;
-        }
-        out.flush().await
-    };
-    match tokio::time::timeout(SEND_TIMEOUT, write).await {
-        Ok(Ok(())) => Ok(()),
-        Ok(Err(e)) => Err(format!("cannot send: {e}")),
-        Err(_) => {
-            let reason = format!("not reading for {} s", SEND_TIMEOUT.as_secs());
-            close(out, CLOSE_POLICY, &reason).await;
-            Err(reason)
-        }
-    }
-}
-
-/// Says why the socket closes, best effort: a page that is not reading may not get it either.
-async fn close(out: &mut Out, code: u16, why: &str) {
-    // A close frame's reason is at most 123 bytes.
-    let reason: String = why
-        .chars()
-        .scan(0, |len, c| {
-            *len += c.len_utf8();
-            (*len <= 123).then_some(c)
-        })
-        .collect();
-    let frame = CloseFrame {
-        code,
-        reason: Utf8Bytes::from(reason),
-    };
-    let _ = tokio::time::timeout(
-        Duration::from_millis(100),
-        out.send(Message::Close(Some(frame))),
-    )
-    .await;
-}
-
-/// 1009 (message too big) for a frame over the limit, else 1002 (protocol error).
-fn close_code(error: &axum::Error) -> u16 {
-    let text = error.to_string();
-    if text.contains("too long") || text.contains("too big") || text.contains("Space limit") {
-        CLOSE_TOO_BIG
-    } else {
-        CLOSE_PROTOCOL
-    }
+/// Writes `frames` and flushes them, all within [`player_front::STALLED_AFTER`]; a page that
+/// takes longer is not reading, and is closed.
+async fn send_all(out: &mut Out, frames: Vec<crate::hub::Frame>) -> Result<(), SendError> {
+    send_within(out, frames.into_iter().map(Message::Text)).await
 }
 
 async fn refuse(out: &mut Out, why: &str) {

@@ -72,15 +72,8 @@ async fn upgrade(
     upgrade.on_upgrade(move |socket| serve_viewer(socket, from, shared.hub, shared.session_id))
 }
 
-/// A listener whose connections start with a small kernel send buffer (Linux hands the
-/// listener's to each accepted socket), for hundreds of viewers connecting at once.
+/// A listener whose connections start with a small kernel send buffer
+/// ([`VIEWER_SEND_BUFFER`]), for hundreds of viewers connecting at once.
 pub fn listen(addr: SocketAddr) -> std::io::Result<std::net::TcpListener> {
-    use socket2::{Domain, Socket, Type};
-    let socket = Socket::new(Domain::for_address(addr), Type::STREAM, None)?;
-    socket.set_reuse_address(true)?;
-    socket.set_send_buffer_size(VIEWER_SEND_BUFFER)?;
-    socket.bind(&addr.into())?;
-    socket.listen(1024)?;
-    socket.set_nonblocking(true)?;
-    Ok(socket.into())
+    player_front::socket::listen(addr, VIEWER_SEND_BUFFER)
 }

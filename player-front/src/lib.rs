@@ -1,0 +1,16 @@
+//! # player-front: what every front of the relay shares
+//!
+//! The relay carries robots to fronts that are not Player clients: the web page
+//! (`player-web`), Foxglove (`player-foxglove`'s `live`), Zenoh (`player-zenoh`). The two
+//! that serve viewers over WebSockets serve them alike, from here:
+//!
+//! * [`socket`] — listening (a small kernel send buffer per viewer, hundreds connecting at
+//!   once), sending a burst within [`socket::STALLED_AFTER`] (the one rule for a viewer that
+//!   stops reading: closed, and nobody else waits for it), and closing with a typed
+//!   [`socket::CloseCode`] and a reason cut to what a close frame holds.
+//!
+//! A new front over WebSockets (ROS 2's foxglove bridge, say) starts here.
+
+pub mod socket;
+
+pub use socket::{CloseCode, STALLED_AFTER, SendError};
