@@ -38,6 +38,10 @@ python3 -m venv .venv
 # player3, the Python package (python/), built from this checkout into .venv: release, since
 # it is what students' programs and the benchmarks run.
 VIRTUAL_ENV="$PWD/.venv" .venv/bin/maturin develop --release --quiet -m python/Cargo.toml
+# player-grade, the class grader (docs/GRADING.md), beside the Python it runs programs with: an
+# activated .venv has both on its PATH. Release, as player3 above (whose build it mostly shares).
+cargo build --release --quiet -p player-grade
+ln -sf "$PWD/target/release/player-grade" .venv/bin/player-grade
 command -v npm >/dev/null || { echo "npm not found: install Node.js 20 or later first" >&2; exit 1; }
 # The browser-side clients of the tests (tests/web): Playwright's driver (it drives Debian's
 # Chromium; it downloads no browser of its own) and Foxglove's WebSocket client, pinned.
