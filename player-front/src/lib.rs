@@ -7,10 +7,14 @@
 //! * [`socket`] — listening (a small kernel send buffer per viewer, hundreds connecting at
 //!   once), sending a burst within [`socket::STALLED_AFTER`] (the one rule for a viewer that
 //!   stops reading: closed, and nobody else waits for it), and closing with a typed
-//!   [`socket::CloseCode`] and a reason cut to what a close frame holds.
+//!   [`socket::CloseCode`] and a reason cut to what a close frame holds;
+//! * [`outbox`] — a viewer's bounded newest-wins queue: data past its bounds in number or
+//!   bytes drops the oldest, control messages are kept (Foxglove's viewers; the page's
+//!   broadcast keeps its own newest-of-everything snapshot for a page that lags).
 //!
 //! A new front over WebSockets (ROS 2's foxglove bridge, say) starts here.
 
+pub mod outbox;
 pub mod socket;
 
 pub use socket::{CloseCode, STALLED_AFTER, SendError};

@@ -14,7 +14,8 @@
 //!
 //! * [`hub`] — the conversion, the channels and the subscriptions, fed by the taps;
 //! * [`channels`] — one channel per topic, and what is latched on it for later subscribers;
-//! * [`outbox`] — a viewer's bounded queue (oldest dropped, in count and bytes);
+//! * [`outbox`] — a viewer's bounded queue (oldest dropped, in count and bytes): the kit's
+//!   (`player_front::outbox`) with Foxglove's bounds;
 //! * [`session`] — a viewer's socket: bursts out, requests in;
 //! * [`server`] — the listener and the upgrade;
 //! * [`wire`] — the protocol's messages.

@@ -12,12 +12,12 @@ use futures_util::StreamExt;
 use player_front::socket::{CloseCode, Out, SendError, close, send_within};
 
 use super::hub::{Hub, ViewerId};
-use super::outbox::{Batch, Outbox};
+use super::outbox::{Batch, Outbox, viewer_outbox};
 use super::wire::{self, Level, Request};
 
 /// Serves one viewer until it or the server goes.
 pub async fn serve_viewer(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, session_id: String) {
-    let outbox = Arc::new(Outbox::default());
+    let outbox = Arc::new(viewer_outbox());
     outbox.push_control(wire::server_info("player-relay", &session_id));
     let viewer = hub.join(outbox.clone());
     let (mut out, mut incoming) = socket.split();
