@@ -246,6 +246,8 @@ fn drive(
         }
     };
     let output = Output::drain(reader);
+    // Unique to this run: the namespace names it, else the program's folder does.
+    let mark = format!("{}-{}", sandbox.mark(), work.display());
     let spawned = sandbox.command(python, work).and_then(|mut command| {
         command
             .arg(&main)
@@ -258,6 +260,7 @@ fn drive(
             .env("PYTHONDONTWRITEBYTECODE", "1")
             .env("PLAYER_HOST", "127.0.0.1")
             .env("PLAYER_PORT", port.to_string())
+            .env(crate::sandbox::MARK, &mark)
             .stdin(Stdio::null())
             .stdout(writer.try_clone()?)
             .stderr(writer);
@@ -289,7 +292,7 @@ fn drive(
         }
         std::thread::sleep(LOOK);
     };
-    sandbox.kill_all(child.id());
+    sandbox.kill_all(child.id(), &mark);
     let _ = child.kill();
     let _ = child.wait();
     (ending, output)

@@ -129,20 +129,29 @@ impl Sandbox {
         Ok(command)
     }
 
-    /// Kills the program's process group and every process left in the namespace.
-    pub fn kill_all(&self, group: u32) {
+    /// The mark a run's processes carry in their environment ([`MARK`]), so that what they
+    /// leave behind is found even outside a namespace of their own.
+    pub fn mark(&self) -> String {
+        format!(
+            "{}-{}",
+            std::process::id(),
+            self.namespace.as_deref().unwrap_or("shared")
+        )
+    }
+
+    /// Kills the program's process group, every process left in the namespace, and every
+    /// process carrying the run's mark (`MARK=mark` in its environment).
+    pub fn kill_all(&self, group: u32, mark: &str) {
         if let Ok(group) = i32::try_from(group) {
             unsafe {
                 libc::killpg(group, libc::SIGKILL);
             }
         }
-        let Some(namespace) = &self.namespace else {
-            return;
-        };
         let me = std::process::id();
         let Ok(entries) = std::fs::read_dir("/proc") else {
             return;
         };
+        let marked = format!("{MARK}={mark}");
         for entry in entries.flatten() {
             let Some(pid) = entry
                 .file_name()
@@ -154,8 +163,15 @@ impl Sandbox {
             if pid == me {
                 continue;
             }
-            let theirs = std::fs::read_link(entry.path().join("ns/net"));
-            if theirs.is_ok_and(|ns| ns.as_os_str() == namespace.as_str())
+            let in_namespace = self.namespace.as_ref().is_some_and(|namespace| {
+                std::fs::read_link(entry.path().join("ns/net"))
+                    .is_ok_and(|ns| ns.as_os_str() == namespace.as_str())
+            });
+            let carries_mark = || {
+                std::fs::read(entry.path().join("environ"))
+                    .is_ok_and(|environ| environ.split(|&b| b == 0).any(|v| v == marked.as_bytes()))
+            };
+            if (in_namespace || carries_mark())
                 && let Ok(pid) = i32::try_from(pid)
             {
                 unsafe {
@@ -165,6 +181,9 @@ impl Sandbox {
         }
     }
 }
+
+/// The environment variable that marks a run's processes.
+pub const MARK: &str = "PLAYER_GRADE_RUN";
 
 /// Root's capabilities gone for good: not regained by exec (SECBIT_NOROOT, locked), none left
 /// in the bounding set, no privilege from set-uid programs. Root without them cannot leave
