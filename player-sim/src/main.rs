@@ -9,10 +9,10 @@ use anyhow::{Context, Result};
 use clap::Parser;
 use player_sim::replay::ReplayOptions;
 use player_sim::serve::{LockstepOptions, ServeOptions, serve};
-use player_sim::served::{DEFAULT_PORT, cfgs_beside, default_devices, from_cfgs, shift_ports};
+use player_sim::served::{devices_beside, from_cfgs, shift_ports};
 use player_sim::sim::{Noise, Simulation};
 use player_sim::sim_record::SimRecording;
-use player_sim::world::World;
+use player_sim::world::{World, ignored_summary};
 
 /// Serve a simulated Stage world over the Player protocol.
 #[derive(Parser, Debug)]
@@ -146,21 +146,20 @@ fn run(cli: Cli) -> Result<()> {
         None => cli.headless_once,
     };
     let mut ignored = world.ignored.clone();
-    let mut cfgs = cli.cfg.clone();
-    if cfgs.is_empty() {
-        cfgs = cfgs_beside(world_path);
-    }
-    let mut devices = if cfgs.is_empty() {
-        default_devices(&world, cli.port_base.unwrap_or(DEFAULT_PORT))
+    let mut devices = if cli.cfg.is_empty() {
+        devices_beside(world_path, &world, &mut ignored).context("reading the .cfg")?
     } else {
-        let paths: Vec<&Path> = cfgs.iter().map(PathBuf::as_path).collect();
+        let paths: Vec<&Path> = cli.cfg.iter().map(PathBuf::as_path).collect();
         from_cfgs(&paths, &world, &mut ignored).context("reading the .cfg")?
     };
     if let Some(base) = cli.port_base {
         shift_ports(&mut devices, base);
     }
     for note in &ignored {
-        tracing::warn!("{note}");
+        tracing::debug!("{note}");
+    }
+    if let Some(summary) = ignored_summary(&ignored) {
+        tracing::warn!("{summary} (RUST_LOG=player_sim=debug says where)");
     }
     let robots = world.robots.len();
     tracing::info!(

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use super::{DEFAULT_PORT, ServedDevice, default_devices, from_cfgs};
 use crate::world::World;
-use crate::worldfile::WorldFileError;
+use crate::worldfile::{Item, WorldFileError, parse_text};
 
 /// The suffix of the file of what only player-sim serves: `navigation-sim.cfg`.
 const SIM_SUFFIX: &str = "-sim";
@@ -38,6 +38,11 @@ pub fn cfgs_beside(world: &Path) -> Vec<PathBuf> {
 /// The devices `world` (loaded from `world_file`) is served with when nothing else is said:
 /// those of the `.cfg` files beside it ([`cfgs_beside`]), else one port per robot from
 /// Player's default port. What the files ask that is not simulated goes to `ignored`.
+///
+/// Files found beside the world were not chosen for it: when they name models the world lacks
+/// (Stage's `roomba.cfg` names `roomba0`, `roomba.world` has `r0`; `stage roomba.world` runs
+/// without reading it), that is a warning and the world gets one port per robot. A `.cfg`
+/// named on purpose is read by [`from_cfgs`], which refuses it.
 pub fn devices_beside(
     world_file: &Path,
     world: &World,
@@ -48,7 +53,45 @@ pub fn devices_beside(
         return Ok(default_devices(world, DEFAULT_PORT));
     }
     let paths: Vec<&Path> = cfgs.iter().map(PathBuf::as_path).collect();
+    let missing = models_missing(&paths, world)?;
+    if !missing.is_empty() {
+        tracing::warn!(
+            "not serving the .cfg beside {}: it names {} that the world lacks; \
+             serving one port per robot from {DEFAULT_PORT} instead",
+            world_file.display(),
+            missing.join(", ")
+        );
+        return Ok(default_devices(world, DEFAULT_PORT));
+    }
     from_cfgs(&paths, world, ignored)
+}
+
+/// The models `stage` driver blocks of the files name that are not robots of `world`, each as
+/// `"name" (file:line)`.
+fn models_missing(paths: &[&Path], world: &World) -> Result<Vec<String>, WorldFileError> {
+    let mut missing = Vec::new();
+    for path in paths {
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| WorldFileError::at(&name, 1, 1, format!("cannot read: {e}")))?;
+        for item in parse_text(&text, &name)? {
+            let Item::Block(block) = item else { continue };
+            let is_stage = block.get("name").and_then(|p| p.value.as_str()) == Some("stage");
+            let Some(model) = block.get("model").filter(|_| is_stage) else {
+                continue;
+            };
+            let Some(model_name) = model.value.as_str() else {
+                continue;
+            };
+            if !world.robots.iter().any(|r| r.name == model_name) {
+                missing.push(format!(
+                    "{model_name:?} ({}:{})",
+                    model.pos.file, model.pos.line
+                ));
+            }
+        }
+    }
+    Ok(missing)
 }
 
 #[cfg(test)]

@@ -1,8 +1,8 @@
 //! A simulated world as a Stage world file describes it: the floorplan (a bitmap or Stage
 //! `block`s, drawn into one occupancy grid), robots (`position` models) with their rangers,
 //! fiducial finders and cameras mounted at any depth, and obstacles (boxes, or the blocks drawn
-//! in them). What the simulator does not model is reported once as "ignored: <what> at
-//! file:line".
+//! in them). What the simulator does not model is noted once as "ignored: <what> at
+//! file:line", for the program to summarise.
 
 mod battery;
 mod bitmap;
@@ -13,6 +13,7 @@ mod colors;
 mod controller;
 mod floorplan;
 mod gripper;
+mod ignored;
 mod models;
 mod person;
 mod properties;
@@ -30,6 +31,7 @@ pub use blocks::{Polygon, placed};
 pub(crate) use cell_floor::floor_i64;
 pub use controller::Controller;
 pub use gripper::GripperSpec;
+pub use ignored::ignored_summary;
 pub use models::{Model, Types, read_with_includes};
 pub use person::{PersonSpec, STANCE_WIDTH, Walk};
 pub use wall_rects::WallRect;
@@ -188,7 +190,8 @@ pub struct World {
     pub obstacles: Vec<BoxObstacle>,
     /// Walking people (`person`); their legs are among `obstacles`.
     pub people: Vec<PersonSpec>,
-    /// "ignored: <what> at file:line", once each.
+    /// "ignored: <what> at file:line", once each; not logged while loading (the program says
+    /// them once, with its .cfg's, in one line: [`ignored_summary`]).
     pub ignored: Vec<String>,
     /// Floorplan polygons read but not drawn yet (while loading: the grid they go into is
     /// known only once every floorplan and the world's resolution are).
@@ -252,7 +255,7 @@ impl World {
     fn ignore(&mut self, what: &str, pos: &Pos) {
         let note = format!("ignored: {what} at {}:{}", pos.file, pos.line);
         if !self.ignored.contains(&note) {
-            tracing::warn!("{note}");
+            tracing::debug!("{note}");
             self.ignored.push(note);
         }
     }

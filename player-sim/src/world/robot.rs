@@ -129,7 +129,7 @@ impl World {
                 );
             }
             other => {
-                self.ignore(&format!("a {other} on robot {}", robot.name), &child.pos);
+                self.ignore(&format!("a {other} on a robot"), &child.pos);
                 return Ok(());
             }
         }
