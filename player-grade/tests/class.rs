@@ -176,4 +176,35 @@ fn each_submission_says_what_happened_in_files_other_tools_read() {
     let html = std::fs::read_to_string(dir.path().join("report.html")).unwrap();
     assert_eq!(html.matches("<tr><td class=\"name\">").count(), 3);
     assert!(html.contains("<img src=\"careful/path.png\""));
+    // The page as a browser shows it: a row per student, every picture loaded, no error.
+    let shot = dir.path().join("report.png");
+    let seen = Command::new("node")
+        .arg(repo().join("tests/web/report.mjs"))
+        .arg(dir.path().join("report.html"))
+        .arg(&shot)
+        .current_dir(repo().join("tests/web"))
+        .output()
+        .unwrap();
+    assert!(
+        seen.status.success(),
+        "{}",
+        String::from_utf8_lossy(&seen.stderr)
+    );
+    let seen: Value = serde_json::from_slice(&seen.stdout).unwrap();
+    assert_eq!(seen["errors"], serde_json::json!([]), "{seen}");
+    let rows = seen["rows"].as_array().unwrap();
+    let names: Vec<&str> = rows.iter().map(|r| r["name"].as_str().unwrap()).collect();
+    assert_eq!(names, ["crashing", "chatty", "careful"]);
+    assert_eq!(rows[2]["score"], "100 / 100");
+    assert_eq!(
+        (rows[2]["passed"].as_u64(), rows[2]["failed"].as_u64()),
+        (Some(5), Some(0))
+    );
+    for row in rows {
+        assert_eq!(row["picture"]["loaded"], true, "{row}");
+    }
+    assert!(
+        image::open(&shot).unwrap().height() > 400,
+        "a screenshot of the page"
+    );
 }
