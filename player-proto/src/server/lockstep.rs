@@ -7,8 +7,8 @@
 //! [`Lockstep::release`] lets steps go without them). A driver whose command does not come
 //! within the patience is marked absent — the step goes on without it, with one log line —
 //! until it commands again. With no present driver at all (none yet, or all gone), the
-//! step waits the same patience for one to appear, then the simulation runs on its own until
-//! one does.
+//! step waits the same patience for one to appear — counted again from each connection that
+//! opens meanwhile — then the simulation runs on its own until one does.
 //!
 //! A driver's second command in one step waits (its session awaits [`Lockstep::turn`]) until
 //! the step it answered has been taken: otherwise the command would land before or after the
@@ -147,6 +147,19 @@ impl Lockstep {
         if turns.running_alone {
             turns.running_alone = false;
             tracing::info!("lockstep: a driver arrived; each step waits for its command");
+        }
+        drop(turns);
+        self.changed.notify_all();
+    }
+
+    /// A connection opened. While nobody drives, it may be the driver the world waits for: the
+    /// wait for a first command starts again (and a world running alone stops to wait), so a
+    /// program that took long to start still has the whole patience for its first command.
+    pub fn arrived(&self) {
+        let mut turns = self.lock();
+        if turns.present().0 == 0 {
+            turns.waiting_since = Instant::now();
+            turns.running_alone = false;
         }
         drop(turns);
         self.changed.notify_all();
@@ -323,6 +336,20 @@ mod tests {
         assert!(started.elapsed() >= Duration::from_millis(30));
         lockstep.stepped();
         assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Alone));
+    }
+
+    #[test]
+    fn a_connection_while_nobody_drives_restarts_the_wait() {
+        let lockstep = Lockstep::new(Some(Duration::from_millis(100)));
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Alone));
+        lockstep.stepped();
+        lockstep.arrived();
+        let started = Instant::now();
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Alone));
+        assert!(
+            started.elapsed() >= Duration::from_millis(100),
+            "the newcomer had its patience"
+        );
     }
 
     #[test]

@@ -68,6 +68,9 @@ pub(crate) async fn serve(
     let _open = OpenConnection::new(&state);
     let session = Arc::new(SessionState::new(port, client, &state.queue_rules, direct));
     state.register(&session);
+    if let Some(lockstep) = &state.lockstep {
+        lockstep.arrived();
+    }
     let writer = tokio::spawn(write_loop(write_half, session.clone()));
 
     let mut reader = MessageReader::new(read_half, FrameDecoder::new(max_body));
