@@ -1,6 +1,6 @@
 //! `playerrecord export`: a recording in the text format of Player's `writelog` driver, which
-//! real Player's `readlog` plays back, or as an MCAP file (`--mcap`, or an output named
-//! `*.mcap`) that holds every record losslessly.
+//! real Player's `readlog` plays back, as an MCAP file (`--mcap`, or an output named
+//! `*.mcap`) that holds every record losslessly, or as a rosbag2 folder (`--rosbag2`) for ROS 2.
 
 use std::path::PathBuf;
 
@@ -19,12 +19,24 @@ pub struct Args {
 
     /// Write MCAP (the default when the output's name ends in `.mcap`): every message
     /// losslessly, for MCAP readers and `player-sim --replay`.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "rosbag2")]
     mcap: bool,
+
+    /// Write a rosbag2 folder (metadata.yaml and an MCAP file of CDR messages with their
+    /// ros2msg schemas) for `ros2 bag play`, rosbags and Foxglove: OUT is the folder.
+    #[arg(long)]
+    rosbag2: bool,
+
+    /// A robot's name, for its ROS 2 namespace: HOST:PORT=NAME (else HOST_PORT). Repeat it.
+    #[arg(long = "name", value_name = "HOST:PORT=NAME", requires = "rosbag2")]
+    names: Vec<player_proto::RobotId>,
 }
 
 pub fn run(args: Args) -> Result<()> {
     let (reader, _converted) = crate::mcap_file::open_recording(&args.file)?;
+    if args.rosbag2 {
+        return rosbag2(reader, &args);
+    }
     let out = std::fs::File::create(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
     if args.mcap || crate::mcap_file::named_mcap(&args.out) {
@@ -38,6 +50,41 @@ pub fn run(args: Args) -> Result<()> {
         );
     }
     if let Some(stopped) = &stats.stopped {
+        eprintln!("the recording stops early; exported up to there: {stopped}");
+    }
+    Ok(())
+}
+
+/// The recording as a rosbag2 folder at `args.out`.
+fn rosbag2<R: std::io::Read>(
+    mut reader: player_proto::recording::RecordingReader<R>,
+    args: &Args,
+) -> Result<()> {
+    let mut bag = player_ros2::bag::BagWriter::create(&args.out, &args.names)?;
+    let mut stopped = None;
+    loop {
+        match reader.next_record() {
+            Ok(Some(record)) => bag.write(&record)?,
+            Ok(None) => break,
+            Err(e) => {
+                stopped = Some(e);
+                break;
+            }
+        }
+    }
+    let stats = bag.finish()?;
+    let total: u64 = stats.topics.values().sum();
+    eprintln!("wrote {total} ROS 2 messages to {}", args.out.display());
+    for (topic, n) in &stats.topics {
+        eprintln!("  {topic}: {n}");
+    }
+    if stats.unmapped > 0 {
+        eprintln!(
+            "  left out {} Player messages with no ROS 2 counterpart yet",
+            stats.unmapped
+        );
+    }
+    if let Some(stopped) = stopped {
         eprintln!("the recording stops early; exported up to there: {stopped}");
     }
     Ok(())

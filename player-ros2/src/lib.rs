@@ -1,0 +1,13 @@
+//! Player robots in ROS 2's vocabulary: what the ROS 2 front and rosbag2 files share.
+//!
+//! * [`msgs`] — ROS 2's message types, with their definitions, as serde structs.
+//! * [`cdr`] — their serialized form (CDR, little-endian, with its encapsulation header).
+//! * [`names`] — a robot's namespace, topics and frames.
+//! * [`convert`] — Player's messages as ROS 2's.
+//! * [`bag`] — a recording as a rosbag2 folder (MCAP with `ros2msg` schemas, `metadata.yaml`).
+
+pub mod bag;
+pub mod cdr;
+pub mod convert;
+pub mod msgs;
+pub mod names;
