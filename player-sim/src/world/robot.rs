@@ -41,7 +41,9 @@ impl World {
         };
         let size = size_of(model, [0.44, 0.38, 0.22])?;
         let mut robot = RobotSpec {
-            name: name_of(model, &format!("robot{}", self.robots.len())),
+            // Stage names a model given no name by its type and how many of that type came
+            // before it: a client asks simulation:0 for "position:1".
+            name: name_of(model, &format!("position:{}", self.robots.len())),
             pose: pose_of(model)?,
             size,
             color: color_of(model)?,
