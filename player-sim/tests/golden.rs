@@ -240,9 +240,8 @@ fn our_drives_end_where_stages_do() {
     let world = Path::new(env!("CARGO_MANIFEST_DIR")).join("../stage-worlds/simple.world");
     let (distance, turn) = compare_drives(&world, "ours-simple");
     println!("worst: {:.1} cm, {turn:.2} degrees", distance * 100.0);
-    // Not yet the tolerance (6 cm, 3.5 degrees): Stage bounds the turn rate (90 degrees/s).
     assert!(
-        distance <= 0.06 && turn <= 41.0,
+        distance <= 0.06 && turn <= 3.5,
         "{distance} m, {turn} degrees"
     );
 }
@@ -285,10 +284,8 @@ fn stages_worlds_read_as_stage_reads_them() {
 fn stages_drives_end_where_stages_do() {
     let (distance, turn) = compare_drives(&stage_worlds().join("simple.world"), "simple");
     println!("worst: {:.1} cm, {turn:.2} degrees", distance * 100.0);
-    // Not yet the tolerance (6 cm, 3.5 degrees): Stage bounds a Pioneer's speed and turn rate
-    // (its velocity_bounds).
     assert!(
-        distance <= 0.751 && turn <= 82.0,
+        distance <= 0.06 && turn <= 3.5,
         "{distance} m, {turn} degrees"
     );
 }

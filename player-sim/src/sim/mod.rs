@@ -290,8 +290,14 @@ impl Simulation {
         self.steps += 1;
     }
 
-    /// The velocity robot `i` drives at this step.
+    /// The velocity robot `i` drives at this step: as commanded, within its bounds.
     fn velocity_for(&mut self, i: usize) -> (f64, f64, f64) {
+        let wanted = self.commanded_velocity(i);
+        self.world.robots[i].velocity_bounds.clamp(wanted)
+    }
+
+    /// The velocity robot `i` is told to drive at this step.
+    fn commanded_velocity(&mut self, i: usize) -> (f64, f64, f64) {
         match self.robots[i].command {
             Command::Velocity { vx, vy, va } => (vx, vy, va),
             Command::GoTo {

@@ -19,6 +19,7 @@ mod person;
 mod properties;
 mod raster;
 mod robot;
+mod velocity_bounds;
 mod wall_rects;
 mod wall_sums;
 
@@ -34,6 +35,7 @@ pub use gripper::GripperSpec;
 pub use ignored::ignored_summary;
 pub use models::{Model, Types, read_with_includes};
 pub use person::{PersonSpec, STANCE_WIDTH, Walk};
+pub use velocity_bounds::VelocityBounds;
 pub use wall_rects::WallRect;
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
@@ -132,6 +134,8 @@ pub struct RobotSpec {
     pub controller: Option<Controller>,
     /// Its power pack, when the model gives it `joules` (or `kjoules`) as Stage reads them.
     pub battery: Option<BatterySpec>,
+    /// What its commanded velocity is held within (Stage's `velocity_bounds`).
+    pub velocity_bounds: VelocityBounds,
 }
 
 /// A box that stops robots and beams (landmarks, furniture).

@@ -20,6 +20,10 @@ pub(super) const READ: &[&str] = &[
     "color",
     "color_rgba",
     "drive",
+    "velocity_bounds",
+    // Stage 4.3 reads it but does not ramp a velocity command by it: its drives end where
+    // player-sim's do without it (golden/stage/*-drives.jsonl, to the millimetre).
+    "acceleration_bounds",
     "bitmap",
     "boundary",
     "origin",

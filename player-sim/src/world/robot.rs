@@ -59,6 +59,7 @@ impl World {
             grippers: Vec::new(),
             controller: None,
             battery: BatterySpec::of(model)?,
+            velocity_bounds: super::VelocityBounds::of(model)?,
         };
         if let Some(p) = model.get("gripper_return") {
             self.ignore(
