@@ -17,6 +17,9 @@ packages=(
   python3 python3-venv
   # The web page's tests drive a real browser (through Playwright, tests/web).
   chromium
+  # Network namespaces for the tests of what discovers by multicast (DDS, Zenoh's scouting)
+  # and of player-grade's sandbox: ip, unshare.
+  iproute2 util-linux
 )
 
 missing=()

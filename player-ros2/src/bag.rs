@@ -149,7 +149,7 @@ impl BagWriter {
                     self.stats.undecodable += 1;
                     return Ok(());
                 };
-                let converted = convert(&ns, &message)?;
+                let converted = convert(&ns, &message);
                 if converted.is_empty() {
                     self.stats.unmapped += 1;
                 }
@@ -168,18 +168,19 @@ impl BagWriter {
             path: file.clone(),
             source,
         };
+        let type_name = c.message.type_name();
         let channel = match self.channels.get(&c.topic) {
             Some(&(id, _)) => id,
             None => {
-                let schema = match self.schemas.get(c.type_name) {
+                let schema = match self.schemas.get(type_name) {
                     Some(&id) => id,
                     None => {
-                        let text = (c.schema)();
+                        let text = c.message.schema();
                         let id = self
                             .out
-                            .add_schema(c.type_name, "ros2msg", text.as_bytes())
+                            .add_schema(type_name, "ros2msg", text.as_bytes())
                             .map_err(failed)?;
-                        self.schemas.insert(c.type_name, id);
+                        self.schemas.insert(type_name, id);
                         id
                     }
                 };
@@ -189,7 +190,7 @@ impl BagWriter {
                     .out
                     .add_channel(schema, &c.topic, "cdr", &metadata)
                     .map_err(failed)?;
-                self.channels.insert(c.topic.clone(), (id, c.type_name));
+                self.channels.insert(c.topic.clone(), (id, type_name));
                 id
             }
         };
@@ -200,8 +201,9 @@ impl BagWriter {
             publish_time: time_ns,
         };
         self.sequence = self.sequence.wrapping_add(1);
+        let cdr = c.message.cdr()?;
         self.out
-            .write_to_known_channel(&header, &c.cdr)
+            .write_to_known_channel(&header, &cdr)
             .map_err(failed)?;
         self.first_ns = Some(self.first_ns.map_or(time_ns, |f| f.min(time_ns)));
         self.last_ns = self.last_ns.max(time_ns);

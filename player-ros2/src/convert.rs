@@ -26,47 +26,94 @@ use crate::names::{frame, topic};
 /// The frame localizers and planners speak in.
 pub const MAP_FRAME: &str = "map";
 
-/// One ROS 2 message made from a Player message: where it goes and its bytes.
-#[derive(Debug, Clone)]
-pub struct Converted {
-    pub topic: String,
-    /// `pkg/msg/Type`.
-    pub type_name: &'static str,
-    /// The schema of the type (`ros2msg`).
-    pub schema: fn() -> String,
-    /// CDR, with its encapsulation header.
-    pub cdr: Vec<u8>,
-    /// The message's time.
-    pub stamp: Time,
+/// A ROS 2 message of one of the types Player's data becomes. Short-lived (made, then sent
+/// or written at once), so the sizes of its variants do not matter.
+#[derive(Debug, Clone, PartialEq)]
+#[allow(clippy::large_enum_variant)]
+pub enum RosOut {
+    LaserScan(LaserScan),
+    Odometry(Odometry),
+    Tf(TFMessage),
+    PoseWithCovarianceStamped(PoseWithCovarianceStamped),
+    Path(Path),
+    BatteryState(BatteryState),
 }
 
-fn converted<T: RosMessage>(
-    topic: String,
-    stamp: Time,
-    message: &T,
-) -> Result<Converted, CdrError> {
-    Ok(Converted {
+macro_rules! each_type {
+    ($self:expr, $m:ident => $e:expr) => {
+        match $self {
+            RosOut::LaserScan($m) => $e,
+            RosOut::Odometry($m) => $e,
+            RosOut::Tf($m) => $e,
+            RosOut::PoseWithCovarianceStamped($m) => $e,
+            RosOut::Path($m) => $e,
+            RosOut::BatteryState($m) => $e,
+        }
+    };
+}
+
+fn type_of<T: RosMessage>(_: &T) -> &'static str {
+    T::TYPE
+}
+
+fn schema_of<T: RosMessage>(_: &T) -> String {
+    schema_text::<T>()
+}
+
+impl RosOut {
+    /// `pkg/msg/Type`.
+    pub fn type_name(&self) -> &'static str {
+        each_type!(self, m => type_of(m))
+    }
+
+    /// The type's schema (`ros2msg`).
+    pub fn schema(&self) -> String {
+        each_type!(self, m => schema_of(m))
+    }
+
+    /// The message as ROS 2 serializes it.
+    pub fn cdr(&self) -> Result<Vec<u8>, CdrError> {
+        each_type!(self, m => serialize(m))
+    }
+}
+
+/// One ROS 2 message made from a Player message: its topic, its time and itself.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Converted {
+    pub topic: String,
+    pub stamp: Time,
+    pub message: RosOut,
+}
+
+fn converted(topic: String, stamp: Time, message: RosOut) -> Converted {
+    Converted {
         topic,
-        type_name: T::TYPE,
-        schema: schema_text::<T>,
-        cdr: serialize(message)?,
         stamp,
-    })
+        message,
+    }
 }
 
 /// The ROS 2 messages of `message`, from robot namespace `ns`: none for what is not mapped.
-pub fn convert(ns: &str, message: &Message) -> Result<Vec<Converted>, CdrError> {
+pub fn convert(ns: &str, message: &Message) -> Vec<Converted> {
     let header = &message.header;
     let index = header.addr.index;
     let stamp = Time::from_seconds(header.timestamp);
-    let out = match (&message.body, header.msg_type) {
+    match (&message.body, header.msg_type) {
         (Body::Laser(Laser::Scan(scan)), MsgType::Data) => {
             let scan = laser_scan(scan, Header::new(stamp, frame(ns, "laser", index)));
-            vec![converted(topic(ns, "scan", index), stamp, &scan)?]
+            vec![converted(
+                topic(ns, "scan", index),
+                stamp,
+                RosOut::LaserScan(scan),
+            )]
         }
         (Body::Laser(Laser::ScanPose(scan)), MsgType::Data) => {
             let scan = laser_scan(&scan.scan, Header::new(stamp, frame(ns, "laser", index)));
-            vec![converted(topic(ns, "scan", index), stamp, &scan)?]
+            vec![converted(
+                topic(ns, "scan", index),
+                stamp,
+                RosOut::LaserScan(scan),
+            )]
         }
         (Body::Position2d(Position2d::State(state)), MsgType::Data) => {
             let (odom, base) = (frame(ns, "odom", index), frame(ns, "base_link", index));
@@ -109,8 +156,8 @@ pub fn convert(ns: &str, message: &Message) -> Result<Vec<Converted>, CdrError> 
                 }],
             };
             vec![
-                converted(topic(ns, "odom", index), stamp, &odometry)?,
-                converted("/tf".into(), stamp, &tf)?,
+                converted(topic(ns, "odom", index), stamp, RosOut::Odometry(odometry)),
+                converted("/tf".into(), stamp, RosOut::Tf(tf)),
             ]
         }
         (Body::Localize(Localize::Hypotheses(data)), MsgType::Data) => {
@@ -140,7 +187,11 @@ pub fn convert(ns: &str, message: &Message) -> Result<Vec<Converted>, CdrError> 
                     } else {
                         format!("amcl_pose_{index}")
                     };
-                    vec![converted(format!("/{ns}/{name}"), stamp, &estimate)?]
+                    vec![converted(
+                        format!("/{ns}/{name}"),
+                        stamp,
+                        RosOut::PoseWithCovarianceStamped(estimate),
+                    )]
                 }
                 None => Vec::new(),
             }
@@ -158,7 +209,11 @@ pub fn convert(ns: &str, message: &Message) -> Result<Vec<Converted>, CdrError> 
                     })
                     .collect(),
             };
-            vec![converted(topic(ns, "plan", index), stamp, &path)?]
+            vec![converted(
+                topic(ns, "plan", index),
+                stamp,
+                RosOut::Path(path),
+            )]
         }
         (Body::Power(Power::State(p)), MsgType::Data) => {
             let battery = BatteryState {
@@ -177,11 +232,14 @@ pub fn convert(ns: &str, message: &Message) -> Result<Vec<Converted>, CdrError> 
                 present: true,
                 ..BatteryState::default()
             };
-            vec![converted(topic(ns, "battery", index), stamp, &battery)?]
+            vec![converted(
+                topic(ns, "battery", index),
+                stamp,
+                RosOut::BatteryState(battery),
+            )]
         }
         _ => Vec::new(),
-    };
-    Ok(out)
+    }
 }
 
 /// A Player scan as ROS's: the same angles and ranges (a beam's bearing is `angle_min + i ×

@@ -5,9 +5,12 @@
 //! * [`names`] — a robot's namespace, topics and frames.
 //! * [`convert`] — Player's messages as ROS 2's.
 //! * [`bag`] — a recording as a rosbag2 folder (MCAP with `ros2msg` schemas, `metadata.yaml`).
+//! * `live` (feature `live`, on by default) — each robot a ROS 2 node over DDS.
 
 pub mod bag;
 pub mod cdr;
 pub mod convert;
+#[cfg(feature = "live")]
+pub mod live;
 pub mod msgs;
 pub mod names;

@@ -5,16 +5,20 @@
 
 use player_proto::RobotId;
 
-/// A robot's namespace: letters, digits and `_`, not starting with a digit.
+/// A robot's namespace: letters, digits and single `_`s, not starting with a digit.
 pub fn namespace(robot: &RobotId) -> String {
     let raw = match robot.name() {
         Some(name) => name.to_string(),
         None => format!("{}_{}", robot.host(), robot.port()),
     };
-    let mut ns: String = raw
-        .chars()
-        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
-        .collect();
+    let mut ns = String::with_capacity(raw.len());
+    for c in raw.chars() {
+        let c = if c.is_ascii_alphanumeric() { c } else { '_' };
+        // ROS 2 names take no run of underscores.
+        if !(c == '_' && ns.ends_with('_')) {
+            ns.push(c);
+        }
+    }
     if ns.starts_with(|c: char| c.is_ascii_digit()) || ns.is_empty() {
         ns.insert_str(0, "robot_");
     }
@@ -57,6 +61,8 @@ mod tests {
         );
         let dashed = RobotId::new("h", 1).named("pioneer-2.b").unwrap();
         assert_eq!(namespace(&dashed), "pioneer_2_b");
+        let doubled = RobotId::new("h", 1).named("a-.b").unwrap();
+        assert_eq!(namespace(&doubled), "a_b");
         assert_eq!(topic("r0", "scan", 0), "/r0/scan");
         assert_eq!(topic("r0", "scan", 2), "/r0/scan_2");
         assert_eq!(frame("r0", "laser", 1), "r0/laser_1");

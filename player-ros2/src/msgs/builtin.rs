@@ -1,11 +1,11 @@
 //! builtin_interfaces, std_msgs and rosgraph_msgs: time, headers and the clock.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::RosMessage;
 
 /// builtin_interfaces/msg/Time.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Time {
     pub sec: i32,
     pub nanosec: u32,
@@ -34,7 +34,7 @@ impl Time {
 pub const TIME: &str = "int32 sec\nuint32 nanosec\n";
 
 /// std_msgs/msg/Header.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct Header {
     pub stamp: Time,
     pub frame_id: String,
@@ -60,7 +60,7 @@ pub fn header_deps() -> Vec<(&'static str, &'static str)> {
 }
 
 /// rosgraph_msgs/msg/Clock: the simulated time, on `/clock`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Clock {
     pub clock: Time,
 }

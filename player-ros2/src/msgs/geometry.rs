@@ -1,25 +1,25 @@
 //! geometry_msgs and tf2_msgs: points, poses, twists and transforms.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::builtin::{Header, header_deps};
 use super::{Covariance, RosMessage};
 
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Vector3 {
     pub x: f64,
     pub y: f64,
     pub z: f64,
 }
 
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Point {
     pub x: f64,
     pub y: f64,
     pub z: f64,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Quaternion {
     pub x: f64,
     pub y: f64,
@@ -46,7 +46,7 @@ impl Quaternion {
     }
 }
 
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Pose {
     pub position: Point,
     pub orientation: Quaternion,
@@ -62,31 +62,31 @@ impl Pose {
     }
 }
 
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct PoseWithCovariance {
     pub pose: Pose,
     pub covariance: Covariance,
 }
 
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Twist {
     pub linear: Vector3,
     pub angular: Vector3,
 }
 
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct TwistWithCovariance {
     pub twist: Twist,
     pub covariance: Covariance,
 }
 
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Transform {
     pub translation: Vector3,
     pub rotation: Quaternion,
 }
 
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct TransformStamped {
     pub header: Header,
     pub child_frame_id: String,
@@ -94,21 +94,21 @@ pub struct TransformStamped {
 }
 
 /// tf2_msgs/msg/TFMessage: what `/tf` and `/tf_static` carry.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[allow(clippy::upper_case_acronyms)]
 pub struct TFMessage {
     pub transforms: Vec<TransformStamped>,
 }
 
 /// geometry_msgs/msg/PoseStamped: a planner's goal, a path's way-point.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct PoseStamped {
     pub header: Header,
     pub pose: Pose,
 }
 
 /// geometry_msgs/msg/PoseWithCovarianceStamped: a localizer's estimate (`amcl_pose`).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct PoseWithCovarianceStamped {
     pub header: Header,
     pub pose: PoseWithCovariance,

@@ -1,6 +1,6 @@
 //! nav_msgs: odometry, maps and paths.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::RosMessage;
 use super::builtin::{Header, TIME, Time, header_deps};
@@ -10,7 +10,7 @@ use super::geometry::{
 };
 
 /// nav_msgs/msg/Odometry: a base's pose in `odom` and its velocity in `base_link`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct Odometry {
     pub header: Header,
     pub child_frame_id: String,
@@ -38,7 +38,7 @@ impl RosMessage for Odometry {
 }
 
 /// nav_msgs/msg/MapMetaData.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct MapMetaData {
     pub map_load_time: Time,
     pub resolution: f32,
@@ -48,7 +48,7 @@ pub struct MapMetaData {
 }
 
 /// nav_msgs/msg/OccupancyGrid: 0 free, 100 occupied, -1 unknown; row-major from the origin.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct OccupancyGrid {
     pub header: Header,
     pub info: MapMetaData,
@@ -70,7 +70,7 @@ impl RosMessage for OccupancyGrid {
 }
 
 /// nav_msgs/msg/Path: a planner's way-points.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct Path {
     pub header: Header,
     pub poses: Vec<PoseStamped>,

@@ -1,12 +1,12 @@
 //! sensor_msgs: laser scans and batteries.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::RosMessage;
 use super::builtin::{Header, header_deps};
 
 /// sensor_msgs/msg/LaserScan: ranges counter-clockwise from `angle_min`, metres.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct LaserScan {
     pub header: Header,
     pub angle_min: f32,
@@ -29,7 +29,7 @@ impl RosMessage for LaserScan {
 }
 
 /// sensor_msgs/msg/BatteryState.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct BatteryState {
     pub header: Header,
     pub voltage: f32,

@@ -1,0 +1,49 @@
+//! `player-ros2 HOST:PORT[=NAME]...`: Player robots as ROS 2 nodes over DDS. Each robot is a
+//! Player client here; its data goes out on its ROS 2 topics, and its `cmd_vel` drives its base
+//! (unless `--read-only`). See docs/ROS2.md.
+
+mod bridge;
+
+use std::process::ExitCode;
+
+use clap::Parser;
+use player_proto::RobotId;
+
+/// Player robots as ROS 2 nodes: scans, odometry, /tf and more out, cmd_vel in.
+#[derive(Parser, Debug)]
+#[command(version, about)]
+struct Cli {
+    /// The robots: HOST:PORT, or HOST:PORT=NAME for its ROS 2 namespace (else HOST_PORT).
+    #[arg(required = true, value_name = "HOST:PORT[=NAME]")]
+    robots: Vec<RobotId>,
+
+    /// The ROS 2 domain, 0 to 232; by default ROS_DOMAIN_ID, else 0.
+    #[arg(long)]
+    ros_domain: Option<u16>,
+
+    /// Publish only: no cmd_vel reaches a robot.
+    #[arg(long)]
+    read_only: bool,
+}
+
+fn main() -> ExitCode {
+    // RustDDS warns of every sample a peer's unreachable locator did not take, and
+    // ros2-client tells of every topic it makes: not news to a person running a bridge.
+    program_edge::logging::init("info,rustdds=error,ros2_client=error");
+    let cli = Cli::parse();
+    let result = domain(cli.ros_domain).and_then(|d| bridge::run(&cli.robots, d, cli.read_only));
+    program_edge::exit::exit_code("player-ros2", result)
+}
+
+/// `--ros-domain`, else `ROS_DOMAIN_ID`, else 0.
+fn domain(given: Option<u16>) -> anyhow::Result<u16> {
+    if let Some(domain) = given {
+        return Ok(domain);
+    }
+    match std::env::var("ROS_DOMAIN_ID") {
+        Ok(text) if !text.trim().is_empty() => text.trim().parse().map_err(|_| {
+            anyhow::anyhow!("ROS_DOMAIN_ID must be a number from 0 to 232, got {text:?}")
+        }),
+        _ => Ok(0),
+    }
+}

@@ -1,0 +1,60 @@
+//! The live front: each Player robot a ROS 2 node over DDS (RTPS), ROS 2's default middleware,
+//! which any ROS 2 from Humble on discovers with no set-up. Its data goes out through the same
+//! conversion as the files ([`crate::convert`]); `cmd_vel` comes back as a velocity for the
+//! robot's base, refused when absurd and stopped when its publisher goes quiet
+//! ([`commands`]).
+//!
+//! DDS discovers by multicast: run it where that is meant to happen (the tests run it inside a
+//! network namespace of their own).
+
+pub mod commands;
+mod node;
+
+pub use node::RobotNode;
+
+use player_proto::RobotId;
+use ros2_client::{Context, context::ContextOptions};
+
+/// Why the ROS 2 side could not be set up.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum LiveError {
+    #[error("cannot join ROS 2 domain {domain}: {message}")]
+    Domain { domain: u16, message: String },
+    #[error("cannot make ROS 2 {what} for {robot}: {message}")]
+    Create {
+        robot: String,
+        what: String,
+        message: String,
+    },
+    #[error("ROS 2 domain {0} is out of range (0 to 232)")]
+    DomainRange(u16),
+}
+
+/// A process's way into one ROS 2 domain.
+pub struct Ros2 {
+    context: Context,
+}
+
+impl Ros2 {
+    /// Joins ROS 2 domain `domain` (`ROS_DOMAIN_ID`).
+    pub fn join(domain: u16) -> Result<Ros2, LiveError> {
+        if domain > 232 {
+            return Err(LiveError::DomainRange(domain));
+        }
+        let context =
+            Context::with_options(ContextOptions::new().domain_id(domain)).map_err(|e| {
+                LiveError::Domain {
+                    domain,
+                    message: e.to_string(),
+                }
+            })?;
+        Ok(Ros2 { context })
+    }
+
+    /// The node of `robot`: `/ns/player`, publishing its data, and (unless `read_only`)
+    /// subscribed to its `cmd_vel`.
+    pub fn robot(&self, robot: &RobotId, read_only: bool) -> Result<RobotNode, LiveError> {
+        RobotNode::new(&self.context, robot, read_only)
+    }
+}

@@ -1,0 +1,208 @@
+"""A ROS 2 peer without ROS, for test_ros2_live.py: Eclipse Cyclone DDS (the DDS of
+rmw_cyclonedds_cpp) with ROS 2's message types written from their .msg definitions, under
+ROS 2's DDS names (topic /a/b is rt/a/b, type pkg/msg/T is pkg::msg::dds_::T_).
+
+Run inside a network namespace of its own (loopback only, multicast on lo): it starts
+player-sim and the bridge itself, reads scans and odometry, drives r0 with cmd_vel, lets the
+commands stop, sends a NaN, and prints what it saw as one line of JSON.
+
+    unshare -n python ros2_peer.py PLAYER_SIM PLAYER_ROS2 WORLD
+"""
+
+import json
+import math
+import socket
+import subprocess
+import sys
+import time
+from dataclasses import dataclass, field
+
+from cyclonedds.core import Policy, Qos
+from cyclonedds.domain import DomainParticipant
+from cyclonedds.idl import IdlStruct
+from cyclonedds.idl.types import array, float32, float64, int32, sequence, uint32
+from cyclonedds.pub import DataWriter
+from cyclonedds.sub import DataReader
+from cyclonedds.topic import Topic
+from cyclonedds.util import duration
+
+import player3
+
+
+@dataclass
+class Time(IdlStruct, typename="builtin_interfaces::msg::dds_::Time_"):
+    sec: int32 = 0
+    nanosec: uint32 = 0
+
+
+@dataclass
+class Header(IdlStruct, typename="std_msgs::msg::dds_::Header_"):
+    stamp: Time = field(default_factory=Time)
+    frame_id: str = ""
+
+
+@dataclass
+class LaserScan(IdlStruct, typename="sensor_msgs::msg::dds_::LaserScan_"):
+    header: Header
+    angle_min: float32
+    angle_max: float32
+    angle_increment: float32
+    time_increment: float32
+    scan_time: float32
+    range_min: float32
+    range_max: float32
+    ranges: sequence[float32]
+    intensities: sequence[float32]
+
+
+@dataclass
+class Vector3(IdlStruct, typename="geometry_msgs::msg::dds_::Vector3_"):
+    x: float64 = 0.0
+    y: float64 = 0.0
+    z: float64 = 0.0
+
+
+@dataclass
+class Point(IdlStruct, typename="geometry_msgs::msg::dds_::Point_"):
+    x: float64
+    y: float64
+    z: float64
+
+
+@dataclass
+class Quaternion(IdlStruct, typename="geometry_msgs::msg::dds_::Quaternion_"):
+    x: float64
+    y: float64
+    z: float64
+    w: float64
+
+
+@dataclass
+class Pose(IdlStruct, typename="geometry_msgs::msg::dds_::Pose_"):
+    position: Point
+    orientation: Quaternion
+
+
+@dataclass
+class PoseWithCovariance(IdlStruct, typename="geometry_msgs::msg::dds_::PoseWithCovariance_"):
+    pose: Pose
+    covariance: array[float64, 36]
+
+
+@dataclass
+class Twist(IdlStruct, typename="geometry_msgs::msg::dds_::Twist_"):
+    linear: Vector3 = field(default_factory=Vector3)
+    angular: Vector3 = field(default_factory=Vector3)
+
+
+@dataclass
+class TwistWithCovariance(IdlStruct, typename="geometry_msgs::msg::dds_::TwistWithCovariance_"):
+    twist: Twist
+    covariance: array[float64, 36]
+
+
+@dataclass
+class Odometry(IdlStruct, typename="nav_msgs::msg::dds_::Odometry_"):
+    header: Header
+    child_frame_id: str
+    pose: PoseWithCovariance
+    twist: TwistWithCovariance
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def loopback_with_multicast():
+    for command in (
+        ["ip", "link", "set", "lo", "up"],
+        ["ip", "link", "set", "lo", "multicast", "on"],
+        ["ip", "route", "add", "224.0.0.0/4", "dev", "lo"],
+    ):
+        subprocess.run(command, check=True)
+
+
+def wait_for(what, get, limit=30.0):
+    deadline = time.monotonic() + limit
+    while time.monotonic() < deadline:
+        value = get()
+        if value is not None:
+            return value
+        time.sleep(0.05)
+    raise SystemExit(f"timed out waiting for {what}")
+
+
+def main(player_sim, bridge, world):
+    loopback_with_multicast()
+    port = free_port()
+    sim = subprocess.Popen(
+        [player_sim, world, "--port-base", str(port)], stderr=subprocess.DEVNULL
+    )
+    bridge_log = open("/tmp/player-ros2-peer.log", "w")
+    ros = subprocess.Popen([bridge, f"127.0.0.1:{port}=r0"], stderr=bridge_log)
+    seen = {}
+    try:
+        robot = wait_for("player-sim", lambda: try_connect(port))
+        base = robot.position2d(0)
+        participant = DomainParticipant(0)
+        best_effort = Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(5))
+        reliable = Qos(Policy.Reliability.Reliable(duration(seconds=1)), Policy.History.KeepLast(10))
+        scans = DataReader(participant, Topic(participant, "rt/r0/scan", LaserScan), qos=best_effort)
+        odometry = DataReader(participant, Topic(participant, "rt/r0/odom", Odometry), qos=reliable)
+        cmd_vel = DataWriter(participant, Topic(participant, "rt/r0/cmd_vel", Twist), qos=reliable)
+
+        scan = wait_for("a scan on rt/r0/scan", lambda: next(iter(scans.take(1)), None))
+        seen["scan"] = {
+            "beams": len(scan.ranges),
+            "frame": scan.header.frame_id,
+            "angle_min": scan.angle_min,
+            "range_max": scan.range_max,
+        }
+        odom = wait_for("odometry on rt/r0/odom", lambda: next(iter(odometry.take(1)), None))
+        seen["odom"] = {
+            "frame": odom.header.frame_id,
+            "child": odom.child_frame_id,
+            "x": odom.pose.pose.position.x,
+        }
+
+        start = base.pose
+        wait_for("the bridge's cmd_vel reader", lambda: True if cmd_vel.get_publication_matched_status().current_count else None)
+        for _ in range(20):  # two seconds of teleop at 10 Hz
+            cmd_vel.write(Twist(linear=Vector3(x=0.5)))
+            time.sleep(0.1)
+        moved = base.pose
+        seen["moved"] = math.hypot(moved[0] - start[0], moved[1] - start[1])
+
+        time.sleep(1.5)  # teleop "dies": the deadline stops the robot
+        before = base.pose
+        time.sleep(1.0)
+        after = base.pose
+        seen["after_stop"] = math.hypot(after[0] - before[0], after[1] - before[1])
+
+        for _ in range(10):
+            cmd_vel.write(Twist(linear=Vector3(x=float("nan"))))
+            cmd_vel.write(Twist(linear=Vector3(x=50.0)))
+            time.sleep(0.1)
+        later = base.pose
+        seen["after_nan"] = math.hypot(later[0] - after[0], later[1] - after[1])
+    finally:
+        ros.terminate()
+        sim.terminate()
+        ros.wait(10)
+        sim.wait(10)
+        bridge_log.close()
+    seen["bridge_log"] = open("/tmp/player-ros2-peer.log").read()[-4000:]
+    print(json.dumps(seen))
+
+
+def try_connect(port):
+    try:
+        return player3.connect("127.0.0.1", port, timeout=1.0, read_only=True)
+    except Exception:
+        return None
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:4])
