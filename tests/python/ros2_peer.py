@@ -3,10 +3,13 @@ rmw_cyclonedds_cpp) with ROS 2's message types written from their .msg definitio
 ROS 2's DDS names (topic /a/b is rt/a/b, type pkg/msg/T is pkg::msg::dds_::T_).
 
 Run inside a network namespace of its own (loopback only, multicast on lo): it starts
-player-sim and the bridge itself, reads scans and odometry, drives r0 with cmd_vel, lets the
-commands stop, sends a NaN, and prints what it saw as one line of JSON.
+player-sim and the bridge itself and prints what it saw as one line of JSON.
 
-    unshare -n python ros2_peer.py PLAYER_SIM PLAYER_ROS2 WORLD
+    unshare -n python ros2_peer.py drive PLAYER_SIM PLAYER_ROS2 simple.world
+        reads r0's scans, odometry and fixed transforms, drives it with cmd_vel, lets the
+        commands stop, sends a NaN and an absurd speed;
+    unshare -n python ros2_peer.py nav PLAYER_SIM PLAYER_ROS2 navigation.world
+        comes late for the map, sends a goal to the planner and a start to the localizer.
 """
 
 import json
@@ -20,7 +23,7 @@ from dataclasses import dataclass, field
 from cyclonedds.core import Policy, Qos
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.types import array, float32, float64, int32, sequence, uint32
+from cyclonedds.idl.types import array, float32, float64, int8, int32, sequence, uint32
 from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
@@ -109,6 +112,58 @@ class Odometry(IdlStruct, typename="nav_msgs::msg::dds_::Odometry_"):
     twist: TwistWithCovariance
 
 
+@dataclass
+class Transform(IdlStruct, typename="geometry_msgs::msg::dds_::Transform_"):
+    translation: Vector3
+    rotation: Quaternion
+
+
+@dataclass
+class TransformStamped(IdlStruct, typename="geometry_msgs::msg::dds_::TransformStamped_"):
+    header: Header
+    child_frame_id: str
+    transform: Transform
+
+
+@dataclass
+class TFMessage(IdlStruct, typename="tf2_msgs::msg::dds_::TFMessage_"):
+    transforms: sequence[TransformStamped]
+
+
+@dataclass
+class MapMetaData(IdlStruct, typename="nav_msgs::msg::dds_::MapMetaData_"):
+    map_load_time: Time
+    resolution: float32
+    width: uint32
+    height: uint32
+    origin: Pose
+
+
+@dataclass
+class OccupancyGrid(IdlStruct, typename="nav_msgs::msg::dds_::OccupancyGrid_"):
+    header: Header
+    info: MapMetaData
+    data: sequence[int8]
+
+
+@dataclass
+class PoseStamped(IdlStruct, typename="geometry_msgs::msg::dds_::PoseStamped_"):
+    header: Header
+    pose: Pose
+
+
+@dataclass
+class PoseWithCovarianceStamped(
+    IdlStruct, typename="geometry_msgs::msg::dds_::PoseWithCovarianceStamped_"
+):
+    header: Header
+    pose: PoseWithCovariance
+
+
+def yaw_quaternion(yaw):
+    return Quaternion(0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
+
+
 def free_port():
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
@@ -134,59 +189,26 @@ def wait_for(what, get, limit=30.0):
     raise SystemExit(f"timed out waiting for {what}")
 
 
-def main(player_sim, bridge, world):
+LATCHED = Qos(
+    Policy.Reliability.Reliable(duration(seconds=1)),
+    Policy.Durability.TransientLocal,
+    Policy.History.KeepLast(1),
+)
+RELIABLE = Qos(Policy.Reliability.Reliable(duration(seconds=1)), Policy.History.KeepLast(10))
+
+
+def main(mode, player_sim, bridge, world):
     loopback_with_multicast()
     port = free_port()
     sim = subprocess.Popen(
         [player_sim, world, "--port-base", str(port)], stderr=subprocess.DEVNULL
     )
     bridge_log = open("/tmp/player-ros2-peer.log", "w")
-    ros = subprocess.Popen([bridge, f"127.0.0.1:{port}=r0"], stderr=bridge_log)
+    name = "r0" if mode == "drive" else "nav"
+    ros = subprocess.Popen([bridge, f"127.0.0.1:{port}={name}"], stderr=bridge_log)
     seen = {}
     try:
-        robot = wait_for("player-sim", lambda: try_connect(port))
-        base = robot.position2d(0)
-        participant = DomainParticipant(0)
-        best_effort = Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(5))
-        reliable = Qos(Policy.Reliability.Reliable(duration(seconds=1)), Policy.History.KeepLast(10))
-        scans = DataReader(participant, Topic(participant, "rt/r0/scan", LaserScan), qos=best_effort)
-        odometry = DataReader(participant, Topic(participant, "rt/r0/odom", Odometry), qos=reliable)
-        cmd_vel = DataWriter(participant, Topic(participant, "rt/r0/cmd_vel", Twist), qos=reliable)
-
-        scan = wait_for("a scan on rt/r0/scan", lambda: next(iter(scans.take(1)), None))
-        seen["scan"] = {
-            "beams": len(scan.ranges),
-            "frame": scan.header.frame_id,
-            "angle_min": scan.angle_min,
-            "range_max": scan.range_max,
-        }
-        odom = wait_for("odometry on rt/r0/odom", lambda: next(iter(odometry.take(1)), None))
-        seen["odom"] = {
-            "frame": odom.header.frame_id,
-            "child": odom.child_frame_id,
-            "x": odom.pose.pose.position.x,
-        }
-
-        start = base.pose
-        wait_for("the bridge's cmd_vel reader", lambda: True if cmd_vel.get_publication_matched_status().current_count else None)
-        for _ in range(20):  # two seconds of teleop at 10 Hz
-            cmd_vel.write(Twist(linear=Vector3(x=0.5)))
-            time.sleep(0.1)
-        moved = base.pose
-        seen["moved"] = math.hypot(moved[0] - start[0], moved[1] - start[1])
-
-        time.sleep(1.5)  # teleop "dies": the deadline stops the robot
-        before = base.pose
-        time.sleep(1.0)
-        after = base.pose
-        seen["after_stop"] = math.hypot(after[0] - before[0], after[1] - before[1])
-
-        for _ in range(10):
-            cmd_vel.write(Twist(linear=Vector3(x=float("nan"))))
-            cmd_vel.write(Twist(linear=Vector3(x=50.0)))
-            time.sleep(0.1)
-        later = base.pose
-        seen["after_nan"] = math.hypot(later[0] - after[0], later[1] - after[1])
+        (drive if mode == "drive" else navigate)(port, seen)
     finally:
         ros.terminate()
         sim.terminate()
@@ -197,6 +219,106 @@ def main(player_sim, bridge, world):
     print(json.dumps(seen))
 
 
+def navigate(port, seen):
+    nav = wait_for("player-sim", lambda: try_connect(port))
+    participant = DomainParticipant(0)
+    time.sleep(3.0)  # come late: the map must still be there
+    maps = DataReader(participant, Topic(participant, "rt/map", OccupancyGrid), qos=LATCHED)
+    grid = wait_for("the map on rt/map", lambda: next(iter(maps.take(1)), None))
+    seen["map"] = {
+        "width": grid.info.width,
+        "height": grid.info.height,
+        "resolution": grid.info.resolution,
+        "origin": [grid.info.origin.position.x, grid.info.origin.position.y],
+        "values": sorted(set(grid.data)),
+        "corner": grid.data[0],
+        "frame": grid.header.frame_id,
+    }
+    goals = DataWriter(participant, Topic(participant, "rt/nav/goal_pose", PoseStamped), qos=RELIABLE)
+    starts = DataWriter(
+        participant,
+        Topic(participant, "rt/nav/initialpose", PoseWithCovarianceStamped),
+        qos=RELIABLE,
+    )
+    wait_for("the bridge's goal reader", lambda: True if goals.get_publication_matched_status().current_count else None)
+    wait_for("the bridge's start reader", lambda: True if starts.get_publication_matched_status().current_count else None)
+    here = Header(frame_id="map")
+    goals.write(PoseStamped(here, Pose(Point(3.5, 4.5, 0.0), yaw_quaternion(1.57))))
+    planner = nav.planner(0)
+    state = wait_for(
+        "the planner's goal",
+        lambda: (lambda s: s if tuple(round(v, 2) for v in s.goal[:2]) == (3.5, 4.5) else None)(
+            planner.read(timeout=5.0)
+        ),
+    )
+    seen["goal"] = list(state.goal)
+    covariance = [0.0] * 36
+    covariance[0] = covariance[7] = 0.1
+    covariance[35] = 0.05
+    start = PoseWithCovariance(Pose(Point(-6.0, -4.0, 0.0), yaw_quaternion(0.5)), covariance)
+    starts.write(PoseWithCovarianceStamped(here, start))
+    localize = nav.localize(0)
+    estimate = wait_for(
+        "the localizer's new start",
+        lambda: (lambda e: e if abs(e.pose[0] + 6.0) < 0.3 and abs(e.pose[1] + 4.0) < 0.3 else None)(
+            localize.read(timeout=5.0)
+        ),
+    )
+    seen["estimate"] = list(estimate.pose)
+
+
+def drive(port, seen):
+    robot = wait_for("player-sim", lambda: try_connect(port))
+    base = robot.position2d(0)
+    participant = DomainParticipant(0)
+    best_effort = Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(5))
+    reliable = RELIABLE
+    scans = DataReader(participant, Topic(participant, "rt/r0/scan", LaserScan), qos=best_effort)
+    odometry = DataReader(participant, Topic(participant, "rt/r0/odom", Odometry), qos=reliable)
+    cmd_vel = DataWriter(participant, Topic(participant, "rt/r0/cmd_vel", Twist), qos=reliable)
+
+    scan = wait_for("a scan on rt/r0/scan", lambda: next(iter(scans.take(1)), None))
+    seen["scan"] = {
+        "beams": len(scan.ranges),
+        "frame": scan.header.frame_id,
+        "angle_min": scan.angle_min,
+        "range_max": scan.range_max,
+    }
+    odom = wait_for("odometry on rt/r0/odom", lambda: next(iter(odometry.take(1)), None))
+    statics = DataReader(participant, Topic(participant, "rt/tf_static", TFMessage), qos=LATCHED)
+    fixed = wait_for("fixed transforms on rt/tf_static", lambda: next(iter(statics.take(1)), None))
+    seen["tf_static"] = [
+        [t.header.frame_id, t.child_frame_id, t.transform.translation.x]
+        for t in fixed.transforms
+    ]
+    seen["odom"] = {
+        "frame": odom.header.frame_id,
+        "child": odom.child_frame_id,
+        "x": odom.pose.pose.position.x,
+    }
+
+    start = base.pose
+    wait_for("the bridge's cmd_vel reader", lambda: True if cmd_vel.get_publication_matched_status().current_count else None)
+    for _ in range(20):  # two seconds of teleop at 10 Hz
+        cmd_vel.write(Twist(linear=Vector3(x=0.5)))
+        time.sleep(0.1)
+    moved = base.pose
+    seen["moved"] = math.hypot(moved[0] - start[0], moved[1] - start[1])
+
+    time.sleep(1.5)  # teleop "dies": the deadline stops the robot
+    before = base.pose
+    time.sleep(1.0)
+    after = base.pose
+    seen["after_stop"] = math.hypot(after[0] - before[0], after[1] - before[1])
+
+    for _ in range(10):
+        cmd_vel.write(Twist(linear=Vector3(x=float("nan"))))
+        cmd_vel.write(Twist(linear=Vector3(x=50.0)))
+        time.sleep(0.1)
+    later = base.pose
+    seen["after_nan"] = math.hypot(later[0] - after[0], later[1] - after[1])
+
+
 def try_connect(port):
     try:
         return player3.connect("127.0.0.1", port, timeout=1.0, read_only=True)
@@ -205,4 +327,4 @@ def try_connect(port):
 
 
 if __name__ == "__main__":
-    main(*sys.argv[1:4])
+    main(*sys.argv[1:5])

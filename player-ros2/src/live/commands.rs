@@ -4,7 +4,10 @@
 
 use std::time::{Duration, Instant};
 
-use crate::msgs::Twist;
+use crate::msgs::{PoseStamped, PoseWithCovarianceStamped, Quaternion, Twist};
+
+/// Farther than this from the map's origin is not a place but a mistake, m.
+pub const MOST_DISTANCE: f64 = 1.0e5;
 
 /// Faster than this is not a command but a mistake, m/s.
 pub const MOST_SPEED: f64 = 5.0;
@@ -22,6 +25,70 @@ pub enum Refused {
     NotFinite((f64, f64, f64)),
     #[error("a cmd_vel faster than {MOST_SPEED} m/s or {MOST_TURN} rad/s: {0:?}")]
     Absurd((f64, f64, f64)),
+    #[error(
+        "a pose with a value that is not a number or infinite, or {MOST_DISTANCE} m away: {0:?}"
+    )]
+    BadPose((f64, f64, f64)),
+    #[error("a pose in frame {0:?}: Player's planners and localizers take poses in the map")]
+    NotInMap(String),
+    #[error(
+        "an initial pose whose covariance is not a covariance (negative or not finite variance)"
+    )]
+    BadCovariance,
+}
+
+/// (x, y, yaw): a pose in the plane, m and rad.
+pub type PlanarPose = (f64, f64, f64);
+
+/// A quaternion's turn about z.
+pub fn yaw(q: &Quaternion) -> f64 {
+    (2.0 * (q.w * q.z + q.x * q.y)).atan2(1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+}
+
+/// A pose in the map's frame as (x, y, yaw), if sound.
+fn planar(frame: &str, x: f64, y: f64, q: &Quaternion) -> Result<(f64, f64, f64), Refused> {
+    if !(frame.is_empty() || frame == "map" || frame == "/map") {
+        return Err(Refused::NotInMap(frame.to_string()));
+    }
+    let pose = (x, y, yaw(q));
+    let finite = [x, y, q.x, q.y, q.z, q.w].iter().all(|v| v.is_finite());
+    if !finite
+        || x.abs() > MOST_DISTANCE
+        || y.abs() > MOST_DISTANCE
+        || (q.x, q.y, q.z, q.w) == (0.0, 0.0, 0.0, 0.0)
+    {
+        return Err(Refused::BadPose(pose));
+    }
+    Ok(pose)
+}
+
+/// The goal a `goal_pose` asks of a planner: (x, y, yaw) in the map.
+pub fn goal(goal: &PoseStamped) -> Result<(f64, f64, f64), Refused> {
+    let p = &goal.pose;
+    planar(
+        &goal.header.frame_id,
+        p.position.x,
+        p.position.y,
+        &p.orientation,
+    )
+}
+
+/// The pose and the covariance (Player's packed xx, yy, aa, xy, ya, xa) an `initialpose`
+/// gives a localizer.
+pub fn initial_pose(pose: &PoseWithCovarianceStamped) -> Result<(PlanarPose, [f64; 6]), Refused> {
+    let p = &pose.pose.pose;
+    let mean = planar(
+        &pose.header.frame_id,
+        p.position.x,
+        p.position.y,
+        &p.orientation,
+    )?;
+    let c = &pose.pose.covariance;
+    let packed = [c[0][0], c[1][1], c[5][5], c[0][1], c[1][5], c[0][5]];
+    if packed.iter().any(|v| !v.is_finite()) || packed[..3].iter().any(|&v| v < 0.0) {
+        return Err(Refused::BadCovariance);
+    }
+    Ok((mean, packed))
 }
 
 /// The velocity (vx, vy, yaw rate) a `Twist` asks of a planar base.
@@ -101,6 +168,34 @@ mod tests {
             velocity(&twist(0.0, -11.0)),
             Err(Refused::Absurd(_))
         ));
+    }
+
+    #[test]
+    fn goals_and_initial_poses_are_taken_in_the_map_when_sound() {
+        use crate::msgs::{Header, Pose, PoseWithCovariance, Time, covariance};
+        let at = |frame: &str, x: f64| PoseStamped {
+            header: Header::new(Time::default(), frame),
+            pose: Pose::planar(x, 2.0, 1.0),
+        };
+        let (x, y, a) = goal(&at("map", 1.0)).unwrap();
+        assert_eq!((x, y), (1.0, 2.0));
+        assert!((a - 1.0).abs() < 1e-12);
+        assert!(matches!(goal(&at("odom", 1.0)), Err(Refused::NotInMap(_))));
+        assert!(matches!(
+            goal(&at("map", f64::NAN)),
+            Err(Refused::BadPose(_))
+        ));
+        assert!(matches!(goal(&at("map", 1e9)), Err(Refused::BadPose(_))));
+        let start = |variance: f64| PoseWithCovarianceStamped {
+            header: Header::new(Time::default(), "map"),
+            pose: PoseWithCovariance {
+                pose: Pose::planar(0.5, 0.0, 0.0),
+                covariance: covariance([variance, variance, 0.0, 0.0, 0.0, 0.1]),
+            },
+        };
+        let (mean, cov) = initial_pose(&start(0.25)).unwrap();
+        assert_eq!((mean.0, cov), (0.5, [0.25, 0.25, 0.1, 0.0, 0.0, 0.0]));
+        assert_eq!(initial_pose(&start(-1.0)), Err(Refused::BadCovariance));
     }
 
     #[test]

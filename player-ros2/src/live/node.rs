@@ -13,8 +13,8 @@ use serde::Serialize;
 use super::LiveError;
 use crate::convert::{RosOut, convert};
 use crate::msgs::{
-    BatteryState, LaserScan, Odometry, Path, PoseWithCovarianceStamped, RosMessage, TFMessage,
-    Twist,
+    BatteryState, LaserScan, OccupancyGrid, Odometry, Path, PoseStamped, PoseWithCovarianceStamped,
+    RosMessage, TFMessage, Twist,
 };
 use crate::names::namespace;
 
@@ -25,6 +25,8 @@ impl ros2_client::Message for PoseWithCovarianceStamped {}
 impl ros2_client::Message for Path {}
 impl ros2_client::Message for BatteryState {}
 impl ros2_client::Message for Twist {}
+impl ros2_client::Message for PoseStamped {}
+impl ros2_client::Message for OccupancyGrid {}
 
 /// Sensor data as ROS's sensor QoS has it: best effort, the newest few.
 const SENSOR: QosProfile = QosProfile::publisher_default()
@@ -49,6 +51,21 @@ impl<T: Serialize> Default for Outs<T> {
     }
 }
 
+/// What stays for those who come later: a map, the sensors' fixed transforms.
+const LATCHED: QosProfile = QosProfile::publisher_default()
+    .reliability(Reliability::Reliable {
+        when_full: WhenFull::Wait(std::time::Duration::from_millis(100)),
+    })
+    .durability(Durability::TransientLocal)
+    .history(History::KeepLast { depth: 1 });
+
+/// What ROS 2 may tell a robot (none when it is read-only).
+struct Inputs {
+    cmd_vel: Subscription<Twist>,
+    goal_pose: Subscription<PoseStamped>,
+    initial_pose: Subscription<PoseWithCovarianceStamped>,
+}
+
 /// A robot's node.
 pub struct RobotNode {
     ns: String,
@@ -59,7 +76,17 @@ pub struct RobotNode {
     poses: Outs<PoseWithCovarianceStamped>,
     paths: Outs<Path>,
     batteries: Outs<BatteryState>,
-    cmd_vel: Option<Subscription<Twist>>,
+    maps: Outs<OccupancyGrid>,
+    inputs: Option<Inputs>,
+}
+
+/// Every message received on `subscription` since the last look, oldest first.
+fn drain<T: ros2_client::Message + 'static>(subscription: &Subscription<T>) -> Vec<T> {
+    let mut received = Vec::new();
+    while let Ok(Some((message, _))) = subscription.take() {
+        received.push(message);
+    }
+    received
 }
 
 /// `/a/b/c` as ROS 2's (namespace, base name).
@@ -102,23 +129,18 @@ impl RobotNode {
             .name(format!("ros2 {ns}"))
             .spawn(move || futures::executor::block_on(spinner.spin()))
             .map_err(|e| failed("its node's thread", &e))?;
-        let cmd_vel = if read_only {
+        let inputs = if read_only {
             None
         } else {
-            let topic_name =
-                Name::new(&format!("/{ns}"), "cmd_vel").map_err(|e| failed("cmd_vel", &e))?;
-            let qos = QosProfile::subscription_default()
-                .reliability(Reliability::Reliable {
-                    when_full: WhenFull::DEFAULT,
-                })
-                .history(History::KeepLast { depth: 10 });
-            let topic = node
-                .create_topic(&topic_name, type_name::<Twist>(), &qos)
-                .map_err(|e| failed("the cmd_vel topic", &e))?;
-            Some(
-                node.create_subscription::<Twist>(&topic, None)
-                    .map_err(|e| failed("the cmd_vel subscription", &e))?,
-            )
+            Some(Inputs {
+                cmd_vel: subscribe::<Twist>(&mut node, &ns, "cmd_vel")?,
+                goal_pose: subscribe::<PoseStamped>(&mut node, &ns, "goal_pose")?,
+                initial_pose: subscribe::<PoseWithCovarianceStamped>(
+                    &mut node,
+                    &ns,
+                    "initialpose",
+                )?,
+            })
         };
         Ok(RobotNode {
             ns,
@@ -129,7 +151,8 @@ impl RobotNode {
             poses: Outs::default(),
             paths: Outs::default(),
             batteries: Outs::default(),
-            cmd_vel,
+            maps: Outs::default(),
+            inputs,
         })
     }
 
@@ -199,14 +222,73 @@ impl RobotNode {
 
     /// The `cmd_vel`s received since the last call, oldest first.
     pub fn cmd_vels(&self) -> Vec<Twist> {
-        let mut received = Vec::new();
-        if let Some(subscription) = &self.cmd_vel {
-            while let Ok(Some((twist, _))) = subscription.take() {
-                received.push(twist);
-            }
-        }
-        received
+        self.inputs
+            .as_ref()
+            .map_or_else(Vec::new, |i| drain(&i.cmd_vel))
     }
+
+    /// The goals (`goal_pose`, as rviz2's "2D Goal Pose" sends them) since the last call.
+    pub fn goals(&self) -> Vec<PoseStamped> {
+        self.inputs
+            .as_ref()
+            .map_or_else(Vec::new, |i| drain(&i.goal_pose))
+    }
+
+    /// The poses a localizer is told to start from (`initialpose`) since the last call.
+    pub fn initial_poses(&self) -> Vec<PoseWithCovarianceStamped> {
+        self.inputs
+            .as_ref()
+            .map_or_else(Vec::new, |i| drain(&i.initial_pose))
+    }
+
+    /// Publishes a map on `topic` (`/map`), kept for subscribers who come later.
+    pub fn publish_map(&mut self, topic: &str, grid: OccupancyGrid) -> Result<(), LiveError> {
+        publish(
+            &mut self.node,
+            &mut self.maps,
+            topic,
+            LATCHED,
+            grid,
+            &self.ns,
+        )
+    }
+
+    /// Publishes the robot's fixed transforms (its sensors on its base) on `/tf_static`, kept
+    /// for subscribers who come later.
+    pub fn publish_static(&mut self, transforms: TFMessage) -> Result<(), LiveError> {
+        publish(
+            &mut self.node,
+            &mut self.tf,
+            "/tf_static",
+            LATCHED,
+            transforms,
+            &self.ns,
+        )
+    }
+}
+
+/// A reliable subscription to `/ns/base`.
+fn subscribe<T: RosMessage + ros2_client::Message + 'static>(
+    node: &mut Node,
+    ns: &str,
+    base: &str,
+) -> Result<Subscription<T>, LiveError> {
+    let failed = |e: &dyn std::fmt::Display| LiveError::Create {
+        robot: ns.to_string(),
+        what: format!("the {base} subscription"),
+        message: e.to_string(),
+    };
+    let name = Name::new(&format!("/{ns}"), base).map_err(|e| failed(&e))?;
+    let qos = QosProfile::subscription_default()
+        .reliability(Reliability::Reliable {
+            when_full: WhenFull::DEFAULT,
+        })
+        .history(History::KeepLast { depth: 10 });
+    let topic = node
+        .create_topic(&name, type_name::<T>(), &qos)
+        .map_err(|e| failed(&e))?;
+    node.create_subscription::<T>(&topic, None)
+        .map_err(|e| failed(&e))
 }
 
 /// Publishes `message` on `topic`, making its publisher the first time.

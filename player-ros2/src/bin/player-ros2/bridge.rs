@@ -13,6 +13,8 @@ use player_proto::wire::{DevAddr, Interface};
 use player_ros2::live::commands::{Deadline, Refused, velocity};
 use player_ros2::live::{RobotNode, Ros2};
 
+use crate::once::{goals_and_poses, latched};
+
 /// What the bridge subscribes to: what it has a ROS 2 counterpart for.
 const MAPPED: [Interface; 4] = [
     Interface::LASER,
@@ -55,6 +57,7 @@ struct Bridged {
     subscribed: bool,
     seen: HashMap<(DevAddr, u8), u64>,
     deadline: Deadline,
+    /// Kinds of refused command already said.
     refused: HashSet<&'static str>,
 }
 
@@ -122,11 +125,13 @@ impl Bridged {
                 tracing::warn!("{}: cannot subscribe to {}: {e}", self.robot, device.addr);
             }
         }
+        latched(&self.robot, &self.client, &mut self.node);
     }
 
     /// The newest sound cmd_vel to the base (each unsound one refused); a stop when they
     /// stopped coming.
     fn drive(&mut self) {
+        goals_and_poses(&self.robot, &self.client, &self.node, &mut self.refused);
         let now = Instant::now();
         let base = self.client.position2d(0);
         let mut newest = None;

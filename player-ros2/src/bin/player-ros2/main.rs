@@ -3,6 +3,7 @@
 //! (unless `--read-only`). See docs/ROS2.md.
 
 mod bridge;
+mod once;
 
 use std::process::ExitCode;
 
