@@ -5,11 +5,16 @@ use foxglove::messages::{CompressedImage, RawImage, Timestamp};
 use player_proto::interfaces::camera::{
     COMPRESS_JPEG, COMPRESS_RAW, CameraData, FORMAT_MONO8, FORMAT_RGB888,
 };
+use player_proto::interfaces::camera_pixels::CameraImageError;
 
 use crate::FoxgloveMessage;
 
-/// The frame as an image message, or why it cannot be shown.
-pub fn image(time: Timestamp, frame: &str, data: &CameraData) -> Result<FoxgloveMessage, String> {
+/// The frame as an image message, or why its pixels cannot be read.
+pub fn image(
+    time: Timestamp,
+    frame: &str,
+    data: &CameraData,
+) -> Result<FoxgloveMessage, CameraImageError> {
     if data.compression == COMPRESS_JPEG {
         return Ok(FoxgloveMessage::CompressedImage(CompressedImage {
             timestamp: Some(time),
@@ -36,7 +41,7 @@ pub fn image(time: Timestamp, frame: &str, data: &CameraData) -> Result<Foxglove
             FoxgloveMessage::RawImage(raw("rgb8", 3, data.image.0.clone())),
         ),
         _ => {
-            let rgba = data.to_rgba().map_err(|e| e.to_string())?;
+            let rgba = data.to_rgba()?;
             Ok(FoxgloveMessage::RawImage(raw(
                 "rgba8",
                 4,

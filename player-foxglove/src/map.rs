@@ -4,13 +4,34 @@
 
 use foxglove::messages::packed_element_field::NumericType;
 use foxglove::messages::{Grid, PackedElementField, Timestamp, Vector2};
-use player_proto::interfaces::map::{MapData, MapInfo};
+use player_proto::interfaces::map::{MapData, MapError, MapInfo};
 
 use crate::frames::{WORLD, pose2d};
 
 /// The most cells a map may have to be put together (a 8 192 × 8 192 map at 5 cm is 400 m
 /// square): a lying info cannot make a converter allocate without bound.
 pub const MAX_CELLS: u64 = 1 << 26;
+
+/// Why a map or a tile cannot be put together.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum MapStateError {
+    #[error("a {width}×{height} map is empty or above {MAX_CELLS} cells")]
+    Size { width: u32, height: u32 },
+    #[error("a tile does not decode: {0}")]
+    Tile(#[from] MapError),
+    #[error(
+        "a {width}×{height} tile at ({col}, {row}) is outside the {map_width}×{map_height} map"
+    )]
+    Outside {
+        width: u32,
+        height: u32,
+        col: u32,
+        row: u32,
+        map_width: u32,
+        map_height: u32,
+    },
+}
 
 /// A map being put together.
 #[derive(Debug, Clone)]
@@ -25,13 +46,13 @@ pub struct MapState {
 
 impl MapState {
     /// A new map of this size, or why not.
-    pub fn new(info: MapInfo) -> Result<MapState, String> {
+    pub fn new(info: MapInfo) -> Result<MapState, MapStateError> {
         let cells = u64::from(info.width) * u64::from(info.height);
         if cells == 0 || cells > MAX_CELLS {
-            return Err(format!(
-                "a {}×{} map is empty or above {MAX_CELLS} cells",
-                info.width, info.height
-            ));
+            return Err(MapStateError::Size {
+                width: info.width,
+                height: info.height,
+            });
         }
         Ok(MapState {
             info,
@@ -46,8 +67,8 @@ impl MapState {
     }
 
     /// Puts a tile in; the whole grid once no cell is missing.
-    pub fn tile(&mut self, time: Timestamp, tile: &MapData) -> Result<Option<Grid>, String> {
-        let cells = tile.cells().map_err(|e| e.to_string())?;
+    pub fn tile(&mut self, time: Timestamp, tile: &MapData) -> Result<Option<Grid>, MapStateError> {
+        let cells = tile.cells()?;
         let (width, height) = (self.info.width, self.info.height);
         let fits = tile.col.checked_add(tile.width).is_some_and(|e| e <= width)
             && tile
@@ -55,10 +76,14 @@ impl MapState {
                 .checked_add(tile.height)
                 .is_some_and(|e| e <= height);
         if !fits {
-            return Err(format!(
-                "a {}×{} tile at ({}, {}) is outside the {width}×{height} map",
-                tile.width, tile.height, tile.col, tile.row
-            ));
+            return Err(MapStateError::Outside {
+                width: tile.width,
+                height: tile.height,
+                col: tile.col,
+                row: tile.row,
+                map_width: width,
+                map_height: height,
+            });
         }
         for (i, &cell) in cells.iter().enumerate() {
             let (x, y) = (i as u32 % tile.width, i as u32 / tile.width);
@@ -118,9 +143,15 @@ mod tests {
 
     #[test]
     fn lying_sizes_are_refused() {
-        assert!(MapState::new(info(1 << 20, 1 << 20)).is_err());
+        assert!(matches!(
+            MapState::new(info(1 << 20, 1 << 20)),
+            Err(MapStateError::Size { .. })
+        ));
         let mut map = MapState::new(info(2, 2)).unwrap();
         let outside = MapData::compress(1, 1, 2, 2, 1, &[0; 4]);
-        assert!(map.tile(Timestamp::MIN, &outside).is_err());
+        assert!(matches!(
+            map.tile(Timestamp::MIN, &outside),
+            Err(MapStateError::Outside { col: 1, .. })
+        ));
     }
 }

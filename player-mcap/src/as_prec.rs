@@ -10,6 +10,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 /// Why an MCAP file cannot be read as a recording.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum FromMcapError {
     #[error("cannot open {path}: {source}")]
     Open {

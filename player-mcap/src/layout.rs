@@ -15,8 +15,35 @@ use std::collections::BTreeMap;
 
 use player_proto::capture::Direction;
 use player_proto::recording::Event;
-use player_proto::wire::BANNER_LEN;
+use player_proto::wire::{BANNER_LEN, HeaderError};
 use serde_json::{Value, json};
+
+/// Why a channel or a message that says it is Player's is not.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum LayoutError {
+    #[error("connection number {0:?} is not a number")]
+    Connection(String),
+    #[error("unknown Player stream {0:?}")]
+    UnknownStream(String),
+    /// What the JSON reader said.
+    #[error("session message is not JSON: {0}")]
+    NotJson(String),
+    #[error("session message without a string {0:?}")]
+    Missing(&'static str),
+    #[error("connection event without a port from 0 to 65535")]
+    NoPort,
+    #[error("unknown session event {0:?}")]
+    UnknownEvent(String),
+    #[error("banner {0:?} is not {BANNER_LEN} bytes of hex")]
+    Banner(String),
+    #[error("{0} bytes, no 40-byte Player header")]
+    NoHeader(usize),
+    #[error("bad Player header: {0}")]
+    Header(#[from] HeaderError),
+    #[error("the Player header announces {announced} body bytes, the message holds {holds}")]
+    BodySize { announced: u32, holds: usize },
+}
 
 /// Channel metadata key: the recorded connection number.
 pub const META_CONNECTION: &str = "player.connection";
@@ -116,14 +143,14 @@ impl Stream {
 /// A channel's connection and stream from its metadata; `None` if it is not a Player channel.
 pub fn player_channel(
     metadata: &BTreeMap<String, String>,
-) -> Option<Result<(u32, Stream), String>> {
+) -> Option<Result<(u32, Stream), LayoutError>> {
     let connection = metadata.get(META_CONNECTION)?;
     let stream = metadata.get(META_STREAM)?;
     Some(
         match (connection.parse::<u32>(), Stream::from_name(stream)) {
             (Ok(c), Some(s)) => Ok((c, s)),
-            (Err(_), _) => Err(format!("connection number {connection:?} is not a number")),
-            (_, None) => Err(format!("unknown Player stream {stream:?}")),
+            (Err(_), _) => Err(LayoutError::Connection(connection.clone())),
+            (_, None) => Err(LayoutError::UnknownStream(stream.clone())),
         },
     )
 }
@@ -142,14 +169,14 @@ pub fn session_json(event: &Event) -> Option<Vec<u8>> {
 }
 
 /// Parses a session message back into its event.
-pub fn parse_session(data: &[u8]) -> Result<Event, String> {
+pub fn parse_session(data: &[u8]) -> Result<Event, LayoutError> {
     let value: Value =
-        serde_json::from_slice(data).map_err(|e| format!("session message is not JSON: {e}"))?;
-    let text = |key: &str| {
+        serde_json::from_slice(data).map_err(|e| LayoutError::NotJson(e.to_string()))?;
+    let text = |key: &'static str| {
         value
             .get(key)
             .and_then(Value::as_str)
-            .ok_or_else(|| format!("session message without a string {key:?}"))
+            .ok_or(LayoutError::Missing(key))
     };
     match text("event")? {
         "connection" => {
@@ -157,7 +184,7 @@ pub fn parse_session(data: &[u8]) -> Result<Event, String> {
                 .get("port")
                 .and_then(Value::as_u64)
                 .and_then(|p| u16::try_from(p).ok())
-                .ok_or("connection event without a port from 0 to 65535")?;
+                .ok_or(LayoutError::NoPort)?;
             Ok(Event::Connection {
                 host: text("host")?.to_string(),
                 port,
@@ -169,7 +196,7 @@ pub fn parse_session(data: &[u8]) -> Result<Event, String> {
         "closed" => Ok(Event::Closed {
             why: text("why")?.to_string(),
         }),
-        other => Err(format!("unknown session event {other:?}")),
+        other => Err(LayoutError::UnknownEvent(other.to_string())),
     }
 }
 
@@ -177,8 +204,8 @@ fn hex(bytes: &[u8]) -> String {
     bytes.iter().map(|b| format!("{b:02x}")).collect()
 }
 
-fn unhex(text: &str) -> Result<[u8; BANNER_LEN], String> {
-    let bad = || format!("banner {text:?} is not {BANNER_LEN} bytes of hex");
+fn unhex(text: &str) -> Result<[u8; BANNER_LEN], LayoutError> {
+    let bad = || LayoutError::Banner(text.to_string());
     if text.len() != 2 * BANNER_LEN || !text.is_ascii() {
         return Err(bad());
     }
@@ -222,7 +249,7 @@ mod tests {
             (br#"{"event":"dance"}"#, "unknown session event"),
             (br#"{"host":"a"}"#, "\"event\""),
         ] {
-            let error = parse_session(data).expect_err("refused");
+            let error = parse_session(data).expect_err("refused").to_string();
             assert!(error.contains(says), "{error}");
         }
     }
@@ -234,6 +261,9 @@ mod tests {
         assert_eq!(player_channel(&BTreeMap::new()), None);
         let mut bad = meta.clone();
         bad.insert(META_STREAM.into(), "sideways".into());
-        assert!(player_channel(&bad).expect("a player channel").is_err());
+        assert_eq!(
+            player_channel(&bad),
+            Some(Err(LayoutError::UnknownStream("sideways".into())))
+        );
     }
 }

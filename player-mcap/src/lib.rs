@@ -42,6 +42,7 @@ pub fn is_mcap(path: &std::path::Path) -> bool {
 
 /// A conversion that failed, or stopped at damage after converting what came before it.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum ConvertError {
     #[error(transparent)]
     ReadPrec(#[from] ReadError),

@@ -13,7 +13,7 @@ use player_proto::recording::format::MAX_PAYLOAD;
 use player_proto::recording::{Event, Record};
 use player_proto::wire::{HEADER_LEN, Header};
 
-use crate::layout::{FILE_METADATA, Stream, parse_session, player_channel};
+use crate::layout::{FILE_METADATA, LayoutError, Stream, parse_session, player_channel};
 
 /// Bytes read from the file at a time.
 const READ_PIECE: usize = 64 * 1024;
@@ -23,6 +23,7 @@ const RECORD_LIMIT: usize = MAX_PAYLOAD + 16 * 1024 * 1024;
 
 /// Why the records of an MCAP file cannot be read (any further).
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum McapReadError {
     #[error("reading the MCAP file at byte {offset}: {source}")]
     Io { offset: u64, source: std::io::Error },
@@ -41,7 +42,7 @@ pub enum McapReadError {
         topic: String,
         channel: u16,
         offset: u64,
-        reason: String,
+        reason: LayoutError,
     },
     #[error(
         "message {index} of channel {topic:?} (record {records} of the recording, at or before byte {offset}): {reason}"
@@ -51,7 +52,7 @@ pub enum McapReadError {
         index: u64,
         records: u64,
         offset: u64,
-        reason: String,
+        reason: LayoutError,
     },
     #[error(
         "a message at or before byte {offset} is on channel id {channel}, which no channel record declared"
@@ -229,24 +230,23 @@ impl<R: Read> Iterator for McapRecords<R> {
 }
 
 /// The event an MCAP message of a Player stream carries.
-fn to_event(stream: Stream, data: &[u8]) -> Result<Event, String> {
+fn to_event(stream: Stream, data: &[u8]) -> Result<Event, LayoutError> {
     let direction = match stream {
         Stream::Session => return parse_session(data),
         Stream::ToClient => Direction::ServerToClient,
         Stream::ToServer => Direction::ClientToServer,
     };
     let header = match Header::decode_slice(data) {
-        None => return Err(format!("{} bytes, no 40-byte Player header", data.len())),
-        Some(Err(e)) => return Err(format!("bad Player header: {e}")),
+        None => return Err(LayoutError::NoHeader(data.len())),
+        Some(Err(e)) => return Err(LayoutError::Header(e)),
         Some(Ok(header)) => header,
     };
     let body = &data[HEADER_LEN..];
     if body.len() != header.size as usize {
-        return Err(format!(
-            "the Player header announces {} body bytes, the message holds {}",
-            header.size,
-            body.len()
-        ));
+        return Err(LayoutError::BodySize {
+            announced: header.size,
+            holds: body.len(),
+        });
     }
     Ok(Event::Message {
         direction,

@@ -23,6 +23,7 @@ const CHUNK_AT_MOST: Duration = Duration::from_secs(1);
 
 /// Why a recording could not start.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum RecordError {
     #[error("cannot create the recording {path}: {source}")]
     Create { path: String, source: io::Error },

@@ -12,6 +12,7 @@ use crate::layout::{FILE_METADATA, Stream, session_json};
 
 /// Why an MCAP file could not be written.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum McapWriteError {
     #[error("writing the MCAP file (after {records} records): {source}")]
     Mcap {

@@ -51,13 +51,14 @@ pub const DEFAULT_SEND_BUFFER: usize = 64 * 1024;
 
 /// Why the relay could not start.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum RelayError {
     #[error("no robot to relay")]
     NoRobots,
     #[error("cannot start the upstream client: {0}")]
     Upstream(#[from] ConnectError),
     #[error("cannot start a relay thread: {0}")]
-    Thread(String),
+    Thread(#[source] std::io::Error),
     /// Two robots given one name: every front would show them as one.
     #[error("two robots are named {0}")]
     SameName(String),

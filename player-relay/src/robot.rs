@@ -90,7 +90,7 @@ impl RelayedRobot {
         let thread = std::thread::Builder::new()
             .name(format!("relay {id}"))
             .spawn(move || follower.run(woken))
-            .map_err(|e| RelayError::Thread(e.to_string()))?;
+            .map_err(RelayError::Thread)?;
         Ok(RelayedRobot {
             id: id.clone(),
             upstream,

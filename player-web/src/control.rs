@@ -17,6 +17,7 @@ use player_proto::server::{CommandGate, Commanders, Peer};
 use player_proto::wire::{DevAddr, Interface, MsgType};
 
 use crate::page::FromPage;
+use crate::refused::Refused;
 
 /// How long a velocity holds without a repeat. The page repeats every 100 ms while a key is
 /// held: five repeats lost in a row stop the base.
@@ -75,14 +76,14 @@ impl Control {
         peer: Peer,
         command: FromPage,
         driven: &mut Driven,
-    ) -> Result<(), String> {
+    ) -> Result<(), Refused> {
         let (robot, device) = match &command {
             FromPage::Goal { robot, device, .. } | FromPage::Velocity { robot, device, .. } => {
                 (robot.clone(), *device)
             }
         };
         if device.interf != Interface::POSITION2D {
-            return Err(format!("{device} is not a position2d device"));
+            return Err(Refused::NotABase(device));
         }
         let client = self
             .robots
@@ -90,7 +91,7 @@ impl Control {
             .unwrap_or_else(|e| e.into_inner())
             .get(&robot)
             .cloned()
-            .ok_or_else(|| format!("no robot {robot:?} here"))?;
+            .ok_or_else(|| Refused::NoRobot(robot.clone()))?;
         let devices = client.devices();
         let has = |interf: Interface| {
             devices
@@ -98,7 +99,7 @@ impl Control {
                 .any(|d| (d.addr.interf, d.addr.index) == (interf, device.index))
         };
         if !has(device.interf) {
-            return Err(format!("{robot} has no {device}"));
+            return Err(Refused::NoDevice { robot, device });
         }
         let (addr, body) = match command {
             FromPage::Velocity { command, .. } => {
@@ -127,14 +128,16 @@ impl Control {
         };
         let message = Message::typed(addr, MsgType::Cmd, body.clone());
         if !self.gate.admits(peer, &message) {
-            return Err(format!(
-                "{}: this page only observes",
-                self.standing(peer).1
-            ));
+            let rule = self.standing(peer).1;
+            return Err(Refused::Observer { rule });
         }
         client
             .try_command(client.addr(addr.interf, addr.index), body)
-            .map_err(|e| format!("{robot} {addr}: {e}"))
+            .map_err(|source| Refused::NotSent {
+                robot,
+                device: addr,
+                source,
+            })
     }
 
     /// Stops every base `driven` moves whose velocity was not repeated within [`DEAD_MAN`]

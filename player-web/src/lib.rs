@@ -20,6 +20,7 @@ pub mod control;
 pub mod http;
 pub mod hub;
 pub mod page;
+pub mod refused;
 pub mod socket;
 pub mod walls;
 
@@ -39,6 +40,7 @@ pub const STATUS_EVERY: Duration = Duration::from_secs(1);
 
 /// Why the page cannot be served.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum WebError {
     #[error("cannot listen for the web page on {addr}: {source}")]
     Bind {

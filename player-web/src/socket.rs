@@ -16,6 +16,7 @@ use tokio::sync::broadcast::error::{RecvError, TryRecvError};
 use crate::control::{Control, DEAD_MAN, Driven, peer};
 use crate::hub::{Hub, to_json};
 use crate::page::{FromPage, ToPage};
+use crate::refused::Refused;
 
 /// The most frames written at once.
 const BATCH: usize = 64;
@@ -62,7 +63,7 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
                     let text = match message {
                         Some(Ok(Message::Text(text))) => text,
                         Some(Ok(Message::Binary(_))) => {
-                            refuse(&mut out, "binary frames mean nothing here: send JSON text").await;
+                            refuse(&mut out, &Refused::Binary).await;
                             continue;
                         }
                         Some(Ok(Message::Ping(_) | Message::Pong(_))) => continue,
@@ -74,7 +75,7 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
                         }
                     };
                     let outcome = serde_json::from_str::<FromPage>(&text)
-                        .map_err(|e| format!("not a command: {e}"))
+                        .map_err(Refused::from)
                         .and_then(|command| control.execute(page, command, &mut driven));
                     if let Err(why) = outcome {
                         refuse(&mut out, &why).await;
@@ -101,7 +102,7 @@ async fn send_all(out: &mut Out, frames: Vec<crate::hub::Frame>) -> Result<(), S
     send_within(out, frames.into_iter().map(Message::Text)).await
 }
 
-async fn refuse(out: &mut Out, why: &str) {
+async fn refuse(out: &mut Out, why: &Refused) {
     let frame = to_json(&ToPage::Refused {
         why: why.to_string(),
     });

@@ -2,6 +2,7 @@
 
 /// Why a Zenoh front or bridge could not start or carry on.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum ZenohError {
     /// Zenoh refused the configuration, or a session, key, subscriber or queryable.
     #[error("zenoh: {0}")]

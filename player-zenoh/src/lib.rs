@@ -50,7 +50,7 @@ pub use error::ZenohError;
 pub use from_zenoh::{FromZenoh, FromZenohConfig};
 pub use front::{DEFAULT_QUEUE, FrontConfig, ZenohFront};
 pub use keys::RobotKey;
-pub use options::{Mode, ZenohOptions};
+pub use options::{Mode, UnknownMode, ZenohOptions};
 pub use stamp::{MAX_COMMAND_AGE, Stamp};
 /// The Zenoh crate this one is built on, for opening sessions.
 pub use zenoh;

@@ -20,14 +20,19 @@ pub enum Mode {
     Router,
 }
 
+/// A mode Zenoh does not have.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("expected peer, client or router, got {0:?}")]
+pub struct UnknownMode(pub String);
+
 impl FromStr for Mode {
-    type Err = String;
-    fn from_str(text: &str) -> Result<Mode, String> {
+    type Err = UnknownMode;
+    fn from_str(text: &str) -> Result<Mode, UnknownMode> {
         match text {
             "peer" => Ok(Mode::Peer),
             "client" => Ok(Mode::Client),
             "router" => Ok(Mode::Router),
-            _ => Err(format!("expected peer, client or router, got {text:?}")),
+            _ => Err(UnknownMode(text.to_string())),
         }
     }
 }
@@ -124,7 +129,7 @@ mod tests {
         };
         options.config().expect("Zenoh accepts it");
         assert_eq!("router".parse(), Ok(Mode::Router));
-        assert!("hub".parse::<Mode>().is_err());
+        assert_eq!("hub".parse::<Mode>(), Err(UnknownMode("hub".into())));
     }
 
     fn free_port() -> u16 {

@@ -18,6 +18,7 @@ use player_proto::wire::Header;
 
 use super::channels::Channels;
 use super::outbox::{Data, Outbox};
+use super::refusal::Refusal;
 use super::wire::{ChannelId, SubscriptionId};
 use crate::frames::timestamp;
 use crate::{Converter, Output, log};
@@ -118,20 +119,20 @@ impl Hub {
         viewer: ViewerId,
         subscription: SubscriptionId,
         channel: ChannelId,
-    ) -> Result<(), String> {
+    ) -> Result<(), Refusal> {
         let mut state = self.lock();
         let state = &mut *state;
         if !state.channels.contains(channel) {
-            return Err(format!("Unknown channel ID {channel}"));
+            return Err(Refusal::UnknownChannel(channel));
         }
         let Some(entry) = state.viewers.get_mut(&viewer) else {
             return Ok(());
         };
         if entry.subscriptions.contains_key(&subscription) {
-            return Err(format!("Subscription ID {subscription} is already in use"));
+            return Err(Refusal::SubscriptionInUse(subscription));
         }
         if entry.subscriptions.values().any(|c| *c == channel) {
-            return Err(format!("Already subscribed to channel ID {channel}"));
+            return Err(Refusal::AlreadySubscribed(channel));
         }
         entry.subscriptions.insert(subscription, channel);
         for (payload, log_time) in state.channels.latched(channel) {
@@ -158,13 +159,13 @@ impl Hub {
         &self,
         viewer: ViewerId,
         subscription: SubscriptionId,
-    ) -> Result<(), String> {
+    ) -> Result<(), Refusal> {
         let mut state = self.lock();
         let channel = state
             .viewers
             .get_mut(&viewer)
             .and_then(|v| v.subscriptions.remove(&subscription))
-            .ok_or_else(|| format!("Unknown subscription ID {subscription}"))?;
+            .ok_or(Refusal::UnknownSubscription(subscription))?;
         state.unlist(channel, viewer);
         Ok(())
     }

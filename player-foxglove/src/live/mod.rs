@@ -17,12 +17,14 @@
 //! * [`outbox`] — a viewer's bounded queue (oldest dropped, in count and bytes): the kit's
 //!   (`player_front::outbox`) with Foxglove's bounds;
 //! * [`session`] — a viewer's socket: bursts out, requests in;
+//! * [`refusal`] — why a request is refused, as the error status says it;
 //! * [`server`] — the listener and the upgrade;
 //! * [`wire`] — the protocol's messages.
 
 mod channels;
 mod hub;
 pub mod outbox;
+pub mod refusal;
 pub mod server;
 pub mod session;
 pub mod wire;
@@ -39,6 +41,7 @@ pub use outbox::{BACKLOG_BYTES, MESSAGE_BACKLOG};
 
 /// Why the live server could not start.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum LiveError {
     #[error("cannot start the Foxglove WebSocket server on {address}:{port}: {source}")]
     Start {

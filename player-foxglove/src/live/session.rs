@@ -13,6 +13,7 @@ use player_front::socket::{CloseCode, Out, SendError, close, send_within};
 
 use super::hub::{Hub, ViewerId};
 use super::outbox::{Batch, Outbox, viewer_outbox};
+use super::refusal::Refusal;
 use super::wire::{self, Level, Request};
 
 /// Serves one viewer until it or the server goes.
@@ -55,27 +56,23 @@ pub async fn serve_viewer(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, se
 
 /// Carries out one text request; what is wrong with it goes back as an error status.
 fn request(hub: &Hub, outbox: &Outbox, viewer: ViewerId, text: &str) {
-    let outcome = wire::parse_request(text).and_then(|request| {
-        let mut errors = Vec::new();
-        match request {
-            Request::Subscribe(subscriptions) => {
-                for (subscription, channel) in subscriptions {
-                    errors.extend(hub.subscribe(viewer, subscription, channel).err());
-                }
-            }
-            Request::Unsubscribe(subscriptions) => {
-                for subscription in subscriptions {
-                    errors.extend(hub.unsubscribe(viewer, subscription).err());
-                }
+    let mut refusals = Vec::new();
+    match wire::parse_request(text) {
+        Err(refusal) => refusals.push(refusal),
+        Ok(Request::Subscribe(subscriptions)) => {
+            for (subscription, channel) in subscriptions {
+                refusals.extend(hub.subscribe(viewer, subscription, channel).err());
             }
         }
-        match errors.is_empty() {
-            true => Ok(()),
-            false => Err(errors.join("; ")),
+        Ok(Request::Unsubscribe(subscriptions)) => {
+            for subscription in subscriptions {
+                refusals.extend(hub.unsubscribe(viewer, subscription).err());
+            }
         }
-    });
-    if let Err(why) = outcome {
-        outbox.push_control(wire::status(Level::Error, &why));
+    }
+    if !refusals.is_empty() {
+        let why: Vec<String> = refusals.iter().map(Refusal::to_string).collect();
+        outbox.push_control(wire::status(Level::Error, &why.join("; ")));
     }
 }
 

@@ -8,6 +8,8 @@ use bytes::{BufMut, Bytes, BytesMut};
 use serde::Deserialize;
 use serde_json::json;
 
+use super::refusal::Refusal;
+
 /// The subprotocols a viewer may offer, in the server's order of preference: the spec's name
 /// (Lichtblick, older Foxglove Studio) and the SDK's name for the same protocol (newer
 /// Foxglove clients).
@@ -128,8 +130,8 @@ const UNSUPPORTED: &[&str] = &[
     "fetchAsset",
 ];
 
-/// A client's text message as a request, or the `status` text that says why not.
-pub fn parse_request(text: &str) -> Result<Request, String> {
+/// A client's text message as a request, or why not.
+pub fn parse_request(text: &str) -> Result<Request, Refusal> {
     match serde_json::from_str::<Incoming>(text) {
         Ok(Incoming::Subscribe { subscriptions }) => Ok(Request::Subscribe(
             subscriptions
@@ -145,10 +147,8 @@ pub fn parse_request(text: &str) -> Result<Request, String> {
                 .ok()
                 .and_then(|v| v.get("op").and_then(|op| op.as_str().map(str::to_string)));
             Err(match op {
-                Some(op) if UNSUPPORTED.contains(&op.as_str()) => {
-                    format!("Unsupported operation {op:?}: this server advertises no capabilities")
-                }
-                _ => format!("Invalid message: {e}"),
+                Some(op) if UNSUPPORTED.contains(&op.as_str()) => Refusal::Unsupported(op),
+                _ => Refusal::Invalid(e.to_string()),
             })
         }
     }
@@ -174,10 +174,14 @@ mod tests {
             r#"{"op":"subscribe"}"#,
         ] {
             let why = parse_request(bad).unwrap_err();
-            assert!(why.starts_with("Invalid message"), "{bad}: {why}");
+            assert!(matches!(why, Refusal::Invalid(_)), "{bad}: {why}");
         }
         let why = parse_request(r#"{"op":"getParameters","parameterNames":[]}"#).unwrap_err();
-        assert!(why.starts_with("Unsupported operation"), "{why}");
+        assert_eq!(why, Refusal::Unsupported("getParameters".into()));
+        assert!(
+            why.to_string().starts_with("Unsupported operation"),
+            "{why}"
+        );
     }
 
     #[test]
