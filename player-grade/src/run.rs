@@ -21,6 +21,10 @@ use crate::trace::Trace;
 
 /// How often the run looks at its program and its simulation.
 const LOOK: Duration = Duration::from_millis(10);
+/// How long a run waits, once its program ended, for the program's last commands to be taken
+/// (its connection closed, its last step stepped): the run then ends at the same step every
+/// time.
+const SETTLE: Duration = Duration::from_secs(3);
 
 /// A student's submission.
 #[derive(Debug, Clone)]
@@ -279,6 +283,7 @@ fn drive(
     let ending = loop {
         if let Ok(Some(status)) = child.try_wait() {
             use std::os::unix::process::ExitStatusExt;
+            settle(running);
             break Ending::Exited {
                 code: status.code(),
                 signal: status.signal(),
@@ -296,6 +301,18 @@ fn drive(
     let _ = child.kill();
     let _ = child.wait();
     (ending, output)
+}
+
+/// Waits, at most [`SETTLE`], until the simulation has taken every step the ended program
+/// answered.
+fn settle(running: &Running) {
+    let Some(lockstep) = &running.lockstep else {
+        return;
+    };
+    let until = Instant::now() + SETTLE;
+    while !lockstep.settled() && !running.finished() && Instant::now() < until {
+        std::thread::sleep(LOOK);
+    }
 }
 
 /// A fresh folder (readable by all, so that `nobody` can run from it) with the submission in

@@ -33,6 +33,9 @@ enum Turn {
     Answered,
     /// It missed a step's patience: not waited for until it commands again.
     Absent,
+    /// It answered, then its connection closed: its answer still counts for this step, which
+    /// is taken as if it had stayed, and then it is forgotten.
+    Gone,
 }
 
 #[derive(Debug)]
@@ -49,6 +52,8 @@ struct Turns {
     waiting_since: Instant,
     /// The simulation runs on its own: no driver present, and the patience for one passed.
     running_alone: bool,
+    /// The stepper is waiting in [`Lockstep::next_step`].
+    stepper_waiting: bool,
 }
 
 impl Turns {
@@ -58,7 +63,7 @@ impl Turns {
             .values()
             .fold((0, 0), |(present, answered), turn| match turn {
                 Turn::Absent => (present, answered),
-                Turn::Answered => (present + 1, answered + 1),
+                Turn::Answered | Turn::Gone => (present + 1, answered + 1),
                 Turn::Pending => (present + 1, answered),
             })
     }
@@ -101,6 +106,7 @@ impl Lockstep {
                 released: 0,
                 waiting_since: Instant::now(),
                 running_alone: false,
+                stepper_waiting: false,
             }),
             changed: Condvar::new(),
             steps: watch::channel(0).0,
@@ -165,14 +171,32 @@ impl Lockstep {
         self.changed.notify_all();
     }
 
-    /// Connection `peer` closed: the steps stop waiting for it.
+    /// Connection `peer` closed: the steps stop waiting for it (a command it sent for this
+    /// step still counts for it).
     pub fn left(&self, peer: u64) {
         let mut turns = self.lock();
-        if turns.drivers.remove(&peer).is_some() && turns.present().0 == 0 {
-            turns.waiting_since = Instant::now();
+        match turns.drivers.get(&peer) {
+            Some(Turn::Answered) => {
+                turns.drivers.insert(peer, Turn::Gone);
+            }
+            Some(_) => {
+                turns.drivers.remove(&peer);
+                if turns.present().0 == 0 {
+                    turns.waiting_since = Instant::now();
+                }
+            }
+            None => {}
         }
         drop(turns);
         self.changed.notify_all();
+    }
+
+    /// Whether every driver's connection has closed and every step they answered has been
+    /// taken, the stepper waiting for the next: a run ended by its program's end ends here, at
+    /// the same step every time.
+    pub fn settled(&self) -> bool {
+        let turns = self.lock();
+        turns.drivers.is_empty() && turns.stepper_waiting && turns.released == 0
     }
 
     /// Lets `steps` more steps go without waiting for anyone.
@@ -185,27 +209,28 @@ impl Lockstep {
     /// The caller takes the step, then calls [`Self::stepped`].
     pub fn next_step(&self, stop: &AtomicBool) -> Option<StepCause> {
         let mut turns = self.lock();
-        loop {
+        turns.stepper_waiting = true;
+        let cause = loop {
             if stop.load(Ordering::Relaxed) {
-                return None;
+                break None;
             }
             if turns.released > 0 {
                 turns.released -= 1;
-                return Some(StepCause::Released);
+                break Some(StepCause::Released);
             }
             let (present, answered) = turns.present();
             if present > 0 {
                 if answered == present {
-                    return Some(StepCause::Answered);
+                    break Some(StepCause::Answered);
                 }
             } else if turns.running_alone {
-                return Some(StepCause::Alone);
+                break Some(StepCause::Alone);
             }
             let waited = turns.waiting_since.elapsed();
             if let Some(patience) = self.patience
                 && waited >= patience
             {
-                return Some(self.give_up_waiting(&mut turns));
+                break Some(self.give_up_waiting(&mut turns));
             }
             let nap = self
                 .patience
@@ -215,7 +240,9 @@ impl Lockstep {
                 .wait_timeout(turns, nap)
                 .unwrap_or_else(|e| e.into_inner())
                 .0;
-        }
+        };
+        turns.stepper_waiting = false;
+        cause
     }
 
     /// The patience ran out: whoever is pending is absent from now on.
@@ -253,6 +280,7 @@ impl Lockstep {
         let step = {
             let mut turns = self.lock();
             turns.step += 1;
+            turns.drivers.retain(|_, turn| *turn != Turn::Gone);
             for turn in turns.drivers.values_mut() {
                 if *turn == Turn::Answered {
                     *turn = Turn::Pending;
@@ -350,6 +378,27 @@ mod tests {
             started.elapsed() >= Duration::from_millis(100),
             "the newcomer had its patience"
         );
+    }
+
+    #[test]
+    fn a_command_sent_just_before_leaving_still_takes_its_step() {
+        let lockstep = Arc::new(Lockstep::new(Some(Duration::from_secs(30))));
+        lockstep.commanded(4);
+        lockstep.left(4);
+        assert!(!lockstep.settled(), "its step is owed");
+        assert_eq!(lockstep.next_step(&NEVER), Some(StepCause::Answered));
+        lockstep.stepped();
+        let waiting = {
+            let lockstep = lockstep.clone();
+            std::thread::spawn(move || lockstep.next_step(&NEVER))
+        };
+        let deadline = Instant::now() + Duration::from_secs(5);
+        while !lockstep.settled() {
+            assert!(Instant::now() < deadline, "settles once the step is taken");
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        lockstep.release(1);
+        assert_eq!(waiting.join().unwrap(), Some(StepCause::Released));
     }
 
     #[test]
