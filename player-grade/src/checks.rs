@@ -49,6 +49,19 @@ impl Zone {
     pub fn contains(&self, x: f64, y: f64) -> bool {
         self.distance(x, y) == 0.0
     }
+
+    /// The corners of the box around the zone: (xmin, ymin), (xmax, ymax).
+    pub fn bounds(&self) -> ((f64, f64), (f64, f64)) {
+        match *self {
+            Zone::Circle { x, y, radius } => ((x - radius, y - radius), (x + radius, y + radius)),
+            Zone::Box {
+                xmin,
+                xmax,
+                ymin,
+                ymax,
+            } => ((xmin, ymin), (xmax, ymax)),
+        }
+    }
 }
 
 /// What a check asks of the run.

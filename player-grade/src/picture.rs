@@ -151,21 +151,9 @@ fn frame(world: &World, trace: &Trace, checks: &[Check]) -> View {
     }
     for check in checks {
         if let Rule::Reach { zone, .. } | Rule::EndIn(zone) | Rule::Avoid(zone) = &check.rule {
-            match *zone {
-                Zone::Circle { x, y, radius } => {
-                    take(x - radius, y - radius);
-                    take(x + radius, y + radius);
-                }
-                Zone::Box {
-                    xmin,
-                    xmax,
-                    ymin,
-                    ymax,
-                } => {
-                    take(xmin, ymin);
-                    take(xmax, ymax);
-                }
-            }
+            let (low, high) = zone.bounds();
+            take(low.0, low.1);
+            take(high.0, high.1);
         }
     }
     if !low.0.is_finite() {
