@@ -228,13 +228,18 @@ fn sensors_mounted_on_models_on_a_robot_compose_their_poses() {
         "{}",
         r.cameras[0].height
     );
-    let notes = world.ignored.join("\n");
-    assert!(
-        notes.contains(
-            "ignored: the body of a model mounted on a robot (only what is mounted on it is read) at"
-        ) && notes.contains("nested.world:2"),
-        "{notes}"
-    );
+    // The ranger's beams: on the robot (0.2), the mast (0.5), 0.05 up, half a sensor (0.01).
+    let z = r.rangers[0].sensors[0].z;
+    assert!((z - 0.76).abs() < 1e-12, "{z}");
+    // The mast and the camera's model are solid, each between its underside and its top.
+    let bodies: Vec<(f64, f64)> = r
+        .mounted_bodies
+        .iter()
+        .map(|b| (b.bottom, b.bottom + b.size[2]))
+        .collect();
+    assert_eq!(bodies.len(), 2, "{bodies:?}");
+    assert!((bodies[0].0 - 0.2).abs() < 1e-12 && (bodies[0].1 - 0.7).abs() < 1e-12);
+    assert!((bodies[1].0 - 0.7).abs() < 1e-12 && (bodies[1].1 - 0.8).abs() < 1e-12);
 }
 
 #[test]

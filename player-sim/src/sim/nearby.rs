@@ -7,7 +7,7 @@
 
 use super::Simulation;
 use super::geometry::slab_hit;
-use super::sensors::body_at;
+use super::sensors::{body_at, on_robot};
 use super::shapes::ray_into_polygons;
 use crate::world::Polygon;
 
@@ -21,8 +21,10 @@ pub struct SolidBox<'a> {
     half_length: f64,
     half_width: f64,
     radius: f64,
-    /// Height above the floor, m (for the camera).
+    /// Height of its top above the floor, m (for the camera).
     pub height: f64,
+    /// Height of its underside above the floor, m: 0 but for bodies mounted on robots.
+    pub bottom: f64,
     pub color: [u8; 3],
     /// What rangers report hitting it; negative: they see through it.
     pub ranger_return: f64,
@@ -115,6 +117,7 @@ impl<'a> NearbyBoxes<'a> {
                         half_width: size[1] / 2.0,
                         radius,
                         height: size[2],
+                        bottom: 0.0,
                         color,
                         ranger_return,
                         shape,
@@ -123,6 +126,52 @@ impl<'a> NearbyBoxes<'a> {
             },
         ));
         NearbyBoxes { boxes }
+    }
+
+    /// Only the boxes standing at the height `z` (a beam there passes over or under the
+    /// rest), as Stage tests a ray's height against a body's, ends included.
+    pub fn reaching(mut self, z: f64) -> Self {
+        self.boxes.retain(|b| (b.bottom..=b.height).contains(&z));
+        self
+    }
+
+    /// With the bodies mounted on every robot but `except` within `reach` of `(x, y)` (what
+    /// rangers meet; the other sensors and collisions know only the robots' own bodies).
+    pub fn with_mounted(
+        mut self,
+        sim: &'a Simulation,
+        except: Option<usize>,
+        (x, y): (f64, f64),
+        reach: f64,
+    ) -> Self {
+        let mut near = Vec::new();
+        sim.body_index().near(x, y, reach, &mut near);
+        for i in near.into_iter().filter(|&i| Some(i) != except) {
+            let (state, spec) = (&sim.robots[i], &sim.world.robots[i]);
+            for body in &spec.mounted_bodies {
+                let pose = on_robot(state.pose, body.pose);
+                let radius = body.size[0].hypot(body.size[1]) / 2.0;
+                if (pose.x - x).hypot(pose.y - y) > reach + radius {
+                    continue;
+                }
+                let (sin, cos) = pose.a.sin_cos();
+                self.boxes.push(SolidBox {
+                    x: pose.x,
+                    y: pose.y,
+                    sin,
+                    cos,
+                    half_length: body.size[0] / 2.0,
+                    half_width: body.size[1] / 2.0,
+                    radius,
+                    height: body.bottom + body.size[2],
+                    bottom: body.bottom,
+                    color: spec.color,
+                    ranger_return: body.ranger_return,
+                    shape: &body.shape,
+                });
+            }
+        }
+        self
     }
 
     pub fn len(&self) -> usize {

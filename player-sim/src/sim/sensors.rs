@@ -4,7 +4,7 @@
 use super::beams::{BeamBoxes, Fan};
 use super::nearby::NearbyBoxes;
 use super::wall_beams::WallBeams;
-use super::{Simulation, wrap};
+use super::{GroundBox, Simulation, wrap};
 use crate::world::{FiducialSpec, OccupancyGrid, Pose, RangerSpec};
 
 /// `pose` (on the robot) composed with the robot's pose.
@@ -33,6 +33,11 @@ type Hit = (f64, f64);
 /// The walls a sensor at `(x, y)` reaching `max` sees: none when its rays pass through them
 /// (negative `ranger_return`) or when no wall lies within its reach, so that its beams skip
 /// the grid traversal (most sensors of a swarm in a large hall).
+/// Do the floorplan's walls stand as high as a beam at `z`?
+fn walls_reach(sim: &Simulation, z: f64) -> bool {
+    (0.0..=sim.world.floor_height).contains(&z)
+}
+
 fn walls_seen(sim: &Simulation, x: f64, y: f64, max: f64) -> Option<&OccupancyGrid> {
     let grid = sim.world.floor.as_ref()?;
     (sim.world.floor_ranger_return >= 0.0 && grid.walls_within(x, y, max)).then_some(grid)
@@ -75,18 +80,46 @@ fn floor_distance(sim: &Simulation, x: f64, y: f64, angle: f64, max: f64) -> Opt
 fn cast_exhaustive(
     sim: &Simulation,
     from: usize,
-    x: f64,
-    y: f64,
+    (x, y, z): (f64, f64, f64),
     angle: f64,
     max: f64,
 ) -> Option<f64> {
-    let floor = floor_distance(sim, x, y, angle, max);
+    let floor = floor_distance(sim, x, y, angle, max).filter(|_| walls_reach(sim, z));
+    // The boxes in boxes_except's order (robots, then obstacles), with their heights.
+    let robots = (0..sim.robots.len())
+        .filter(|&i| i != from)
+        .map(|i| sim.world.robots[i].size[2]);
+    let obstacles = (0..sim.world.obstacles.len())
+        .filter(|&k| !sim.holds(Some(from), k))
+        .map(|k| sim.world.obstacles[k].size[2]);
     let things = sim
         .boxes_except(Some(from))
-        .filter_map(|b| b.raycast(x, y, angle));
+        .zip(robots.chain(obstacles))
+        .filter(|(_, height)| (0.0..=*height).contains(&z))
+        .filter_map(|(b, _)| b.raycast(x, y, angle));
+    let mounted = (0..sim.robots.len())
+        .filter(|&i| i != from)
+        .flat_map(|i| {
+            let pose = sim.robots[i].pose;
+            sim.world.robots[i]
+                .mounted_bodies
+                .iter()
+                .map(move |m| (pose, m))
+        })
+        .filter(|(_, m)| (m.bottom..=m.bottom + m.size[2]).contains(&z) && m.ranger_return >= 0.0)
+        .filter_map(|(pose, m)| {
+            let body = GroundBox {
+                pose: on_robot(pose, m.pose),
+                length: m.size[0],
+                width: m.size[1],
+                shape: &m.shape,
+            };
+            body.raycast(x, y, angle)
+        });
     floor
         .into_iter()
         .chain(things)
+        .chain(mounted)
         .filter(|&d| d <= max)
         .min_by(f64::total_cmp)
 }
@@ -108,10 +141,12 @@ pub struct RangerReturns {
 
 /// [`ranger_scan`] with the intensities.
 pub fn ranger_returns(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> RangerReturns {
-    scan_with(sim, robot, ranger, |origin, max, fan| {
+    scan_with(sim, robot, ranger, |origin, max, fan, z| {
         let at = (origin.x, origin.y);
-        let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, max);
-        let walls = walls_seen(sim, at.0, at.1, max);
+        let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, max)
+            .with_mounted(sim, Some(robot), at, max)
+            .reaching(z);
+        let walls = walls_seen(sim, at.0, at.1, max).filter(|_| walls_reach(sim, z));
         let wall_beams = walls.map(|grid| WallBeams::new(grid, at.0, at.1, max, fan));
         let by_beam = BeamBoxes::new(&boxes, at.0, at.1, fan);
         move |beam, angle| {
@@ -129,21 +164,21 @@ pub fn ranger_returns(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Ra
 
 /// [`ranger_scan`] testing every box against every beam (no pruning): the reference.
 pub fn ranger_scan_exhaustive(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Vec<f64> {
-    let scan = scan_with(sim, robot, ranger, |origin, max, _| {
+    let scan = scan_with(sim, robot, ranger, |origin, max, _, z| {
         move |_, angle| {
-            cast_exhaustive(sim, robot, origin.x, origin.y, angle, max).map(|d| (d, 1.0))
+            cast_exhaustive(sim, robot, (origin.x, origin.y, z), angle, max).map(|d| (d, 1.0))
         }
     });
     scan.ranges
 }
 
-/// A ranger's beams, each cast by the caster `prepare` makes for a sensor's origin, reach and
-/// beams; the caster is given a beam's number and direction.
+/// A ranger's beams, each cast by the caster `prepare` makes for a sensor's origin, reach,
+/// beams and height; the caster is given a beam's number and direction.
 fn scan_with<F: Fn(usize, f64) -> Option<Hit>>(
     sim: &Simulation,
     robot: usize,
     ranger: &RangerSpec,
-    prepare: impl Fn(Pose, f64, Fan) -> F,
+    prepare: impl Fn(Pose, f64, Fan, f64) -> F,
 ) -> RangerReturns {
     let base = on_robot(sim.robots[robot].pose, ranger.pose);
     // Sized once: grown reading by reading, a 181-beam scan reallocated both lists 8 times.
@@ -173,7 +208,7 @@ fn scan_with<F: Fn(usize, f64) -> Option<Hit>>(
             step,
             count: n,
         };
-        let caster = prepare(origin, sensor.max_range, fan);
+        let caster = prepare(origin, sensor.max_range, fan, sensor.z);
         for i in 0..n {
             let angle = origin.a + first + i as f64 * step;
             let (reading, intensity) = match caster(i, angle) {

@@ -15,6 +15,7 @@ mod floorplan;
 mod gripper;
 mod ignored;
 mod models;
+mod mounted_body;
 mod person;
 mod properties;
 mod raster;
@@ -34,6 +35,7 @@ pub use controller::Controller;
 pub use gripper::GripperSpec;
 pub use ignored::ignored_summary;
 pub use models::{Model, Types, read_with_includes};
+pub use mounted_body::MountedBody;
 pub use person::{PersonSpec, STANCE_WIDTH, Walk};
 pub use velocity_bounds::VelocityBounds;
 pub use wall_rects::WallRect;
@@ -70,6 +72,10 @@ pub struct SensorSpec {
     /// Radians.
     pub fov: f64,
     pub samples: usize,
+    /// Height of its beams above the floor, m: as in Stage, the ranger's height on the robot
+    /// plus the sensor's own (its pose's z and half its size's). A beam meets only what
+    /// stands at that height: it passes over a lower robot, box or wall.
+    pub z: f64,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -136,6 +142,8 @@ pub struct RobotSpec {
     pub battery: Option<BatterySpec>,
     /// What its commanded velocity is held within (Stage's `velocity_bounds`).
     pub velocity_bounds: VelocityBounds,
+    /// The solid models mounted on it, which rangers meet at their heights.
+    pub mounted_bodies: Vec<MountedBody>,
 }
 
 /// A box that stops robots and beams (landmarks, furniture).

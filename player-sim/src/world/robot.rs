@@ -2,7 +2,7 @@
 //! model inside the position is read with the two poses composed, and raised by the heights
 //! of the models it stands on, as Stage stacks children on their parent's top).
 
-use super::blocks::model_blocks;
+use super::blocks::{has_blocks, model_blocks};
 use super::gripper::gripper;
 use super::models::Model;
 use super::properties::{
@@ -10,7 +10,8 @@ use super::properties::{
     pose_of, ranger_return_of, size_of, string,
 };
 use super::{
-    BatterySpec, CameraSpec, Drive, FiducialSpec, Pose, RangerSpec, RobotSpec, SensorSpec, World,
+    BatterySpec, CameraSpec, Drive, FiducialSpec, MountedBody, Pose, RangerSpec, RobotSpec,
+    SensorSpec, World,
 };
 use crate::worldfile::WorldFileError;
 
@@ -60,6 +61,7 @@ impl World {
             controller: None,
             battery: BatterySpec::of(model)?,
             velocity_bounds: super::VelocityBounds::of(model)?,
+            mounted_bodies: Vec::new(),
         };
         if let Some(p) = model.get("gripper_return") {
             self.ignore(
@@ -103,8 +105,20 @@ impl World {
             .filter(|n| n.len() >= 4)
             .map_or(0.0, |n| n[2]);
         let mut size_z = 0.0;
+        // A plain model is solid (its blocks, else its box), as is a ranger given blocks.
+        let solid = child.kind == "model" || (child.kind == "ranger" && has_blocks(child));
+        if solid {
+            let size = size_of(child, [0.0, 0.0, 0.0])?;
+            robot.mounted_bodies.push(MountedBody {
+                pose: compose(pose, origin_of(child)?),
+                size,
+                bottom: parent.top + z,
+                shape: model_blocks(child, [size[0], size[1]])?,
+                ranger_return: ranger_return_of(child)?,
+            });
+        }
         match child.kind.as_str() {
-            "ranger" => match ranger(child, pose)? {
+            "ranger" => match ranger(child, pose, parent.top + z)? {
                 Some(r) => robot.rangers.push(r),
                 None => self.ignore("a ranger without sensor()", &child.pos),
             },
@@ -121,16 +135,7 @@ impl World {
                 robot.blobfinders.push(finder);
             }
             "gripper" => robot.grippers.push(gripper(child, pose)?),
-            "model" => {
-                size_z = size_of(child, [0.0, 0.0, 0.0])?[2];
-                self.ignore(
-                    &format!(
-                        "the body of a {} mounted on a robot (only what is mounted on it is read)",
-                        child.declared
-                    ),
-                    &child.pos,
-                );
-            }
+            "model" => size_z = size_of(child, [0.0, 0.0, 0.0])?[2],
             other => {
                 self.ignore(&format!("a {other} on a robot"), &child.pos);
                 return Ok(());
@@ -158,7 +163,11 @@ fn compose(frame: Pose, local: Pose) -> Pose {
 }
 
 /// A ranger's `sensor()`s, or `None` when it has none.
-fn ranger(model: &Model, pose: Pose) -> Result<Option<RangerSpec>, WorldFileError> {
+/// Stage's sensor size when a `sensor()` gives none: a small transducer, 2 cm each way.
+const SENSOR_SIZE: f64 = 0.02;
+
+/// A ranger at `pose` on the robot, `height` above the floor.
+fn ranger(model: &Model, pose: Pose, height: f64) -> Result<Option<RangerSpec>, WorldFileError> {
     let mut sensors = Vec::new();
     for part in model.parts.iter().filter(|p| p.kind == "sensor") {
         let range = part
@@ -182,7 +191,17 @@ fn ranger(model: &Model, pose: Pose) -> Result<Option<RangerSpec>, WorldFileErro
             Some(p) => pose_from(p)?,
             None => Pose::default(),
         };
+        let z_of = |name: &str, at: usize| -> Result<Option<f64>, WorldFileError> {
+            let Some(p) = part.get(name) else {
+                return Ok(None);
+            };
+            let n = numbers(Some(p), 3, &p.pos)?;
+            Ok((n.len() > at && (name != "pose" || n.len() >= 4)).then(|| n[at]))
+        };
+        let sensor_z = z_of("pose", 2)?.unwrap_or(0.0);
+        let sensor_height = z_of("size", 2)?.unwrap_or(SENSOR_SIZE);
         sensors.push(SensorSpec {
+            z: height + sensor_z + sensor_height / 2.0,
             pose: sensor_pose,
             min_range: range[0],
             max_range: range[1],

@@ -24,20 +24,21 @@ const GAPS: &[(&str, Floor, &str)] = &[
     (
         "classroom",
         Floor {
-            laser_within_5cm: 89.6,
-            laser_off_half_m: 9.67,
+            laser_within_5cm: 97.95,
+            laser_off_half_m: 1.18,
             sonar_within_5cm: 95.0,
         },
-        "Stage's rays pass over bodies lower than the ranger (the other buggies)",
+        "Stage meets another robot's lidar head on some beams only (at its edges), not yet \
+         understood",
     ),
     (
         "oneport",
         Floor {
-            laser_within_5cm: 94.65,
-            laser_off_half_m: 4.66,
+            laser_within_5cm: 98.85,
+            laser_off_half_m: 0.33,
             sonar_within_5cm: 95.0,
         },
-        "Stage's rays pass over bodies lower than the ranger",
+        "Stage meets another robot's lidar head on some beams only (at its edges)",
     ),
     (
         "blocks",
@@ -51,11 +52,11 @@ const GAPS: &[(&str, Floor, &str)] = &[
     (
         "autolab",
         Floor {
-            laser_within_5cm: 77.6,
-            laser_off_half_m: 0.56,
-            sonar_within_5cm: 94.4,
+            laser_within_5cm: 79.35,
+            laser_off_half_m: 0.55,
+            sonar_within_5cm: 95.1,
         },
-        "the world's resolution and bitmap cells; bodies below the ranger",
+        "the world's resolution and bitmap cells",
     ),
     (
         "circuit",
@@ -69,11 +70,11 @@ const GAPS: &[(&str, Floor, &str)] = &[
     (
         "fasr",
         Floor {
-            laser_within_5cm: 95.4,
-            laser_off_half_m: 0.0,
-            sonar_within_5cm: 92.1,
+            laser_within_5cm: 95.3,
+            laser_off_half_m: 0.14,
+            sonar_within_5cm: 90.8,
         },
-        "bodies below the ranger",
+        "the models on its charging stations and robots (children of boxes are not read)",
     ),
     (
         "large",
@@ -141,8 +142,8 @@ const GAPS: &[(&str, Floor, &str)] = &[
     (
         "simple",
         Floor {
-            laser_within_5cm: 91.9,
-            laser_off_half_m: 1.21,
+            laser_within_5cm: 93.1,
+            laser_off_half_m: 0.56,
             sonar_within_5cm: 94.0,
         },
         "the cave bitmap's cells against Stage's blocks and resolution",
