@@ -53,7 +53,8 @@ pub struct BagStats {
 /// How a topic is offered, as rosbag2 keeps it (`offered_qos_profiles`): sensor data best
 /// effort, the rest reliable; `/tf_static` and maps transient local.
 fn qos(topic: &str) -> String {
-    let best_effort = topic.ends_with("/scan") || topic.contains("/scan_");
+    let best_effort =
+        topic.ends_with("/scan") || topic.contains("/scan_") || topic.contains("/image_raw");
     let latched = topic == "/tf_static" || topic == "/map";
     let forever = "\n    sec: 2147483647\n    nsec: 4294967295";
     format!(

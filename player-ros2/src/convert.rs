@@ -5,8 +5,10 @@
 //!
 //! Mapped: laser scans, position2d (odometry and its transform), localize (the best
 //! hypothesis, with its covariance), planner way-points (the reply to a way-point request),
-//! power. Not yet: ranger and sonar arrays, cameras, maps (their tiles), commands.
+//! power, cameras (raw as `Image` on `/ns/image_raw`, JPEG as `CompressedImage` on
+//! `/ns/image_raw/compressed`). Not yet: ranger and sonar arrays, maps (their tiles).
 
+use player_proto::interfaces::camera::Camera;
 use player_proto::interfaces::laser::{Laser, LaserScan as PlayerScan};
 use player_proto::interfaces::localize::{Localize, covariance_matrix};
 use player_proto::interfaces::planner::Planner;
@@ -17,9 +19,9 @@ use player_proto::wire::MsgType;
 
 use crate::cdr::{CdrError, serialize};
 use crate::msgs::{
-    BatteryState, Header, LaserScan, Odometry, Path, Pose, PoseStamped, PoseWithCovariance,
-    PoseWithCovarianceStamped, RosMessage, TFMessage, Time, Transform, TransformStamped, Twist,
-    TwistWithCovariance, Vector3, covariance, schema_text,
+    BatteryState, CompressedImage, Header, Image, LaserScan, Odometry, Path, Pose, PoseStamped,
+    PoseWithCovariance, PoseWithCovarianceStamped, RosMessage, TFMessage, Time, Transform,
+    TransformStamped, Twist, TwistWithCovariance, Vector3, covariance, schema_text,
 };
 use crate::names::{frame, topic};
 
@@ -37,6 +39,8 @@ pub enum RosOut {
     PoseWithCovarianceStamped(PoseWithCovarianceStamped),
     Path(Path),
     BatteryState(BatteryState),
+    Image(Image),
+    CompressedImage(CompressedImage),
 }
 
 macro_rules! each_type {
@@ -48,6 +52,8 @@ macro_rules! each_type {
             RosOut::PoseWithCovarianceStamped($m) => $e,
             RosOut::Path($m) => $e,
             RosOut::BatteryState($m) => $e,
+            RosOut::Image($m) => $e,
+            RosOut::CompressedImage($m) => $e,
         }
     };
 }
@@ -237,6 +243,18 @@ pub fn convert(ns: &str, message: &Message) -> Vec<Converted> {
                 stamp,
                 RosOut::BatteryState(battery),
             )]
+        }
+        (Body::Camera(Camera::State(picture)), MsgType::Data) => {
+            let header = Header::new(stamp, frame(ns, "camera", index));
+            match crate::camera::picture(picture, header) {
+                Some(RosOut::CompressedImage(jpeg)) => vec![converted(
+                    format!("{}/compressed", topic(ns, "image_raw", index)),
+                    stamp,
+                    RosOut::CompressedImage(jpeg),
+                )],
+                Some(image) => vec![converted(topic(ns, "image_raw", index), stamp, image)],
+                None => Vec::new(),
+            }
         }
         _ => Vec::new(),
     }

@@ -3,11 +3,13 @@
 //! * [`msgs`] — ROS 2's message types, with their definitions, as serde structs.
 //! * [`cdr`] — their serialized form (CDR, little-endian, with its encapsulation header).
 //! * [`names`] — a robot's namespace, topics and frames.
-//! * [`convert`] — Player's messages as ROS 2's; [`map`] a Player map as an occupancy grid.
+//! * [`convert`] — Player's messages as ROS 2's; [`map`] a Player map as an occupancy grid;
+//!   [`camera`] a picture as an image.
 //! * [`bag`] — a recording as a rosbag2 folder (MCAP with `ros2msg` schemas, `metadata.yaml`).
 //! * `live` (feature `live`, on by default) — each robot a ROS 2 node over DDS.
 
 pub mod bag;
+pub mod camera;
 pub mod cdr;
 pub mod convert;
 #[cfg(feature = "live")]

@@ -18,7 +18,7 @@ from rosbags.typesys import Stores, get_typestore
 
 from test_mcap_export import read_prec
 
-LASER, POSITION2D, LOCALIZE = 6, 4, 25
+LASER, POSITION2D, LOCALIZE, CAMERA = 6, 4, 25, 40
 
 
 def export(playerrecord, captures, tmp: pathlib.Path):
@@ -101,6 +101,16 @@ def test_the_messages_say_what_the_player_servers_sent(playerrecord, captures, t
     cov = amcl.pose.covariance.reshape(6, 6)
     assert (cov == cov.T).all() and cov[0, 0] > 0 and cov[5, 5] > 0
     assert amcl.header.frame_id == "map"
+    # Pictures: camera 0's raw ones as Image, camera 1's JPEGs (Player's cameracompress) as
+    # CompressedImage, one per picture sent.
+    assert types["/r0/image_raw"] == "sensor_msgs/msg/Image"
+    assert types["/r0/image_raw_1/compressed"] == "sensor_msgs/msg/CompressedImage"
+    assert len(by_topic["/r0/image_raw"]) == sent[(6665, CAMERA, 0, 1)] > 0
+    assert len(by_topic["/r0/image_raw_1/compressed"]) == sent[(6665, CAMERA, 1, 1)] > 0
+    image = by_topic["/r0/image_raw"][0]
+    assert image.encoding in ("rgb8", "mono8") and image.step * image.height == len(image.data)
+    jpeg = by_topic["/r0/image_raw_1/compressed"][0]
+    assert jpeg.format == "jpeg" and bytes(jpeg.data[:2]) == b"\xff\xd8"
     plans = by_topic["/r0/plan"]
     assert any(len(p.poses) > 1 for p in plans) and all(p.header.frame_id == "map" for p in plans)
 

@@ -13,8 +13,8 @@ use serde::Serialize;
 use super::LiveError;
 use crate::convert::{RosOut, convert};
 use crate::msgs::{
-    BatteryState, LaserScan, OccupancyGrid, Odometry, Path, PoseStamped, PoseWithCovarianceStamped,
-    RosMessage, TFMessage, Twist,
+    BatteryState, CompressedImage, Image, LaserScan, OccupancyGrid, Odometry, Path, PoseStamped,
+    PoseWithCovarianceStamped, RosMessage, TFMessage, Twist,
 };
 use crate::names::namespace;
 
@@ -27,6 +27,8 @@ impl ros2_client::Message for BatteryState {}
 impl ros2_client::Message for Twist {}
 impl ros2_client::Message for PoseStamped {}
 impl ros2_client::Message for OccupancyGrid {}
+impl ros2_client::Message for Image {}
+impl ros2_client::Message for CompressedImage {}
 
 /// Sensor data as ROS's sensor QoS has it: best effort, the newest few.
 const SENSOR: QosProfile = QosProfile::publisher_default()
@@ -77,6 +79,8 @@ pub struct RobotNode {
     paths: Outs<Path>,
     batteries: Outs<BatteryState>,
     maps: Outs<OccupancyGrid>,
+    images: Outs<Image>,
+    jpegs: Outs<CompressedImage>,
     inputs: Option<Inputs>,
 }
 
@@ -152,6 +156,8 @@ impl RobotNode {
             paths: Outs::default(),
             batteries: Outs::default(),
             maps: Outs::default(),
+            images: Outs::default(),
+            jpegs: Outs::default(),
             inputs,
         })
     }
@@ -212,6 +218,22 @@ impl RobotNode {
                     &mut self.batteries,
                     &c.topic,
                     RELIABLE,
+                    m,
+                    &self.ns,
+                )?,
+                RosOut::Image(m) => publish(
+                    &mut self.node,
+                    &mut self.images,
+                    &c.topic,
+                    SENSOR,
+                    m,
+                    &self.ns,
+                )?,
+                RosOut::CompressedImage(m) => publish(
+                    &mut self.node,
+                    &mut self.jpegs,
+                    &c.topic,
+                    SENSOR,
                     m,
                     &self.ns,
                 )?,

@@ -14,8 +14,8 @@ pub use geometry::{
 };
 pub use nav::{MapMetaData, OccupancyGrid, Odometry, Path};
 pub use sensor::{
-    BatteryState, LaserScan, POWER_SUPPLY_STATUS_CHARGING, POWER_SUPPLY_STATUS_DISCHARGING,
-    POWER_SUPPLY_STATUS_UNKNOWN,
+    BatteryState, CompressedImage, Image, LaserScan, POWER_SUPPLY_STATUS_CHARGING,
+    POWER_SUPPLY_STATUS_DISCHARGING, POWER_SUPPLY_STATUS_UNKNOWN,
 };
 
 /// A ROS 2 message type.

@@ -61,3 +61,42 @@ impl RosMessage for BatteryState {
         header_deps()
     }
 }
+
+/// sensor_msgs/msg/Image: raw pixels, row by row.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct Image {
+    pub header: Header,
+    pub height: u32,
+    pub width: u32,
+    /// `rgb8`, `mono8`, `mono16`, ...
+    pub encoding: String,
+    pub is_bigendian: u8,
+    /// Bytes per row.
+    pub step: u32,
+    pub data: Vec<u8>,
+}
+
+impl RosMessage for Image {
+    const TYPE: &'static str = "sensor_msgs/msg/Image";
+    const DEFINITION: &'static str = "std_msgs/Header header\nuint32 height\nuint32 width\nstring encoding\nuint8 is_bigendian\nuint32 step\nuint8[] data\n";
+    fn dependencies() -> Vec<(&'static str, &'static str)> {
+        header_deps()
+    }
+}
+
+/// sensor_msgs/msg/CompressedImage: a whole JPEG (or PNG) file.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct CompressedImage {
+    pub header: Header,
+    /// `jpeg` or `png`.
+    pub format: String,
+    pub data: Vec<u8>,
+}
+
+impl RosMessage for CompressedImage {
+    const TYPE: &'static str = "sensor_msgs/msg/CompressedImage";
+    const DEFINITION: &'static str = "std_msgs/Header header\nstring format\nuint8[] data\n";
+    fn dependencies() -> Vec<(&'static str, &'static str)> {
+        header_deps()
+    }
+}

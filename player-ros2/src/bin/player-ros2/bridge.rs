@@ -16,11 +16,12 @@ use player_ros2::live::{RobotNode, Ros2};
 use crate::once::{goals_and_poses, latched};
 
 /// What the bridge subscribes to: what it has a ROS 2 counterpart for.
-const MAPPED: [Interface; 4] = [
+const MAPPED: [Interface; 5] = [
     Interface::LASER,
     Interface::POSITION2D,
     Interface::LOCALIZE,
     Interface::POWER,
+    Interface::CAMERA,
 ];
 
 /// How long the loop sleeps at most without news (deadlines are checked as often).
