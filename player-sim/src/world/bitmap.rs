@@ -31,7 +31,11 @@ pub struct OccupancyGrid {
 }
 
 impl OccupancyGrid {
-    /// Reads a PNG (or any format the `image` crate reads with our features).
+    /// Reads a PNG (or any format the `image` crate reads with our features) as Stage reads a
+    /// floorplan bitmap: a pixel whose first channel is 127 or less is a wall (alpha is not
+    /// looked at), and the walls' bounding box, not the whole image, is stretched over
+    /// `size_x` by `size_y` centred on `(centre_x, centre_y)` (Stage scales a model's blocks
+    /// so that together they fill its size; a white margin is not part of them).
     pub fn from_png(
         path: &Path,
         size_x: f64,
@@ -41,18 +45,35 @@ impl OccupancyGrid {
     ) -> Result<OccupancyGrid, String> {
         let image = image::open(path)
             .map_err(|e| format!("cannot read bitmap {}: {e}", path.display()))?
-            .to_luma_alpha8();
+            .to_rgba8();
         let (w, h) = (image.width() as usize, image.height() as usize);
         let mut occupied = vec![false; w * h];
+        // The walls' bounding box, in columns and rows from the south.
+        let (mut low, mut high) = ((w, h), (0, 0));
         for (x, y, p) in image.enumerate_pixels() {
-            let row_from_south = h - 1 - y as usize;
-            occupied[row_from_south * w + x as usize] = p[1] > 127 && p[0] < 128;
+            let (x, row) = (x as usize, h - 1 - y as usize);
+            if p[0] <= 127 {
+                occupied[row * w + x] = true;
+                low = (low.0.min(x), low.1.min(row));
+                high = (high.0.max(x), high.1.max(row));
+            }
         }
+        if low.0 > high.0 {
+            // No wall at all: the whole image, as nothing is stretched.
+            (low, high) = ((0, 0), (w.max(1) - 1, h.max(1) - 1));
+        }
+        let cell = (
+            size_x / (high.0 - low.0 + 1) as f64,
+            size_y / (high.1 - low.1 + 1) as f64,
+        );
         Ok(OccupancyGrid {
             width: w,
             height: h,
-            cell: (size_x / w as f64, size_y / h as f64),
-            origin: (centre_x - size_x / 2.0, centre_y - size_y / 2.0),
+            cell,
+            origin: (
+                centre_x - size_x / 2.0 - low.0 as f64 * cell.0,
+                centre_y - size_y / 2.0 - low.1 as f64 * cell.1,
+            ),
             occupied,
             wall_sums: WallSums::default(),
         })

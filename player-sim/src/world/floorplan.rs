@@ -46,11 +46,20 @@ impl World {
         let file = string(bitmap)?;
         let grid = OccupancyGrid::from_png(&base.join(file), size[0], size[1], pose.x, pose.y)
             .map_err(|e| err(&bitmap.pos, e))?;
+        // Where the whole image lies (its walls fill `size`; a margin lies beyond).
+        let covers = [
+            grid.width as f64 * grid.cell.0,
+            grid.height as f64 * grid.cell.1,
+        ];
+        let centre = [
+            grid.origin.0 + covers[0] / 2.0,
+            grid.origin.1 + covers[1] / 2.0,
+        ];
         self.floor = Some(grid);
         self.floorplan = Some(Floorplan {
             bitmap: base.join(file),
-            size: [size[0], size[1]],
-            centre: [pose.x, pose.y],
+            size: covers,
+            centre,
             height: self.floor_height,
             color: self.floor_color,
         });
