@@ -12,9 +12,13 @@
 //!   bytes drops the oldest, control messages are kept (Foxglove's viewers; the page's
 //!   broadcast keeps its own newest-of-everything snapshot for a page that lags).
 //!
-//! A new front over WebSockets (ROS 2's foxglove bridge, say) starts here.
+//! Every front, WebSockets or not, is a [`Front`] ([`front`]): the relay tells it each robot
+//! that arrives, its messages, its leaving, and when to stop. A new front is a crate that
+//! implements it (and, over WebSockets, starts from [`socket`] and [`outbox`]).
 
+pub mod front;
 pub mod outbox;
 pub mod socket;
 
+pub use front::Front;
 pub use socket::{CloseCode, STALLED_AFTER, SendError};

@@ -23,7 +23,7 @@
 //! ## Foxglove and Lichtblick
 //!
 //! `player-relay --foxglove PORT` also serves every robot over Foxglove's WebSocket protocol
-//! (`player_foxglove::live::FoxgloveLive`, given to [`RelayConfig::fronts`] as a client tap):
+//! (`player_foxglove::live::FoxgloveLive`, one of the [`Front`]s in [`RelayConfig::fronts`]):
 //! in Foxglove or Lichtblick, *Open connection* → *Foxglove WebSocket* → `ws://HOST:PORT`
 //! (HOST the relay's `--bind`). Each device is a channel in Foxglove's well-known schemas
 //! (`LaserScan`, `PoseInFrame`, `FrameTransform`, `Grid`, images, `SceneUpdate`, `Log`), with
@@ -36,13 +36,15 @@ mod survey;
 pub mod world;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr, TcpListener};
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use player_proto::RobotId;
-use player_proto::client::{ClientOptions, ConnectError, RobotTap, fan_out, for_robot};
+use player_proto::client::{ClientOptions, ConnectError, ConnectionTap, Tap, fan_out};
 use player_proto::server::Commanders;
 
 pub use downstream::DownstreamOptions;
+pub use player_front::Front;
 pub use robot::RelayedRobot;
 
 /// Kernel send buffer of each observer's connection: a few laser scans. More only lets stale
@@ -103,12 +105,12 @@ pub struct RelayConfig {
     /// The upstream clients' options (timeouts, backoff); `read_only`, `notifier` and `tap`
     /// are the relay's.
     pub upstream: ClientOptions,
-    /// Fronts that are not Player clients (the web page, a Foxglove server): each is told
-    /// every robot, by its [`RobotId`], and everything its server sends the relay. With any
-    /// front, the relay subscribes
+    /// Fronts that are not Player clients (the web page, Foxglove, Zenoh): the relay drives
+    /// each alike ([`Front`]): every robot as it arrives, by its [`RobotId`], everything its
+    /// server sends the relay, its leaving, and the stop. With any front, the relay subscribes
     /// to every device of a robot and asks what describes them (geometries, map tiles) each
     /// time it connects, since nobody downstream will ask for it.
-    pub fronts: Vec<RobotTap>,
+    pub fronts: Vec<Arc<dyn Front>>,
     /// Whether a front passes commands on to the robots (Zenoh's authorised controller), so
     /// the upstream clients must not be read-only even when no observer may command.
     pub fronts_command: bool,
@@ -122,7 +124,10 @@ impl std::fmt::Debug for RelayConfig {
             .field("commanders", &self.commanders)
             .field("send_buffer", &self.send_buffer)
             .field("upstream", &self.upstream)
-            .field("fronts", &self.fronts.len())
+            .field(
+                "fronts",
+                &self.fronts.iter().map(|f| f.name()).collect::<Vec<_>>(),
+            )
             .field("fronts_command", &self.fronts_command)
             .finish()
     }
@@ -142,9 +147,10 @@ impl Default for RelayConfig {
     }
 }
 
-/// A running relay; stops when dropped.
+/// A running relay; stops when dropped (its robots, then its fronts).
 pub struct Relay {
     robots: Vec<RelayedRobot>,
+    fronts: Vec<Arc<dyn Front>>,
 }
 
 impl Relay {
@@ -173,9 +179,11 @@ impl Relay {
             .routes
             .iter()
             .map(|route| {
-                // Each front hears of the robot as the route names it.
-                let taps = config.fronts.iter().cloned();
-                let taps = taps.map(|front| for_robot(front, route.robot.clone()));
+                // A robot arrived: each front hears of it as the route names it.
+                let taps = config.fronts.iter().map(|front| {
+                    let tap: ConnectionTap = front.arrived(&route.robot);
+                    Arc::new(move |_: &str, _: u16| tap.clone()) as Tap
+                });
                 let upstream = ClientOptions {
                     tap: fan_out(taps.collect()),
                     ..upstream.clone()
@@ -189,7 +197,15 @@ impl Relay {
                 )
             })
             .collect::<Result<Vec<_>, _>>()?;
-        Ok(Relay { robots })
+        for front in &config.fronts {
+            for robot in &robots {
+                front.commands_through(robot.id(), robot.upstream().clone());
+            }
+        }
+        Ok(Relay {
+            robots,
+            fronts: config.fronts,
+        })
     }
 
     pub fn robots(&self) -> &[RelayedRobot] {
@@ -208,6 +224,16 @@ impl Relay {
     /// Observers connected now, over all robots.
     pub fn observers(&self) -> usize {
         self.robots.iter().map(RelayedRobot::observers).sum()
+    }
+}
+
+impl Drop for Relay {
+    fn drop(&mut self) {
+        // Every robot's thread ends first: no front hears of a robot after its stop.
+        self.robots.clear();
+        for front in &self.fronts {
+            front.stop();
+        }
     }
 }
 

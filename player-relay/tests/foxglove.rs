@@ -54,11 +54,12 @@ fn serve_world(world: &str) -> Running {
 /// The relay of the robot on `port`, with the Foxglove front on a free port; returns once
 /// the front has a channel with `topic` (so what describes the devices was sent before any
 /// viewer connects: a viewer sees it only if it is latched).
-fn relay_with_front(port: u16, topic: &str) -> (Relay, FoxgloveLive) {
+fn relay_with_front(port: u16, topic: &str) -> (Relay, Arc<FoxgloveLive>) {
     let live = FoxgloveLive::start(IpAddr::V4(Ipv4Addr::LOCALHOST), 0).expect("front starts");
+    let live = Arc::new(live);
     let relay = Relay::start(RelayConfig {
         routes: vec![Route::loopback(port)],
-        fronts: vec![live.robot_tap()],
+        fronts: vec![live.clone() as _],
         ..RelayConfig::default()
     })
     .expect("relay starts");

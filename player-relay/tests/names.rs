@@ -26,9 +26,10 @@ fn named(port: u16, name: &str) -> Route {
 fn a_named_robot_is_a_foxglove_topic_under_its_name() {
     let robot = Robot::start(0);
     let live = FoxgloveLive::start(IpAddr::V4(Ipv4Addr::LOCALHOST), 0).expect("front starts");
+    let live = std::sync::Arc::new(live);
     let _relay = Relay::start(RelayConfig {
         routes: vec![named(robot.port(), "scout")],
-        fronts: vec![live.robot_tap()],
+        fronts: vec![live.clone() as _],
         ..RelayConfig::default()
     })
     .expect("relay starts");

@@ -28,8 +28,9 @@ use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 use std::time::Duration;
 
+use player_front::Front;
 use player_proto::RobotId;
-use player_proto::client::{Client, RobotTap, Tap, unnamed};
+use player_proto::client::{Client, ConnectionTap, RobotTap, Tap, unnamed};
 use player_proto::server::Commanders;
 
 use control::Control;
@@ -136,6 +137,22 @@ impl WebFront {
     /// Makes the relayed robot `id` commandable from the page (by the controller only).
     pub fn add_robot_as(&self, id: RobotId, client: Arc<Client>) {
         self.control.add_robot(id, client);
+    }
+}
+
+/// The page as one of the relay's fronts: robots shown by their names, the controller's
+/// commands sent through the relay's clients.
+impl Front for WebFront {
+    fn name(&self) -> &str {
+        "web page"
+    }
+
+    fn arrived(&self, robot: &RobotId) -> ConnectionTap {
+        (self.robot_tap())(robot)
+    }
+
+    fn commands_through(&self, robot: &RobotId, client: Arc<Client>) {
+        self.add_robot_as(robot.clone(), client);
     }
 }
 

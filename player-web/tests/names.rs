@@ -18,21 +18,19 @@ use tokio_tungstenite::tungstenite::Message;
 fn rows_and_commands_use_the_robots_names() {
     let running = serve_world("simple.world", None);
     let web = WebFront::start(LOCALHOST, 0, Commanders::Everyone).expect("the page is served");
+    let web = std::sync::Arc::new(web);
     let port = running.ports[0].1;
     let robot = RobotId::new("127.0.0.1", port).named("scout").unwrap();
-    let relay = Relay::start(RelayConfig {
+    let _relay = Relay::start(RelayConfig {
         routes: vec![Route {
             robot: robot.clone(),
             listen_port: 0,
         }],
         commanders: Commanders::Everyone,
-        fronts: vec![web.robot_tap()],
+        fronts: vec![web.clone() as _],
         ..RelayConfig::default()
     })
     .expect("the relay starts");
-    for robot in relay.robots() {
-        web.add_robot_as(robot.id().clone(), robot.upstream().clone());
-    }
     let runtime = tokio::runtime::Builder::new_current_thread()
         .enable_all()
         .build()

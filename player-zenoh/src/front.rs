@@ -8,6 +8,7 @@ use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard};
 
+use player_front::Front;
 use player_proto::RobotId;
 use player_proto::capture::Direction;
 use player_proto::client::{Client, ConnectionTap, RobotTap, Tap, TapEvent, unnamed};
@@ -202,6 +203,22 @@ impl ZenohFront {
             .values()
             .filter(|r| r.token.is_some())
             .count()
+    }
+}
+
+/// Zenoh as one of the relay's fronts: each robot under its key, commands from the one
+/// authorised controller through the relay's clients.
+impl Front for ZenohFront {
+    fn name(&self) -> &str {
+        "Zenoh"
+    }
+
+    fn arrived(&self, robot: &RobotId) -> ConnectionTap {
+        (self.robot_tap())(robot)
+    }
+
+    fn commands_through(&self, robot: &RobotId, client: Arc<Client>) {
+        self.add_robot_as(robot, client);
     }
 }
 

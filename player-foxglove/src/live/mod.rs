@@ -33,6 +33,7 @@ use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 use std::time::{SystemTime, UNIX_EPOCH};
 
+use player_front::Front;
 use player_proto::RobotId;
 use player_proto::client::{ConnectionTap, RobotTap, Tap, unnamed};
 
@@ -123,6 +124,21 @@ impl FoxgloveLive {
     /// The tap to give Player clients that know no names: topics `/<host:port>/…`.
     pub fn tap(&self) -> Tap {
         unnamed(self.robot_tap())
+    }
+}
+
+/// Foxglove as one of the relay's fronts: each robot's topics under its name.
+impl Front for FoxgloveLive {
+    fn name(&self) -> &str {
+        "Foxglove"
+    }
+
+    fn arrived(&self, robot: &RobotId) -> ConnectionTap {
+        (self.robot_tap())(robot)
+    }
+
+    fn stop(&self) {
+        self.hub.close_all();
     }
 }
 

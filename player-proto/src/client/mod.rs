@@ -52,7 +52,7 @@ pub use requests::{PendingReply, RequestError};
 pub use responder::Responder;
 pub use shared_io::SharedIo;
 pub use store::{DeviceStats, Stamped};
-pub use tap::{ConnectionTap, RobotTap, Tap, TapEvent, fan_out, for_robot, unnamed};
+pub use tap::{ConnectionTap, RobotTap, Tap, TapEvent, fan_out, unnamed};
 
 /// Why a client could not connect.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

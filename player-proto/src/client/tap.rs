@@ -43,12 +43,6 @@ pub fn unnamed(tap: RobotTap) -> Tap {
     Arc::new(move |host: &str, port: u16| tap(&RobotId::new(host, port)))
 }
 
-/// A client [`Tap`] for the one robot `id`: every connection of its client is told as `id`,
-/// whatever host and port the client reaches it at.
-pub fn for_robot(tap: RobotTap, id: RobotId) -> Tap {
-    Arc::new(move |_host: &str, _port: u16| tap(&id))
-}
-
 /// One tap that tells every one of `taps`, in order (a recorder and a web page, say); none
 /// when there are none.
 pub fn fan_out(taps: Vec<Tap>) -> Option<Tap> {

@@ -73,7 +73,7 @@ pub fn quick() -> ClientOptions {
 
 /// The robot's site: a relay of `running`'s robots with a Zenoh front.
 pub struct Site {
-    pub front: ZenohFront,
+    pub front: std::sync::Arc<ZenohFront>,
     pub relay: Relay,
 }
 
@@ -84,6 +84,7 @@ impl Site {
             ..FrontConfig::new(site)
         };
         let front = ZenohFront::start(session, config).expect("the front starts");
+        let front = std::sync::Arc::new(front);
         let routes = running
             .ports
             .iter()
@@ -91,15 +92,12 @@ impl Site {
             .collect();
         let relay = Relay::start(RelayConfig {
             routes,
-            fronts: vec![front.robot_tap()],
+            fronts: vec![front.clone() as _],
             fronts_command: true,
             upstream: quick(),
             ..RelayConfig::default()
         })
         .expect("the relay starts");
-        for robot in relay.robots() {
-            front.add_robot(robot.upstream().clone());
-        }
         Site { front, relay }
     }
 }

@@ -6,6 +6,7 @@
 use std::net::{IpAddr, Ipv4Addr};
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use player_proto::RobotId;
@@ -37,13 +38,13 @@ pub fn serve_world(world: &str, ports: Option<&[(u16, u16)]>) -> Running {
 
 /// The relay in front of `running`'s robots, with the web page.
 pub struct Front {
-    pub web: WebFront,
+    pub web: Arc<WebFront>,
     pub relay: Relay,
 }
 
 impl Front {
     pub fn start(running: &Running, rule: Commanders) -> Front {
-        let web = WebFront::start(LOCALHOST, 0, rule).expect("the page is served");
+        let web = Arc::new(WebFront::start(LOCALHOST, 0, rule).expect("the page is served"));
         let routes = running
             .ports
             .iter()
@@ -58,7 +59,7 @@ impl Front {
         let path = repo_root().join("stage-worlds").join(world);
         let loaded = World::load(&path).expect("the world loads");
         let names = player_relay::world::names(&path, &loaded).expect("its .cfg reads");
-        let web = WebFront::start(LOCALHOST, 0, rule).expect("the page is served");
+        let web = Arc::new(WebFront::start(LOCALHOST, 0, rule).expect("the page is served"));
         web.set_walls(&player_relay::world::walls(&loaded));
         let routes = running
             .ports
@@ -74,17 +75,14 @@ impl Front {
         Front::relay(running, web, routes, rule)
     }
 
-    fn relay(running: &Running, web: WebFront, routes: Vec<Route>, rule: Commanders) -> Front {
+    fn relay(running: &Running, web: Arc<WebFront>, routes: Vec<Route>, rule: Commanders) -> Front {
         let relay = Relay::start(RelayConfig {
             routes,
             commanders: rule,
-            fronts: vec![web.robot_tap()],
+            fronts: vec![web.clone() as _],
             ..RelayConfig::default()
         })
         .expect("the relay starts");
-        for robot in relay.robots() {
-            web.add_robot_as(robot.id().clone(), robot.upstream().clone());
-        }
         assert_eq!(
             relay.wait_serving(Duration::from_secs(10)),
             running.ports.len()

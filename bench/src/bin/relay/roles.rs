@@ -107,14 +107,15 @@ pub fn serve_relay(args: &Args) -> Result<()> {
         .collect();
     let (web, foxglove) = if args.fronts {
         (
-            Some(WebFront::start(LOCALHOST, 0, Commanders::Nobody)?),
-            Some(FoxgloveLive::start(LOCALHOST, 0)?),
+            Some(Arc::new(WebFront::start(LOCALHOST, 0, Commanders::Nobody)?)),
+            Some(Arc::new(FoxgloveLive::start(LOCALHOST, 0)?)),
         )
     } else {
         (None, None)
     };
-    let mut fronts: Vec<_> = web.iter().map(WebFront::robot_tap).collect();
-    fronts.extend(foxglove.iter().map(FoxgloveLive::robot_tap));
+    let mut fronts: Vec<Arc<dyn player_relay::Front>> = Vec::new();
+    fronts.extend(web.iter().map(|w| w.clone() as _));
+    fronts.extend(foxglove.iter().map(|f| f.clone() as _));
     let relay = Relay::start(RelayConfig {
         routes,
         fronts,
@@ -133,8 +134,8 @@ pub fn serve_relay(args: &Args) -> Result<()> {
         .filter_map(|r| r.listen_port())
         .collect();
     // The fronts' ports follow the robots'.
-    ports.extend(web.as_ref().map(WebFront::port));
-    ports.extend(foxglove.as_ref().map(FoxgloveLive::port));
+    ports.extend(web.as_ref().map(|w| w.port()));
+    ports.extend(foxglove.as_ref().map(|f| f.port()));
     announce(&ports)?;
     until_stdin_closes();
     Ok(())

@@ -46,10 +46,10 @@ pub fn serve_router() -> Result<()> {
 
 /// The robots' site: a relay with a Zenoh front, a client of the router at `--router`.
 pub fn serve_site(args: &Args) -> Result<()> {
-    let front = ZenohFront::start(
+    let front = std::sync::Arc::new(ZenohFront::start(
         session(Mode::Client, None, Some(args.router))?,
         FrontConfig::new(SITE),
-    )?;
+    )?);
     let routes = args
         .upstream
         .iter()
@@ -57,7 +57,7 @@ pub fn serve_site(args: &Args) -> Result<()> {
         .collect();
     let relay = Relay::start(RelayConfig {
         routes,
-        fronts: vec![front.robot_tap()],
+        fronts: vec![front.clone() as _],
         ..RelayConfig::default()
     })?;
     let start = std::time::Instant::now();

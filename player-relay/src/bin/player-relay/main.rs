@@ -5,11 +5,13 @@
 
 use std::net::IpAddr;
 use std::process::ExitCode;
+use std::sync::Arc;
 use std::time::Duration;
 
 use anyhow::{Result, bail};
 use clap::Parser;
 use player_foxglove::live::FoxgloveLive;
+use player_front::Front;
 use player_proto::RobotId;
 use player_proto::server::Commanders;
 use player_relay::{DEFAULT_SEND_BUFFER, Relay, RelayConfig, Route};
@@ -153,32 +155,32 @@ fn run(cli: Cli) -> Result<()> {
             route.listen_port
         );
     }
-    let mut fronts = Vec::new();
-    // Declared before the relay, so dropped after it: no robot thread outlives its front.
+    let mut fronts: Vec<Arc<dyn Front>> = Vec::new();
+    // Held by the relay too, which stops them once its robots have stopped.
     let foxglove = match cli.foxglove {
         Some(port) => {
-            let live = FoxgloveLive::start(cli.bind, port)?;
+            let live = Arc::new(FoxgloveLive::start(cli.bind, port)?);
             eprintln!("Foxglove WebSocket → ws://{}:{}", cli.bind, live.port());
-            fronts.push(live.robot_tap());
+            fronts.push(live.clone());
             Some(live)
         }
         None => None,
     };
     let web = match cli.web {
         Some(port) => {
-            let web = player_web::WebFront::start(cli.bind, port, commanders)?;
+            let web = Arc::new(player_web::WebFront::start(cli.bind, port, commanders)?);
             if let Some(demo) = &demo {
                 web.set_walls(&player_relay::world::walls(&demo.world));
             }
             eprintln!("web page: http://{}:{}/", cli.bind, web.port());
-            fronts.push(web.robot_tap());
+            fronts.push(web.clone());
             Some(web)
         }
         None => None,
     };
     let zenoh = cli.zenoh.start(cli.bind, commanders)?;
     if let Some(front) = &zenoh.front {
-        fronts.push(front.robot_tap());
+        fronts.push(front.clone());
     }
     // With --from-zenoh alone there is nothing to relay from here.
     let relay = match routes.is_empty() && zenoh.bridge.is_some() {
@@ -193,15 +195,6 @@ fn run(cli: Cli) -> Result<()> {
             ..RelayConfig::default()
         })?),
     };
-    let robots = relay.as_ref().map_or(&[][..], Relay::robots);
-    if let Some(web) = &web {
-        for robot in robots {
-            web.add_robot_as(robot.id().clone(), robot.upstream().clone());
-        }
-    }
-    if let Some(relay) = &relay {
-        zenoh.add_robots(relay);
-    }
     if let Some(relay) = relay.as_ref().filter(|_| demo.is_some()) {
         relay.wait_serving(Duration::from_secs(5));
         for robot in relay.robots() {
@@ -217,11 +210,10 @@ fn run(cli: Cli) -> Result<()> {
             std::thread::park();
         },
     }
+    // The relay stops its robots, then its fronts; the simulation goes last.
     drop(relay);
-    drop(zenoh);
-    drop(web);
+    drop((zenoh, web, foxglove));
     drop(demo);
-    drop(foxglove);
     Ok(())
 }
 

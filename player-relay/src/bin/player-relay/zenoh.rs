@@ -4,11 +4,11 @@
 
 use std::net::IpAddr;
 use std::path::PathBuf;
+use std::sync::Arc;
 
 use anyhow::{Context, Result};
 use clap::Args;
 use player_proto::server::Commanders;
-use player_relay::Relay;
 use player_zenoh::{FromZenoh, FromZenohConfig, FrontConfig, Mode, ZenohFront, ZenohOptions};
 
 #[derive(Args, Debug)]
@@ -59,7 +59,7 @@ pub struct ZenohArgs {
 /// The Zenoh side of a running relay.
 #[derive(Default)]
 pub struct Zenoh {
-    pub front: Option<ZenohFront>,
+    pub front: Option<Arc<ZenohFront>>,
     pub bridge: Option<FromZenoh>,
 }
 
@@ -101,7 +101,7 @@ impl ZenohArgs {
                 controller: self.zenoh_controller.clone(),
                 ..FrontConfig::new(site)
             };
-            zenoh.front = Some(ZenohFront::start(session.clone(), config)?);
+            zenoh.front = Some(Arc::new(ZenohFront::start(session.clone(), config)?));
             eprintln!("Zenoh: publishing the robots under player/{site}/");
         }
         if self.from_zenoh {
@@ -120,16 +120,5 @@ impl ZenohArgs {
             eprintln!("Zenoh: serving the robots of player/{site}/ on {bind}, as {identity}");
         }
         Ok(zenoh)
-    }
-}
-
-impl Zenoh {
-    /// Lets the front pass commands to the relay's robots.
-    pub fn add_robots(&self, relay: &Relay) {
-        if let Some(front) = &self.front {
-            for robot in relay.robots() {
-                front.add_robot_as(robot.id(), robot.upstream().clone());
-            }
-        }
     }
 }
