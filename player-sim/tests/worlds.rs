@@ -356,7 +356,7 @@ fn a_low_block_is_reported_as_solid_at_every_height() {
     assert_eq!(
         world.ignored,
         vec![format!(
-            "ignored: a block not as tall as the rest of floorplan (solid at every height here) at {}:3",
+            "ignored: a block not as tall as the rest of floorplan (solid at every height to collisions and cameras) at {}:3",
             path.display()
         )]
     );

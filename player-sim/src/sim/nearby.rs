@@ -9,7 +9,7 @@ use super::Simulation;
 use super::geometry::slab_hit;
 use super::sensors::{body_at, on_robot};
 use super::shapes::ray_into_polygons;
-use crate::world::Polygon;
+use crate::world::{Polygon, ShapeSlice, slice_at};
 
 /// A solid box prepared for many rays: its frame's sine and cosine computed once.
 #[derive(Debug, Clone, Copy)]
@@ -30,6 +30,8 @@ pub struct SolidBox<'a> {
     pub ranger_return: f64,
     /// The blocks inside the box, in its frame; empty for a plain box.
     shape: &'a [Polygon],
+    /// Its blocks by height, when they are not all as tall (see [`NearbyBoxes::reaching`]).
+    slices: &'a [ShapeSlice],
 }
 
 impl SolidBox<'_> {
@@ -87,7 +89,7 @@ impl<'a> NearbyBoxes<'a> {
                     spec.size,
                     spec.color,
                     spec.ranger_return,
-                    &spec.shape[..],
+                    (&spec.shape[..], &spec.shape_slices[..]),
                 )
             });
         let obstacles = sim
@@ -98,10 +100,11 @@ impl<'a> NearbyBoxes<'a> {
             .filter(|(k, _)| !sim.holds(except, *k))
             .map(|(_, o)| {
                 let body = body_at(o.pose, o.origin);
-                (body, o.size, o.color, o.ranger_return, &o.shape[..])
+                let shape = (&o.shape[..], &o.shape_slices[..]);
+                (body, o.size, o.color, o.ranger_return, shape)
             });
         boxes.extend(robots.chain(obstacles).filter_map(
-            |(pose, size, color, ranger_return, shape)| {
+            |(pose, size, color, ranger_return, (shape, slices))| {
                 // Squares, not `hypot`: every sensor asks this of the robots around it.
                 let radius = (size[0] * size[0] + size[1] * size[1]).sqrt() / 2.0;
                 let (ex, ey) = (pose.x - x, pose.y - y);
@@ -121,6 +124,7 @@ impl<'a> NearbyBoxes<'a> {
                         color,
                         ranger_return,
                         shape,
+                        slices,
                     }
                 })
             },
@@ -130,8 +134,23 @@ impl<'a> NearbyBoxes<'a> {
 
     /// Only the boxes standing at the height `z` (a beam there passes over or under the
     /// rest), as Stage tests a ray's height against a body's, ends included.
+    /// A box drawn with blocks of different heights keeps only the blocks at `z`.
     pub fn reaching(mut self, z: f64) -> Self {
-        self.boxes.retain(|b| (b.bottom..=b.height).contains(&z));
+        self.boxes.retain_mut(|b| {
+            if !(b.bottom..=b.height).contains(&z) {
+                return false;
+            }
+            if b.slices.is_empty() {
+                return true;
+            }
+            match slice_at(b.slices, z - b.bottom) {
+                Some(slice) => {
+                    b.shape = &slice.shape;
+                    true
+                }
+                None => false,
+            }
+        });
         self
     }
 
@@ -168,6 +187,7 @@ impl<'a> NearbyBoxes<'a> {
                     color: spec.color,
                     ranger_return: body.ranger_return,
                     shape: &body.shape,
+                    slices: &[],
                 });
             }
         }

@@ -5,7 +5,7 @@ use super::beams::{BeamBoxes, Fan};
 use super::nearby::NearbyBoxes;
 use super::wall_beams::WallBeams;
 use super::{GroundBox, Simulation, wrap};
-use crate::world::{FiducialSpec, OccupancyGrid, Pose, RangerSpec};
+use crate::world::{FiducialSpec, OccupancyGrid, Pose, RangerSpec, slice_at};
 
 /// `pose` (on the robot) composed with the robot's pose.
 pub fn on_robot(robot: Pose, local: Pose) -> Pose {
@@ -85,18 +85,28 @@ fn cast_exhaustive(
     max: f64,
 ) -> Option<f64> {
     let floor = floor_distance(sim, x, y, angle, max).filter(|_| walls_reach(sim, z));
-    // The boxes in boxes_except's order (robots, then obstacles), with their heights.
-    let robots = (0..sim.robots.len())
-        .filter(|&i| i != from)
-        .map(|i| sim.world.robots[i].size[2]);
+    // The boxes in boxes_except's order (robots, then obstacles), with their heights and
+    // their blocks by height.
+    let robots = (0..sim.robots.len()).filter(|&i| i != from).map(|i| {
+        let r = &sim.world.robots[i];
+        (r.size[2], &r.shape_slices[..])
+    });
     let obstacles = (0..sim.world.obstacles.len())
         .filter(|&k| !sim.holds(Some(from), k))
-        .map(|k| sim.world.obstacles[k].size[2]);
+        .map(|k| {
+            let o = &sim.world.obstacles[k];
+            (o.size[2], &o.shape_slices[..])
+        });
     let things = sim
         .boxes_except(Some(from))
         .zip(robots.chain(obstacles))
-        .filter(|(_, height)| (0.0..=*height).contains(&z))
-        .filter_map(|(b, _)| b.raycast(x, y, angle));
+        .filter(|(_, (height, _))| (0.0..=*height).contains(&z))
+        .filter_map(|(mut b, (_, slices))| {
+            if !slices.is_empty() {
+                b.shape = &slice_at(slices, z)?.shape;
+            }
+            b.raycast(x, y, angle)
+        });
     let mounted = (0..sim.robots.len())
         .filter(|&i| i != from)
         .flat_map(|i| {

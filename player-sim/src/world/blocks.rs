@@ -20,13 +20,26 @@ pub(super) fn model_blocks(model: &Model, size: [f64; 2]) -> Result<Vec<Polygon>
     if !size.iter().all(|s| s.is_finite()) {
         return Err(err(&model.pos, "a model with blocks needs a finite size"));
     }
-    let raw = model
+    Ok(fit_to_size(raw_blocks(model)?, size))
+}
+
+/// The points of `model`'s blocks as written.
+pub(super) fn raw_blocks(model: &Model) -> Result<Vec<Polygon>, WorldFileError> {
+    model
         .parts
         .iter()
         .filter(|p| p.kind == "block")
         .map(block_points)
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(fit_to_size(raw, size))
+        .collect()
+}
+
+/// A block's `z [zmin zmax]` as written, Stage's `[0 1]` when it gives none.
+pub(super) fn block_z(block: &Block) -> [f64; 2] {
+    block
+        .get("z")
+        .and_then(|p| p.value.numbers())
+        .filter(|n| n.len() >= 2 && n[0].is_finite() && n[1].is_finite())
+        .map_or([0.0, 1.0], |n| [n[0], n[1]])
 }
 
 /// Does `model` draw itself with blocks?
@@ -94,7 +107,7 @@ fn block_points(block: &Block) -> Result<Polygon, WorldFileError> {
 }
 
 /// Stretches the blocks' common bounding box onto `size`, centred on the origin.
-fn fit_to_size(blocks: Vec<Polygon>, size: [f64; 2]) -> Vec<Polygon> {
+pub(super) fn fit_to_size(blocks: Vec<Polygon>, size: [f64; 2]) -> Vec<Polygon> {
     let (mut min, mut max) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for p in blocks.iter().flatten() {
         for k in 0..2 {

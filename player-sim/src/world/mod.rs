@@ -20,6 +20,7 @@ mod person;
 mod properties;
 mod raster;
 mod robot;
+mod shape_slices;
 mod velocity_bounds;
 mod wall_rects;
 mod wall_sums;
@@ -37,6 +38,7 @@ pub use ignored::ignored_summary;
 pub use models::{Model, Types, read_with_includes};
 pub use mounted_body::MountedBody;
 pub use person::{PersonSpec, STANCE_WIDTH, Walk};
+pub use shape_slices::{ShapeSlice, slice_at};
 pub use velocity_bounds::VelocityBounds;
 pub use wall_rects::WallRect;
 
@@ -131,6 +133,8 @@ pub struct RobotSpec {
     /// When there are some, rays and collisions meet these polygons (the box of `size`, their
     /// bounding box, is only the first, cheap test).
     pub shape: Vec<Polygon>,
+    /// Its blocks by height, when they are not all as tall (rangers meet a band's blocks only).
+    pub shape_slices: Vec<ShapeSlice>,
     pub rangers: Vec<RangerSpec>,
     pub fiducials: Vec<FiducialSpec>,
     pub cameras: Vec<CameraSpec>,
@@ -162,6 +166,8 @@ pub struct BoxObstacle {
     /// When there are some, rays and collisions meet these polygons (the box of `size`, their
     /// bounding box, is only the first, cheap test).
     pub shape: Vec<Polygon>,
+    /// Its blocks by height, when they are not all as tall (rangers meet a band's blocks only).
+    pub shape_slices: Vec<ShapeSlice>,
     /// Stage's `gripper_return`: a gripper can pick it up.
     pub gripper_return: bool,
 }
@@ -309,7 +315,7 @@ impl World {
         for block in blocks::partial_height_blocks(model) {
             self.ignore(
                 &format!(
-                    "a block not as tall as the rest of {} (solid at every height here)",
+                    "a block not as tall as the rest of {} (solid at every height to collisions and cameras)",
                     model.declared
                 ),
                 &block.pos,
@@ -373,6 +379,7 @@ impl World {
                     ranger_return: ranger_return_of(model)?,
                     origin: origin_of(model)?,
                     shape: blocks::model_blocks(model, [size[0], size[1]])?,
+                    shape_slices: shape_slices::shape_slices(model, size)?,
                     gripper_return: opt_number(model, "gripper_return")?.is_some_and(|v| v != 0.0),
                 };
                 self.obstacles.push(obstacle);

@@ -81,6 +81,7 @@ impl World {
                 ranger_return: 1.0,
                 origin: Pose::default(),
                 shape: Vec::new(),
+                shape_slices: Vec::new(),
                 gripper_return: false,
             });
         }

@@ -53,6 +53,7 @@ impl World {
             ranger_return: ranger_return_of(model)?,
             origin: origin_of(model)?,
             shape: model_blocks(model, [size[0], size[1]])?,
+            shape_slices: super::shape_slices::shape_slices(model, size)?,
             rangers: Vec::new(),
             fiducials: Vec::new(),
             cameras: Vec::new(),
