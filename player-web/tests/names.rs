@@ -21,7 +21,7 @@ fn rows_and_commands_use_the_robots_names() {
     let web = std::sync::Arc::new(web);
     let port = running.ports[0].1;
     let robot = RobotId::new("127.0.0.1", port).named("scout").unwrap();
-    let _relay = Relay::start(RelayConfig {
+    let relay = Relay::start(RelayConfig {
         routes: vec![Route {
             robot: robot.clone(),
             listen_port: 0,
@@ -31,6 +31,8 @@ fn rows_and_commands_use_the_robots_names() {
         ..RelayConfig::default()
     })
     .expect("the relay starts");
+    // Commands are checked against the robot's devices: wait until the relay knows them.
+    assert_eq!(relay.wait_serving(Duration::from_secs(10)), 1);
     let runtime = tokio::runtime::Builder::new_current_thread()
         .enable_all()
         .build()
@@ -43,22 +45,29 @@ fn rows_and_commands_use_the_robots_names() {
                 "command": {"vel": {"px": 0, "py": 0, "pa": 0}, "state": 1}});
             Message::Text(command.to_string().into())
         };
-        // One command by the name, one by the server: only the second is refused.
+        // One command by the name, one by the server, in that order: the page answers in
+        // order, so the first refusal says which was refused. Then the rows.
         page.send(stop("scout")).await.unwrap();
         page.send(stop(&robot.server())).await.unwrap();
-        let mut refusals = Vec::new();
-        loop {
+        let (mut refusals, mut rows) = (Vec::new(), None);
+        let deadline = std::time::Instant::now() + Duration::from_secs(30);
+        while refusals.is_empty() || rows.is_none() {
+            assert!(
+                std::time::Instant::now() < deadline,
+                "{refusals:?} {rows:?}"
+            );
             let next = tokio::time::timeout(Duration::from_secs(10), page.next()).await;
             let Ok(Some(Ok(Message::Text(text)))) = next else {
-                panic!("the page's socket gave no status frame: {next:?}");
+                panic!("the page's socket gave no refusal or status frame: {next:?}");
             };
             let value: Value = serde_json::from_str(&text).unwrap();
             match value["type"].as_str() {
                 Some("refused") => refusals.push(value["why"].to_string()),
-                Some("status") if refusals.len() == 1 => break (value["rows"].clone(), refusals),
+                Some("status") => rows = Some(value["rows"].clone()),
                 _ => {}
             }
         }
+        (rows.unwrap_or_default(), refusals)
     });
     let names: Vec<&str> = rows
         .as_array()
