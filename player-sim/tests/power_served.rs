@@ -32,13 +32,14 @@ fn start() -> (Running, Client) {
     (running, client)
 }
 
-/// The first reading after `after` (a sequence number) that `accept`s, and its sequence.
+/// The first reading after `after` (a sequence number) that `accept`s, its sequence and its
+/// simulated time.
 fn reading(
     client: &Client,
     after: u64,
     what: &str,
     accept: impl Fn(&PowerData) -> bool,
-) -> (PowerData, u64) {
+) -> (PowerData, u64, f64) {
     let deadline = Instant::now() + Duration::from_secs(20);
     loop {
         let got = client
@@ -52,7 +53,7 @@ fn reading(
                 panic!("not a power state: {:?}", s.message.body);
             };
             if accept(&data) {
-                return (data, s.seq);
+                return (data, s.seq, s.server_time);
             }
         }
         assert!(Instant::now() < deadline, "timed out waiting for {what}");
@@ -65,13 +66,20 @@ fn the_pack_drains_at_rest_and_faster_while_driving() {
     let (_running, client) = start();
     let power = client.addr(Interface::POWER, 0);
     assert_eq!(client.subscribe(power).unwrap(), "stage");
-    let (still, seq) = reading(&client, 0, "a reading at rest", |_| true);
+    let (still, seq, time) = reading(&client, 0, "a reading at rest", |_| true);
     assert_eq!(
         still.valid,
         MASK_VOLTS | MASK_WATTS | MASK_JOULES | MASK_PERCENT | MASK_CHARGING
     );
     assert_eq!(still.watts, -REST_WATTS, "Player's sign: negative consumes");
-    assert!(still.joules < CAPACITY && still.joules > CAPACITY - 1.0);
+    // Burnt at rest since the start: however long the client took to subscribe (at 20x, a
+    // busy machine's 100 ms are 2 simulated seconds).
+    let burnt = CAPACITY - still.joules;
+    let expected = REST_WATTS * time as f32;
+    assert!(
+        burnt > 0.0 && (burnt - expected).abs() <= REST_WATTS * 0.11,
+        "{burnt} J burnt in {time} s at rest"
+    );
     assert!((still.percent - still.joules / CAPACITY * 100.0).abs() < 1e-3);
     assert_eq!(still.charging, 0);
 
@@ -85,10 +93,10 @@ fn the_pack_drains_at_rest_and_faster_while_driving() {
         })),
     );
     let driving_watts = REST_WATTS + SPEED as f32 * WATTS_PER_KG_SPEED * MASS;
-    let (driving, seq) = reading(&client, seq, "the cost of driving", |d| {
+    let (driving, seq, _) = reading(&client, seq, "the cost of driving", |d| {
         (d.watts + driving_watts).abs() < 1e-3
     });
-    let (later, _) = reading(&client, seq, "a later reading", |d| {
+    let (later, _, _) = reading(&client, seq, "a later reading", |d| {
         d.joules < driving.joules
     });
     assert!(later.joules < still.joules - 1.0, "{later:?} vs {still:?}");
