@@ -9,7 +9,10 @@ player-sim and the bridge itself and prints what it saw as one line of JSON.
         reads r0's scans, odometry and fixed transforms, drives it with cmd_vel, lets the
         commands stop, sends a NaN and an absurd speed;
     unshare -n python ros2_peer.py nav PLAYER_SIM PLAYER_ROS2 navigation.world
-        comes late for the map, sends a goal to the planner and a start to the localizer.
+        comes late for the map, sends a goal to the planner and a start to the localizer;
+    unshare -n python ros2_peer.py relay - PLAYER_RELAY simple.world
+        the same robot through `player-relay --world simple.world --ros2` instead: read its
+        scans and odometry, drive it, and see its odometry say it moved.
 """
 
 import json
@@ -199,6 +202,8 @@ RELIABLE = Qos(Policy.Reliability.Reliable(duration(seconds=1)), Policy.History.
 
 def main(mode, player_sim, bridge, world):
     loopback_with_multicast()
+    if mode == "relay":
+        return through_the_relay(bridge, world)
     port = free_port()
     sim = subprocess.Popen(
         [player_sim, world, "--port-base", str(port)], stderr=subprocess.DEVNULL
@@ -216,6 +221,45 @@ def main(mode, player_sim, bridge, world):
         sim.wait(10)
         bridge_log.close()
     seen["bridge_log"] = open("/tmp/player-ros2-peer.log").read()[-4000:]
+    print(json.dumps(seen))
+
+
+def newest(reader):
+    samples = reader.take(100)
+    return samples[-1] if samples else None
+
+
+def through_the_relay(relay, world):
+    log = open("/tmp/player-relay-peer.log", "w")
+    process = subprocess.Popen([relay, "--world", world, "--ros2"], stderr=log)
+    seen = {}
+    try:
+        participant = DomainParticipant(0)
+        scans = DataReader(
+            participant,
+            Topic(participant, "rt/r0/scan", LaserScan),
+            qos=Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(5)),
+        )
+        odometry = DataReader(participant, Topic(participant, "rt/r0/odom", Odometry), qos=RELIABLE)
+        cmd_vel = DataWriter(participant, Topic(participant, "rt/r0/cmd_vel", Twist), qos=RELIABLE)
+        scan = wait_for("a scan on rt/r0/scan", lambda: newest(scans))
+        seen["beams"] = len(scan.ranges)
+        start = wait_for("odometry on rt/r0/odom", lambda: newest(odometry)).pose.pose.position
+        wait_for(
+            "the relay's cmd_vel reader",
+            lambda: True if cmd_vel.get_publication_matched_status().current_count else None,
+        )
+        for _ in range(20):
+            cmd_vel.write(Twist(linear=Vector3(x=0.5)))
+            time.sleep(0.1)
+        time.sleep(0.3)
+        end = wait_for("odometry after driving", lambda: newest(odometry)).pose.pose.position
+        seen["moved"] = math.hypot(end.x - start.x, end.y - start.y)
+    finally:
+        process.terminate()
+        process.wait(10)
+        log.close()
+    seen["relay_log"] = open("/tmp/player-relay-peer.log").read()[-3000:]
     print(json.dumps(seen))
 
 

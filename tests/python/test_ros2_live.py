@@ -86,3 +86,19 @@ def test_a_ros2_peer_gets_the_map_late_and_sends_a_goal_and_a_start(player_sim, 
     assert grid["frame"] == "map"
     assert seen["goal"][:2] == pytest.approx([3.5, 4.5]), "rviz2's goal reached Player's planner"
     assert seen["estimate"][:2] == pytest.approx([-6.0, -4.0], abs=0.3)
+
+
+@pytest.fixture(scope="session")
+def player_relay() -> pathlib.Path:
+    subprocess.run(
+        ["cargo", "build", "-q", "-p", "player-relay", "--bin", "player-relay"], cwd=ROOT, check=True
+    )
+    return ROOT / "target" / "debug" / "player-relay"
+
+
+@needs_a_namespace
+def test_the_relay_puts_its_robots_in_ros2_by_their_world_names(player_relay):
+    seen = peer("relay", "simple.world", "-", player_relay)
+    assert seen["beams"] == 181
+    assert 0.7 < seen["moved"] < 1.4, seen
+    assert "ROS 2 node /r0/player" in seen["relay_log"], seen["relay_log"]

@@ -8,7 +8,11 @@
 //! network namespace of their own).
 
 pub mod commands;
+mod front;
 mod node;
+pub mod steer;
+
+pub use front::Ros2Front;
 
 pub use node::RobotNode;
 
@@ -29,6 +33,23 @@ pub enum LiveError {
     },
     #[error("ROS 2 domain {0} is out of range (0 to 232)")]
     DomainRange(u16),
+    #[error("ROS_DOMAIN_ID must be a number from 0 to 232, got {0:?}")]
+    DomainVariable(String),
+}
+
+/// The ROS 2 domain: the one given, else `ROS_DOMAIN_ID`, else 0 — as every ROS 2 program
+/// picks it.
+pub fn domain(given: Option<u16>) -> Result<u16, LiveError> {
+    if let Some(domain) = given {
+        return Ok(domain);
+    }
+    match std::env::var("ROS_DOMAIN_ID") {
+        Ok(text) if !text.trim().is_empty() => text
+            .trim()
+            .parse()
+            .map_err(|_| LiveError::DomainVariable(text)),
+        _ => Ok(0),
+    }
 }
 
 /// A process's way into one ROS 2 domain.

@@ -73,6 +73,19 @@ struct Cli {
     #[arg(long, value_name = "PORT")]
     foxglove: Option<u16>,
 
+    /// Also in ROS 2: each robot a ROS 2 node over DDS (its scans, odometry, /tf, map out;
+    /// cmd_vel, goal_pose and initialpose in, unless --ros2-read-only). See docs/ROS2.md.
+    #[arg(long)]
+    ros2: bool,
+
+    /// The ROS 2 domain, 0 to 232; by default ROS_DOMAIN_ID, else 0.
+    #[arg(long, requires = "ros2")]
+    ros_domain: Option<u16>,
+
+    /// ROS 2 only reads: no command from it reaches a robot.
+    #[arg(long, requires = "ros2")]
+    ros2_read_only: bool,
+
     #[command(flatten)]
     zenoh: zenoh::ZenohArgs,
 
@@ -108,7 +121,8 @@ fn parse_robot(text: &str) -> Result<(RobotId, Option<u16>), String> {
 }
 
 fn main() -> ExitCode {
-    program_edge::logging::init("info");
+    // RustDDS (--ros2) warns of every sample a peer's unreachable locator did not take: not news.
+    program_edge::logging::init("info,rustdds=error,ros2_client=error");
     program_edge::exit::exit_code("player-relay", run(Cli::parse()))
 }
 
@@ -182,6 +196,22 @@ fn run(cli: Cli) -> Result<()> {
     if let Some(front) = &zenoh.front {
         fronts.push(front.clone());
     }
+    if cli.ros2 {
+        let domain = player_ros2::live::domain(cli.ros_domain)?;
+        let front = Arc::new(player_ros2::live::Ros2Front::start(
+            domain,
+            cli.ros2_read_only,
+        )?);
+        eprintln!(
+            "ROS 2 → domain {domain}{}",
+            if cli.ros2_read_only {
+                ", read-only"
+            } else {
+                ""
+            }
+        );
+        fronts.push(front);
+    }
     // With --from-zenoh alone there is nothing to relay from here.
     let relay = match routes.is_empty() && zenoh.bridge.is_some() {
         true => None,
@@ -191,7 +221,7 @@ fn run(cli: Cli) -> Result<()> {
             commanders,
             send_buffer: cli.send_buffer,
             fronts,
-            fronts_command: cli.zenoh.fronts_command(),
+            fronts_command: cli.zenoh.fronts_command() || (cli.ros2 && !cli.ros2_read_only),
             ..RelayConfig::default()
         })?),
     };

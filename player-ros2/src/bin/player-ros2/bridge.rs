@@ -2,18 +2,16 @@
 //! robot's newest `cmd_vel`, checked, sent to its base; a base whose commands stopped coming,
 //! stopped.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
 use std::sync::{Arc, Condvar, Mutex};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use anyhow::{Context, Result};
 use player_proto::RobotId;
 use player_proto::client::{Client, ClientOptions, ConnectionState};
 use player_proto::wire::{DevAddr, Interface};
-use player_ros2::live::commands::{Deadline, Refused, velocity};
+use player_ros2::live::steer::{Steering, latched};
 use player_ros2::live::{RobotNode, Ros2};
-
-use crate::once::{goals_and_poses, latched};
 
 /// What the bridge subscribes to: what it has a ROS 2 counterpart for.
 const MAPPED: [Interface; 5] = [
@@ -57,9 +55,7 @@ struct Bridged {
     node: RobotNode,
     subscribed: bool,
     seen: HashMap<(DevAddr, u8), u64>,
-    deadline: Deadline,
-    /// Kinds of refused command already said.
-    refused: HashSet<&'static str>,
+    steering: Steering,
 }
 
 pub fn run(robots: &[RobotId], domain: u16, read_only: bool) -> Result<()> {
@@ -86,8 +82,7 @@ pub fn run(robots: &[RobotId], domain: u16, read_only: bool) -> Result<()> {
             node,
             subscribed: false,
             seen: HashMap::new(),
-            deadline: Deadline::default(),
-            refused: HashSet::new(),
+            steering: Steering::new(robot),
         });
     }
     loop {
@@ -114,7 +109,7 @@ impl Bridged {
                 tracing::warn!("{}: {e}", self.robot);
             }
         }
-        self.drive();
+        self.steering.steer(&self.node, &self.client);
     }
 
     fn subscribe(&mut self) {
@@ -127,36 +122,5 @@ impl Bridged {
             }
         }
         latched(&self.robot, &self.client, &mut self.node);
-    }
-
-    /// The newest sound cmd_vel to the base (each unsound one refused); a stop when they
-    /// stopped coming.
-    fn drive(&mut self) {
-        goals_and_poses(&self.robot, &self.client, &self.node, &mut self.refused);
-        let now = Instant::now();
-        let base = self.client.position2d(0);
-        let mut newest = None;
-        for twist in self.node.cmd_vels() {
-            match velocity(&twist) {
-                Ok(v) => newest = Some(v),
-                Err(refused) => {
-                    let kind = match refused {
-                        Refused::NotFinite(_) => "not finite",
-                        _ => "absurd",
-                    };
-                    if self.refused.insert(kind) {
-                        tracing::warn!("{}: refused {refused} (said once)", self.robot);
-                    }
-                }
-            }
-        }
-        if let Some((vx, vy, va)) = newest {
-            base.set_velocity(vx, vy, va);
-            self.deadline.commanded((vx, vy, va), now);
-        }
-        if self.deadline.expired(now) {
-            tracing::info!("{}: no cmd_vel for half a second: stopping", self.robot);
-            base.set_velocity(0.0, 0.0, 0.0);
-        }
     }
 }

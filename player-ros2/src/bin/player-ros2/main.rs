@@ -3,7 +3,6 @@
 //! (unless `--read-only`). See docs/ROS2.md.
 
 mod bridge;
-mod once;
 
 use std::process::ExitCode;
 
@@ -32,19 +31,8 @@ fn main() -> ExitCode {
     // ros2-client tells of every topic it makes: not news to a person running a bridge.
     program_edge::logging::init("info,rustdds=error,ros2_client=error");
     let cli = Cli::parse();
-    let result = domain(cli.ros_domain).and_then(|d| bridge::run(&cli.robots, d, cli.read_only));
+    let result = player_ros2::live::domain(cli.ros_domain)
+        .map_err(anyhow::Error::from)
+        .and_then(|d| bridge::run(&cli.robots, d, cli.read_only));
     program_edge::exit::exit_code("player-ros2", result)
-}
-
-/// `--ros-domain`, else `ROS_DOMAIN_ID`, else 0.
-fn domain(given: Option<u16>) -> anyhow::Result<u16> {
-    if let Some(domain) = given {
-        return Ok(domain);
-    }
-    match std::env::var("ROS_DOMAIN_ID") {
-        Ok(text) if !text.trim().is_empty() => text.trim().parse().map_err(|_| {
-            anyhow::anyhow!("ROS_DOMAIN_ID must be a number from 0 to 232, got {text:?}")
-        }),
-        _ => Ok(0),
-    }
 }

@@ -1,9 +1,16 @@
-//! What the bridge does once a robot is there — its map on `/map` and its sensors' fixed
-//! transforms on `/tf_static`, both kept for late subscribers — and what it takes from ROS 2
-//! besides `cmd_vel`: goals for the robot's planner, a start for its localizer.
+//! Steering a Player robot from ROS 2, as the bridge and the relay's front both do: once it is
+//! there, its map on `/map` and its sensors' fixed transforms on `/tf_static` (kept for late
+//! subscribers); then, over and over, its `cmd_vel` to its base (checked, with a deadline),
+//! goals to its planner and starts to its localizer.
 
 use std::collections::HashSet;
+use std::time::Instant;
 
+use super::RobotNode;
+use super::commands::{Deadline, Refused, goal, initial_pose, velocity};
+use crate::map::grid;
+use crate::msgs::{Header, Quaternion, TFMessage, Time, Transform, TransformStamped, Vector3};
+use crate::names::frame;
 use player_proto::RobotId;
 use player_proto::client::Client;
 use player_proto::interfaces::common::Pose2d;
@@ -12,13 +19,6 @@ use player_proto::interfaces::localize::{Localize, LocalizeSetPose};
 use player_proto::interfaces::map::Map;
 use player_proto::interfaces::planner::{Planner, PlannerCmd};
 use player_proto::wire::Interface;
-use player_ros2::live::RobotNode;
-use player_ros2::live::commands::{goal, initial_pose};
-use player_ros2::map::grid;
-use player_ros2::msgs::{
-    Header, Quaternion, TFMessage, Time, Transform, TransformStamped, Vector3,
-};
-use player_ros2::names::frame;
 
 /// Publishes the robot's map(s) and its lasers' places on its base.
 pub fn latched(robot: &RobotId, client: &Client, node: &mut RobotNode) {
@@ -72,23 +72,29 @@ pub fn latched(robot: &RobotId, client: &Client, node: &mut RobotNode) {
 fn fetch_map(
     client: &Client,
     addr: player_proto::wire::DevAddr,
-) -> anyhow::Result<player_ros2::msgs::OccupancyGrid> {
+) -> Result<crate::msgs::OccupancyGrid, MapReadError> {
     let info = client.fetch(addr, Map::REQ_GET_INFO)?;
     let mut tiles = Vec::new();
     for ask in info.tile_requests() {
         let reply = client.request_with(addr, Map::REQ_GET_DATA, ask)?;
-        tiles.push(
-            Map::REQ_GET_DATA
-                .reply_of(&reply)
-                .map_err(|e| anyhow::anyhow!("{e}"))?,
-        );
+        tiles.push(Map::REQ_GET_DATA.reply_of(&reply)?);
     }
     Ok(grid(&info, &tiles, Header::new(Time::default(), "map"))?)
 }
 
+/// Why a robot's map could not be read.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum MapReadError {
+    #[error(transparent)]
+    Request(#[from] player_proto::client::RequestError),
+    #[error("a bad tile: {0}")]
+    Tile(#[from] player_proto::interfaces::map::MapError),
+}
+
 /// Goals to the robot's planner, starts to its localizer; what is unsound, refused (said once
 /// per kind).
-pub fn goals_and_poses(
+fn goals_and_poses(
     robot: &RobotId,
     client: &Client,
     node: &RobotNode,
@@ -127,6 +133,56 @@ pub fn goals_and_poses(
                 }
             }
             Err(why) => refuse("initial pose", &why),
+        }
+    }
+}
+
+/// What steering one robot remembers: when its base must be stopped, what was refused.
+#[derive(Debug)]
+pub struct Steering {
+    robot: RobotId,
+    deadline: Deadline,
+    /// Kinds of refused command already said.
+    refused: HashSet<&'static str>,
+}
+
+impl Steering {
+    pub fn new(robot: &RobotId) -> Steering {
+        Steering {
+            robot: robot.clone(),
+            deadline: Deadline::default(),
+            refused: HashSet::new(),
+        }
+    }
+
+    /// What ROS 2 told the robot since the last call, passed on: goals and starts, then the
+    /// newest sound `cmd_vel` (each unsound one refused), and a stop when they stopped coming.
+    pub fn steer(&mut self, node: &RobotNode, client: &Client) {
+        goals_and_poses(&self.robot, client, node, &mut self.refused);
+        let now = Instant::now();
+        let base = client.position2d(0);
+        let mut newest = None;
+        for twist in node.cmd_vels() {
+            match velocity(&twist) {
+                Ok(v) => newest = Some(v),
+                Err(refused) => {
+                    let kind = match refused {
+                        Refused::NotFinite(_) => "not finite",
+                        _ => "absurd",
+                    };
+                    if self.refused.insert(kind) {
+                        tracing::warn!("{}: refused {refused} (said once)", self.robot);
+                    }
+                }
+            }
+        }
+        if let Some((vx, vy, va)) = newest {
+            base.set_velocity(vx, vy, va);
+            self.deadline.commanded((vx, vy, va), now);
+        }
+        if self.deadline.expired(now) {
+            tracing::info!("{}: no cmd_vel for half a second: stopping", self.robot);
+            base.set_velocity(0.0, 0.0, 0.0);
         }
     }
 }
