@@ -5,9 +5,10 @@
 use std::path::Path;
 
 use player_sim::serve::{Running, ServeOptions, serve};
-use player_sim::served::{cfgs_beside, from_cfg, from_cfgs};
+use player_sim::served::devices_beside;
 use player_sim::sim::Simulation;
 use player_sim::sim::body_at;
+use player_sim::world::ignored_summary;
 use player_sim::world::{BoxObstacle, Floorplan, Polygon, World, placed};
 
 use crate::composition::{ClientDecl, Composition, Element, Node, SourcePos};
@@ -32,16 +33,15 @@ pub fn serve_world(
     options: ServeOptions,
 ) -> Result<Running, WorldError> {
     let world = World::load(world_file)?;
-    let mut ignored = Vec::new();
-    let devices = match cfgs_beside(world_file).as_slice() {
-        [] => from_cfg(&world_file.with_extension("cfg"), &world, &mut ignored)?,
-        cfgs => {
-            let paths: Vec<&Path> = cfgs.iter().map(|p| p.as_path()).collect();
-            from_cfgs(&paths, &world, &mut ignored)?
-        }
-    };
-    for note in ignored {
-        tracing::info!("{}: {note}", world_file.display());
+    let mut ignored = world.ignored.clone();
+    // The .cfg files beside the world, as player-sim reads them (one port per robot when there
+    // are none, or when they name models the world lacks).
+    let devices = devices_beside(world_file, &world, &mut ignored)?;
+    for note in &ignored {
+        tracing::debug!("{note}");
+    }
+    if let Some(summary) = ignored_summary(&ignored) {
+        tracing::info!("{}: {summary}", world_file.display());
     }
     let floorplan = world.floorplan.clone();
     let blocks = (world.floor_blocks.clone(), world.floor_height);

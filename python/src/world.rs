@@ -8,7 +8,7 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use player_sim::serve::{LockstepOptions, Running, ServeOptions, serve};
-use player_sim::served::{DEFAULT_PORT, Source, cfgs_beside, default_devices, from_cfgs};
+use player_sim::served::{Source, devices_beside};
 use player_sim::sim::Simulation;
 use player_sim::world::World as WorldFile;
 use pyo3::exceptions::{PyKeyError, PyTypeError, PyValueError};
@@ -91,13 +91,9 @@ fn start(path: &Path, options: ServeOptions, seed: u64) -> PyResult<(Running, Ve
     }
     let world = WorldFile::load(path).map_err(|e| failed(&e))?;
     let mut ignored = world.ignored.clone();
-    let cfgs = cfgs_beside(path);
-    let devices = if cfgs.is_empty() {
-        default_devices(&world, DEFAULT_PORT)
-    } else {
-        let paths: Vec<&Path> = cfgs.iter().map(PathBuf::as_path).collect();
-        from_cfgs(&paths, &world, &mut ignored).map_err(|e| failed(&e))?
-    };
+    // The .cfg files beside the world, as player-sim reads them (one port per robot when there
+    // are none, or when they name models the world lacks).
+    let devices = devices_beside(path, &world, &mut ignored).map_err(|e| failed(&e))?;
     let mut names: BTreeMap<u16, Vec<String>> = BTreeMap::new();
     for d in &devices {
         let entry = names.entry(d.port).or_default();
