@@ -182,6 +182,30 @@ def loopback_with_multicast():
         subprocess.run(command, check=True)
 
 
+def garbage_to_the_dds_ports():
+    """Datagrams that are not RTPS, RTPS with lying sizes, and cut ones, to domain 0's
+    discovery and user ports, unicast and multicast: the bridge must carry on."""
+    noise = [
+        b"",
+        b"hello",
+        b"RTPS\x02\x03\x01\x0f" + b"\xff" * 12 + b"\x15\x05\xff\xff" + b"\x00" * 8,
+        b"RTPS\x02\x03" + b"\x00" * 2,
+        bytes(range(256)) * 8,
+    ]
+    sender = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    sent = 0
+    for port in range(7400, 7420):
+        for host in ("127.0.0.1", "239.255.0.1"):
+            for datagram in noise:
+                try:
+                    sender.sendto(datagram, (host, port))
+                    sent += 1
+                except OSError:
+                    pass
+    sender.close()
+    return sent
+
+
 def wait_for(what, get, limit=30.0):
     deadline = time.monotonic() + limit
     while time.monotonic() < deadline:
@@ -321,7 +345,10 @@ def drive(port, seen):
     odometry = DataReader(participant, Topic(participant, "rt/r0/odom", Odometry), qos=reliable)
     cmd_vel = DataWriter(participant, Topic(participant, "rt/r0/cmd_vel", Twist), qos=reliable)
 
-    scan = wait_for("a scan on rt/r0/scan", lambda: next(iter(scans.take(1)), None))
+    wait_for("a first scan on rt/r0/scan", lambda: next(iter(scans.take(1)), None))
+    seen["garbage"] = garbage_to_the_dds_ports()
+    scans.take(100)
+    scan = wait_for("a scan after the garbage", lambda: next(iter(scans.take(1)), None))
     seen["scan"] = {
         "beams": len(scan.ranges),
         "frame": scan.header.frame_id,

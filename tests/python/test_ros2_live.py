@@ -2,7 +2,8 @@
 from PyPI) in a network namespace of the test's own, loopback only, reads a simulated robot's
 scans and odometry under ROS 2's names and drives it through cmd_vel — the robot moves, as
 Player's own position2d says; it stops when the commands stop; a NaN or absurd command never
-reaches it; the laser's place on the base is on /tf_static. On navigation.world, a late
+reaches it; garbage datagrams to the DDS ports change nothing; the laser's place on the base
+is on /tf_static. On navigation.world, a late
 subscriber gets the map, a goal_pose reaches Player's planner and an initialpose its
 localizer."""
 
@@ -60,6 +61,7 @@ needs_a_namespace = pytest.mark.skipif(
 @needs_a_namespace
 def test_a_ros2_peer_reads_and_drives_a_player_robot(player_sim, player_ros2):
     seen = peer("drive", "simple.world", player_sim, player_ros2)
+    assert seen["garbage"] >= 100, "garbage datagrams sent to the DDS ports, and it carried on"
     assert seen["scan"]["beams"] == 181 and seen["scan"]["frame"] == "r0/laser"
     assert seen["scan"]["range_max"] == 8.0
     assert (seen["odom"]["frame"], seen["odom"]["child"]) == ("r0/odom", "r0/base_link")
