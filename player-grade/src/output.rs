@@ -3,7 +3,8 @@
 
 use std::collections::VecDeque;
 use std::io::Read;
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Condvar, Mutex};
+use std::time::Duration;
 
 /// Bytes of output kept: the end of it.
 const KEPT: usize = 32 * 1024;
@@ -14,11 +15,13 @@ pub const SHOWN_LINES: usize = 30;
 struct Kept {
     tail: VecDeque<u8>,
     total: u64,
+    /// The pipe reached its end: every writer is gone and all was read.
+    closed: bool,
 }
 
 /// The end of what a program printed, filled by a thread reading its pipe.
 #[derive(Debug, Clone, Default)]
-pub struct Output(Arc<Mutex<Kept>>);
+pub struct Output(Arc<(Mutex<Kept>, Condvar)>);
 
 impl Output {
     /// Reads `from` to its end on a thread of its own.
@@ -34,24 +37,41 @@ impl Output {
                     if n == 0 {
                         break;
                     }
-                    let mut kept = kept.lock().unwrap_or_else(|e| e.into_inner());
+                    let mut kept = kept.0.lock().unwrap_or_else(|e| e.into_inner());
                     kept.total += n as u64;
                     kept.tail.extend(&buffer[..n]);
                     let excess = kept.tail.len().saturating_sub(KEPT);
                     kept.tail.drain(..excess);
                 }
+                kept.0.lock().unwrap_or_else(|e| e.into_inner()).closed = true;
+                kept.1.notify_all();
             });
         output
     }
 
+    fn kept(&self) -> std::sync::MutexGuard<'_, Kept> {
+        self.0.0.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// Waits, at most `limit`, until the pipe is read to its end; whether it was.
+    pub fn wait_closed(&self, limit: Duration) -> bool {
+        let kept = self.kept();
+        let (kept, _) = self
+            .0
+            .1
+            .wait_timeout_while(kept, limit, |k| !k.closed)
+            .unwrap_or_else(|e| e.into_inner());
+        kept.closed
+    }
+
     /// Bytes printed in all.
     pub fn total(&self) -> u64 {
-        self.0.lock().unwrap_or_else(|e| e.into_inner()).total
+        self.kept().total
     }
 
     /// The last `lines` lines, with a first line saying what was left out.
     pub fn last_lines(&self, lines: usize) -> String {
-        let kept = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        let kept = self.kept();
         let bytes: Vec<u8> = kept.tail.iter().copied().collect();
         let text = String::from_utf8_lossy(&bytes);
         let all: Vec<&str> = text.lines().collect();
@@ -91,13 +111,10 @@ mod tests {
 
     fn read_all(text: Vec<u8>) -> Output {
         let output = Output::drain(std::io::Cursor::new(text));
-        for _ in 0..200 {
-            std::thread::sleep(std::time::Duration::from_millis(5));
-            if output.total() > 0 {
-                break;
-            }
-        }
-        std::thread::sleep(std::time::Duration::from_millis(20));
+        assert!(
+            output.wait_closed(Duration::from_secs(10)),
+            "read to its end"
+        );
         output
     }
 

@@ -116,20 +116,8 @@ pub fn judge(
         }
     };
     // The pipe's writers are gone with the child: what it printed is read to the end.
-    let deadline = Instant::now() + Duration::from_secs(2);
-    let text = loop {
-        let text = output.last_lines(40);
-        if text.contains(RESULT) || Instant::now() >= deadline || !status.success() {
-            break text;
-        }
-        std::thread::sleep(Duration::from_millis(5));
-    };
-    std::thread::sleep(Duration::from_millis(20));
-    let text = if status.success() {
-        text
-    } else {
-        output.last_lines(40)
-    };
+    output.wait_closed(Duration::from_secs(2));
+    let text = output.last_lines(40);
     let Some(line) = text.lines().find_map(|l| l.strip_prefix(RESULT)) else {
         let error = output
             .python_error()
