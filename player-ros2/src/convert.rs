@@ -15,7 +15,7 @@ use player_proto::interfaces::planner::Planner;
 use player_proto::interfaces::position2d::Position2d;
 use player_proto::interfaces::power::Power;
 use player_proto::message::{Body, Message};
-use player_proto::wire::MsgType;
+use player_proto::wire::{Interface, MsgType};
 
 use crate::cdr::{CdrError, serialize};
 use crate::msgs::{
@@ -24,6 +24,17 @@ use crate::msgs::{
     TransformStamped, Twist, TwistWithCovariance, Vector3, covariance, schema_text,
 };
 use crate::names::{frame, topic};
+
+/// The interfaces whose messages [`convert`] maps: a message of any other becomes nothing, so
+/// it need not even be decoded.
+pub const MAPPED: [Interface; 6] = [
+    Interface::LASER,
+    Interface::POSITION2D,
+    Interface::LOCALIZE,
+    Interface::PLANNER,
+    Interface::POWER,
+    Interface::CAMERA,
+];
 
 /// The frame localizers and planners speak in.
 pub const MAP_FRAME: &str = "map";

@@ -17,6 +17,7 @@ use player_proto::message::Message;
 
 use super::steer::{Steering, latched};
 use super::{LiveError, RobotNode, Ros2};
+use crate::convert::MAPPED;
 
 /// How often each robot's commands from ROS 2 are looked for.
 const TICK: Duration = Duration::from_millis(20);
@@ -82,6 +83,11 @@ impl Front for Ros2Front {
             else {
                 return;
             };
+            // Decoded only when ROS 2 has a counterpart for it: the tap runs on the robot's
+            // thread for every message.
+            if !MAPPED.contains(&header.addr.interf) {
+                return;
+            }
             let Ok(message) = Message::decode(*header, body.clone()) else {
                 return;
             };

@@ -9,18 +9,10 @@ use std::time::Duration;
 use anyhow::{Context, Result};
 use player_proto::RobotId;
 use player_proto::client::{Client, ClientOptions, ConnectionState};
-use player_proto::wire::{DevAddr, Interface};
+use player_proto::wire::DevAddr;
+use player_ros2::convert::MAPPED;
 use player_ros2::live::steer::{Steering, latched};
 use player_ros2::live::{RobotNode, Ros2};
-
-/// What the bridge subscribes to: what it has a ROS 2 counterpart for.
-const MAPPED: [Interface; 5] = [
-    Interface::LASER,
-    Interface::POSITION2D,
-    Interface::LOCALIZE,
-    Interface::POWER,
-    Interface::CAMERA,
-];
 
 /// How long the loop sleeps at most without news (deadlines are checked as often).
 const TICK: Duration = Duration::from_millis(20);
