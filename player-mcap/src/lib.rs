@@ -10,21 +10,23 @@
 //! * [`McapRecords`] — records out of one, trusting nothing.
 //! * [`prec_to_mcap`] / [`mcap_to_prec`] — whole files, streaming, in bounded memory.
 //! * [`recorder`] — a recorder writing MCAP directly when the file is named `*.mcap`.
-//! * [`as_prec`] — an MCAP file read as the `.prec` it holds, by a replay or a summary.
+//! * [`McapFile`] — an MCAP file as a recording source, read from its start or from a seek
+//!   point through its chunk index, by a replay or a summary: no conversion first.
 
-pub mod as_prec;
 pub mod foxglove_channels;
 pub mod layout;
 pub mod reader;
 pub mod sink;
+pub mod source;
 pub mod writer;
 
 use std::io::{Read, Seek, Write};
 
-use player_proto::recording::{ReadError, RecordingReader, RecordingWriter, WriteError};
+use player_proto::recording::{RecordStream, RecordingWriter, WriteError};
 
 pub use reader::{McapReadError, McapRecords};
 pub use sink::{RecordError, recorder, reproducible_recorder};
+pub use source::{IndexedReadError, McapFile, open_recording};
 pub use writer::{McapOptions, McapRecordWriter, McapWriteError};
 
 /// The conventional file extension of an MCAP file.
@@ -44,8 +46,9 @@ pub fn is_mcap(path: &std::path::Path) -> bool {
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum ConvertError {
+    /// Reading the recording (a `.prec`, or any other source) stopped.
     #[error(transparent)]
-    ReadPrec(#[from] ReadError),
+    Read(#[from] player_proto::recording::SourceError),
     #[error(transparent)]
     ReadMcap(#[from] McapReadError),
     #[error(transparent)]
@@ -66,16 +69,17 @@ pub struct Converted {
 
 /// Writes every record of a recording into an MCAP file, up to a torn or damaged tail (kept in
 /// [`Converted::stopped`]).
-pub fn prec_to_mcap<R: Read, W: Write + Seek>(
-    input: RecordingReader<R>,
+pub fn prec_to_mcap<W: Write + Seek>(
+    mut input: impl RecordStream,
     out: W,
     options: McapOptions,
 ) -> Result<(Converted, W), ConvertError> {
     let mut writer = McapRecordWriter::new(out, options)?;
     let mut converted = Converted::default();
-    for record in input {
-        match record {
-            Ok(record) => writer.write(&record)?,
+    loop {
+        match input.next_record() {
+            Ok(Some(record)) => writer.write(&record)?,
+            Ok(None) => break,
             Err(e) => {
                 converted.stopped = Some(e.into());
                 break;
@@ -106,5 +110,7 @@ pub fn mcap_to_prec<R: Read, W: Write>(input: R, out: W) -> Result<(Converted, W
     Ok((converted, writer.into_inner()))
 }
 
+#[cfg(test)]
+mod source_tests;
 #[cfg(test)]
 mod tests;

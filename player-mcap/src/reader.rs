@@ -19,7 +19,7 @@ use crate::layout::{FILE_METADATA, LayoutError, Stream, parse_session, player_ch
 const READ_PIECE: usize = 64 * 1024;
 /// The largest MCAP record (a chunk, decompressed) accepted: a chunk holds up to the writer's
 /// chunk size plus one message, and a message is at most a recording's largest record.
-const RECORD_LIMIT: usize = MAX_PAYLOAD + 16 * 1024 * 1024;
+pub(crate) const RECORD_LIMIT: usize = MAX_PAYLOAD + 16 * 1024 * 1024;
 
 /// Why the records of an MCAP file cannot be read (any further).
 #[derive(Debug, thiserror::Error)]
@@ -230,7 +230,7 @@ impl<R: Read> Iterator for McapRecords<R> {
 }
 
 /// The event an MCAP message of a Player stream carries.
-fn to_event(stream: Stream, data: &[u8]) -> Result<Event, LayoutError> {
+pub(crate) fn to_event(stream: Stream, data: &[u8]) -> Result<Event, LayoutError> {
     let direction = match stream {
         Stream::Session => return parse_session(data),
         Stream::ToClient => Direction::ServerToClient,

@@ -13,7 +13,7 @@ use super::*;
 
 /// Every capture of real Player 3 + Stage 4 traffic in the repository, one connection each,
 /// interleaved in time as a recorder of all of them would have them.
-fn real_records() -> Vec<Record> {
+pub(crate) fn real_records() -> Vec<Record> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../captures");
     let mut paths: Vec<_> = [root.clone(), root.join("nav")]
         .iter()
@@ -37,7 +37,7 @@ fn real_records() -> Vec<Record> {
     records
 }
 
-fn prec(records: &[Record]) -> Vec<u8> {
+pub(crate) fn prec(records: &[Record]) -> Vec<u8> {
     let mut writer = RecordingWriter::new(Vec::new()).unwrap();
     for r in records {
         writer.write(r).unwrap();
@@ -45,7 +45,7 @@ fn prec(records: &[Record]) -> Vec<u8> {
     writer.into_inner()
 }
 
-fn mcap_of(prec_bytes: &[u8], chunk_size: u64) -> Vec<u8> {
+pub(crate) fn mcap_of(prec_bytes: &[u8], chunk_size: u64) -> Vec<u8> {
     let options = McapOptions {
         chunk_size,
         ..McapOptions::default()

@@ -12,7 +12,7 @@ use std::time::Duration;
 use bytes::Bytes;
 use player_proto::capture::{Direction, parse_capture};
 use player_proto::client::{Client, ClientOptions, TapEvent};
-use player_proto::interfaces::log::{self, Log, LogSetReadState};
+use player_proto::interfaces::log::{self, Log, LogReadStep, LogSetReadPosition, LogSetReadState};
 use player_proto::message::Body;
 use player_proto::recording::from_capture::records_from_capture;
 use player_proto::recording::{Event, RecordingReader, RecordingWriter};
@@ -212,4 +212,67 @@ fn a_file_that_is_mcap_but_no_recording_is_refused_by_name() {
     let text = error.to_string();
     assert!(text.contains("other.mcap"), "{text}");
     assert!(text.contains("not a Player recording"), "{text}");
+}
+
+/// Seeks a paused replay of `path` to the middle and steps once: the newest scan before the
+/// middle (what a seek shows) and the one after it.
+fn seek_and_step(path: &Path) -> Vec<Seen> {
+    let options = ReplayOptions {
+        port_base: Some(0),
+        paused: true,
+        ..ReplayOptions::default()
+    };
+    let replaying = replay(path, &options).unwrap();
+    let log_device = replaying.servers[0].log;
+    let (options, received) = collecting();
+    let client = Client::connect("127.0.0.1", replaying.servers[0].port, options).unwrap();
+    client.laser(0).subscribe().unwrap();
+    let middle = replaying.clock.duration_ns() as f64 / 2e9;
+    let seek = Log::SetReadPosition(LogSetReadPosition { position: middle });
+    client
+        .request(log_device, log::REQ_SET_READ_POSITION, Body::Log(seek))
+        .unwrap();
+    let mut seen = vec![next_laser(&received)];
+    let step = Log::ReadStep(LogReadStep { seconds: 0.0 });
+    client
+        .request(log_device, log::REQ_READ_STEP, Body::Log(step))
+        .unwrap();
+    seen.push(next_laser(&received));
+    seen
+}
+
+fn next_laser(received: &Receiver<Seen>) -> Seen {
+    loop {
+        let (header, body) = received.recv_timeout(WAIT).expect("a laser scan");
+        if header.msg_type == MsgType::Data && header.addr.interf == Interface::LASER {
+            return (header, body);
+        }
+    }
+}
+
+#[test]
+fn seeking_an_mcap_replay_reads_from_its_chunk_index_as_the_prec_is_read() {
+    let dir = tempfile::tempdir().unwrap();
+    let (prec, sent) = real_recording(dir.path());
+    let mcap = to_mcap(&prec);
+    assert!(player_mcap::McapFile::open(&mcap).unwrap().indexed());
+    let from_prec = seek_and_step(&prec);
+    let from_mcap = seek_and_step(&mcap);
+    same(&from_prec, &from_mcap);
+    // Scans come in pairs with one timestamp: the seek shows the newest before the middle,
+    // and the step plays the one after it in the file.
+    let is = |seen: &Seen, s: &Seen| s.0.timestamp == seen.0.timestamp && s.1 == seen.1;
+    let shown = sent.iter().rposition(|s| is(&from_mcap[0], s)).unwrap();
+    let after = sent[shown + 1..].iter().position(|s| is(&from_mcap[1], s));
+    let next = shown + 1 + after.unwrap();
+    assert_eq!(
+        next,
+        shown + 1,
+        "the step plays the scan after the one shown"
+    );
+    assert!(
+        shown > 0 && next < sent.len() - 1,
+        "the middle of {} scans",
+        sent.len()
+    );
 }

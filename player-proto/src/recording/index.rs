@@ -4,12 +4,11 @@
 //! each request, the time span, and places to seek to.
 
 use std::collections::{BTreeMap, HashMap};
-use std::io::Read;
 
 use bytes::Bytes;
 
 use super::format::{Event, Record};
-use super::reader::{ReadError, RecordingReader};
+use super::source::{RecordSource, RecordStream, SourceError};
 use crate::capture::Direction;
 use crate::interfaces::player::{self, Player};
 use crate::message::{Body, Message};
@@ -50,7 +49,9 @@ impl ConnectionIndex {
     }
 }
 
-/// Where reading may resume: a record boundary.
+/// Where reading may resume: a record boundary, at `time_ns`. `offset` and `records` are what
+/// the source's stream said of its position there ([`RecordStream::position`]): for a `.prec`
+/// the byte offset and the records before it; a source that seeks by time may leave them 0.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct SeekPoint {
     pub time_ns: u64,
@@ -71,16 +72,20 @@ pub struct RecordingIndex {
     /// In increasing time, the first at the first record.
     pub seek_points: Vec<SeekPoint>,
     /// Why reading stopped before the end of the file, if it did: everything before is indexed.
-    pub stopped: Option<ReadError>,
+    pub stopped: Option<SourceError>,
 }
 
 impl RecordingIndex {
+    /// Reads the whole recording from `source`; only opening it is an error.
+    pub fn read(source: &dyn RecordSource) -> Result<RecordingIndex, SourceError> {
+        Ok(RecordingIndex::build(source.read()?))
+    }
+
     /// Reads the whole recording. A reader error ends the pass and is kept in `stopped`.
-    pub fn build<R: Read>(mut reader: RecordingReader<R>) -> RecordingIndex {
+    pub fn build(mut reader: impl RecordStream) -> RecordingIndex {
         let mut index = RecordingIndex::default();
         loop {
-            let offset = reader.offset();
-            let records = reader.records();
+            let (offset, records) = reader.position();
             match reader.next_record() {
                 Ok(Some(record)) => index.add(&record, offset, records),
                 Ok(None) => break,

@@ -5,6 +5,7 @@
 //! * [`writer`] / [`reader`] — appending records; reading them back without trusting the file.
 //! * [`from_capture`] — a capture of real Player traffic (`captures/`) as records.
 //! * [`index`] — one pass for what a replay or a summary needs (devices, replies, seeking).
+//! * [`source`] — a recording read from its start or from a seek point, whatever file holds it.
 //! * [`playerlog`] — export to the text format of Player's `writelog`/`readlog` drivers.
 //! * [`recorder`] — a client tap that writes on its own thread and counts what it could not,
 //!   into a `.prec` or any other [`sink::RecordSink`].
@@ -29,6 +30,7 @@ pub mod playerlog;
 pub mod reader;
 pub mod recorder;
 pub mod sink;
+pub mod source;
 pub mod writer;
 
 pub use format::{Event, Record};
@@ -36,6 +38,7 @@ pub use index::RecordingIndex;
 pub use reader::{ReadError, RecordingReader};
 pub use recorder::{ConnectionOpener, Recorder, RecorderError, RecorderStats};
 pub use sink::RecordSink;
+pub use source::{PrecFile, RecordSource, RecordStream, SourceError};
 pub use writer::{RecordingWriter, WriteError};
 
 /// The conventional file extension of a recording.

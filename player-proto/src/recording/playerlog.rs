@@ -16,10 +16,10 @@
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::io::{self, Read, Write};
+use std::io::{self, Write};
 
 use super::format::Event;
-use super::reader::{ReadError, RecordingReader};
+use super::source::{RecordStream, SourceError};
 use crate::capture::Direction;
 use crate::interfaces::common::{BBox3d, Pose3d};
 use crate::interfaces::laser::Laser;
@@ -38,7 +38,7 @@ pub enum ExportError {
     #[error("writing the Player log: {0}")]
     Write(#[from] io::Error),
     #[error(transparent)]
-    Read(#[from] ReadError),
+    Read(#[from] SourceError),
 }
 
 /// What an export wrote and left out.
@@ -54,10 +54,7 @@ pub struct ExportStats {
 
 /// Writes the recording's messages from servers as a Player log. A torn tail ends the export
 /// (reported in the stats); other damage is an error.
-pub fn export<R: Read, W: Write>(
-    mut reader: RecordingReader<R>,
-    out: W,
-) -> Result<ExportStats, ExportError> {
+pub fn export<W: Write>(mut reader: impl RecordStream, out: W) -> Result<ExportStats, ExportError> {
     let mut out = io::BufWriter::new(out);
     let mut stats = ExportStats::default();
     let mut header_written = false;

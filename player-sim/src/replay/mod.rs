@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::thread::JoinHandle;
 
-use player_proto::recording::{self, ReadError, RecordingIndex};
+use player_proto::recording::{RecordSource, RecordingIndex, SourceError};
 use player_proto::server::{Server, ServerConfig, ServerError};
 use player_proto::wire::{DevAddr, Interface};
 
@@ -53,7 +53,7 @@ impl Default for ReplayOptions {
 #[derive(Debug, thiserror::Error)]
 pub enum ReplayError {
     #[error("cannot read {path}: {source}")]
-    Read { path: PathBuf, source: ReadError },
+    Read { path: PathBuf, source: SourceError },
     #[error("{path} holds no connection to replay")]
     Empty { path: PathBuf },
     #[error("{a} and {b} were both recorded on port {port}; serve them apart with --port-base")]
@@ -62,8 +62,6 @@ pub enum ReplayError {
     NoPort { base: u16, server: String },
     #[error("--speed must be above 0, not {0}")]
     Speed(f64),
-    #[error(transparent)]
-    Mcap(#[from] player_mcap::as_prec::FromMcapError),
     #[error(transparent)]
     Server(#[from] ServerError),
 }
@@ -84,11 +82,9 @@ pub struct Replaying {
     pub servers: Vec<ServedRecording>,
     pub clock: Arc<Clock>,
     /// Why reading the recording stopped before its end (a torn tail): playback ends there.
-    pub stopped: Option<ReadError>,
+    pub stopped: Option<SourceError>,
     thread: Option<JoinHandle<()>>,
     _server: Server,
-    /// The recording an MCAP file was converted to, removed after the playback stopped.
-    _converted: Option<player_mcap::as_prec::ConvertedRecording>,
 }
 
 impl Replaying {
@@ -112,25 +108,28 @@ impl Drop for Replaying {
 /// Reads the recording (a `.prec`, or an MCAP file written from one) once for its servers and
 /// devices, then serves it.
 pub fn replay(path: &Path, options: &ReplayOptions) -> Result<Replaying, ReplayError> {
+    let read_error = |source| ReplayError::Read {
+        path: path.to_path_buf(),
+        source,
+    };
+    let source = player_mcap::open_recording(path).map_err(read_error)?;
+    replay_source(Arc::from(source), path, options)
+}
+
+/// Serves the recording `source` holds; `path` names it in errors.
+pub fn replay_source(
+    source: Arc<dyn RecordSource>,
+    path: &Path,
+    options: &ReplayOptions,
+) -> Result<Replaying, ReplayError> {
     if !(options.speed > 0.0 && options.speed.is_finite()) {
         return Err(ReplayError::Speed(options.speed));
-    }
-    if player_mcap::is_mcap(path) {
-        let converted = player_mcap::as_prec::convert(path)?;
-        let mut replaying = replay(&converted.path, options).map_err(|e| match e {
-            ReplayError::Empty { .. } => ReplayError::Empty {
-                path: path.to_path_buf(),
-            },
-            e => e,
-        })?;
-        replaying._converted = Some(converted);
-        return Ok(replaying);
     }
     let read_error = |source| ReplayError::Read {
         path: path.to_path_buf(),
         source,
     };
-    let index = RecordingIndex::build(recording::open(path).map_err(read_error)?);
+    let index = RecordingIndex::read(&*source).map_err(read_error)?;
     if let Some(e) = &index.stopped
         && !e.is_torn_tail()
     {
@@ -226,7 +225,7 @@ pub fn replay(path: &Path, options: &ReplayOptions) -> Result<Replaying, ReplayE
         });
     }
     let playback = Playback {
-        path: path.to_path_buf(),
+        source,
         clock: clock.clone(),
         publisher: server.publisher(),
         ports: connection_ports,
@@ -245,7 +244,6 @@ pub fn replay(path: &Path, options: &ReplayOptions) -> Result<Replaying, ReplayE
         stopped: index.stopped,
         thread: Some(thread),
         _server: server,
-        _converted: None,
     })
 }
 

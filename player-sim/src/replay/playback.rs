@@ -4,9 +4,6 @@
 //! client shows the robots as they were there.
 
 use std::collections::{BTreeMap, HashMap};
-use std::fs::File;
-use std::io::{BufReader, Seek, SeekFrom};
-use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -14,7 +11,7 @@ use player_proto::capture::Direction;
 use player_proto::interfaces::log::{self, Log};
 use player_proto::message::Body;
 use player_proto::recording::index::SeekPoint;
-use player_proto::recording::{Event, Record, RecordingReader};
+use player_proto::recording::{Event, Record, RecordSource, RecordStream};
 use player_proto::server::Publisher;
 use player_proto::wire::{DevAddr, Header, Interface, MsgType};
 
@@ -33,7 +30,7 @@ struct Due {
 
 /// Everything the thread needs.
 pub struct Playback {
-    pub path: PathBuf,
+    pub source: Arc<dyn RecordSource>,
     pub clock: Arc<Clock>,
     pub publisher: Publisher,
     /// Served port of each recorded connection.
@@ -47,7 +44,7 @@ pub struct Playback {
     pub looping: bool,
 }
 
-type Reader = RecordingReader<BufReader<File>>;
+type Reader = Box<dyn RecordStream>;
 
 impl Playback {
     pub fn run(self) {
@@ -78,7 +75,7 @@ impl Playback {
                     Wake::Stop => return,
                     Wake::Seek { to, seeks: now } => {
                         seeks = now;
-                        reader = self.seek(to);
+                        (reader, next) = self.seek(to);
                         at_end = false;
                     }
                     Wake::Due | Wake::Changed => {}
@@ -97,8 +94,7 @@ impl Playback {
                 }
                 Wake::Seek { to, seeks: now } => {
                     seeks = now;
-                    reader = self.seek(to);
-                    next = None;
+                    (reader, next) = self.seek(to);
                     self.report();
                     reported = Instant::now();
                 }
@@ -116,19 +112,10 @@ impl Playback {
 
     /// A reader at `point`, or `None` (logged) if the file cannot be read there.
     fn open_at(&self, point: Option<SeekPoint>) -> Option<Reader> {
-        let point = point?;
-        let opened = File::open(&self.path).and_then(|mut file| {
-            file.seek(SeekFrom::Start(point.offset))?;
-            Ok(file)
-        });
-        match opened {
-            Ok(file) => Some(RecordingReader::resume(
-                BufReader::new(file),
-                point.offset,
-                point.records,
-            )),
+        match self.source.read_from(point?) {
+            Ok(reader) => Some(reader),
             Err(e) => {
-                tracing::error!("cannot read {} again: {e}", self.path.display());
+                tracing::error!("cannot read {} again: {e}", self.source.name());
                 None
             }
         }
@@ -173,27 +160,20 @@ impl Playback {
     }
 
     /// Reads from the seek point before `to`, keeping the newest message of each device and
-    /// subtype up to `to`, publishes those, and returns the reader after them.
-    fn seek(&self, to: u64) -> Option<Reader> {
+    /// subtype up to `to`, publishes those, and returns the reader after them with the first
+    /// message past `to`, which is due next.
+    fn seek(&self, to: u64) -> (Option<Reader>, Option<Due>) {
         let target = self.first_ns.saturating_add(to);
         let after = self.seek_points.partition_point(|p| p.time_ns <= target);
         let point = self.seek_points.get(after.saturating_sub(1)).copied();
-        let mut reader = self.open_at(point)?;
+        let Some(mut reader) = self.open_at(point) else {
+            return (None, None);
+        };
         let mut newest: BTreeMap<(u16, Interface, u16, u8), Due> = BTreeMap::new();
-        loop {
-            let offset = reader.offset();
-            let records = reader.records();
-            let Some(due) = self.next_due(&mut reader) else {
-                break;
-            };
+        let mut next = None;
+        while let Some(due) = self.next_due(&mut reader) {
             if due.at > to {
-                // Read again from this record's start, so it is played, not lost.
-                let back = SeekPoint {
-                    time_ns: target,
-                    offset,
-                    records,
-                };
-                reader = self.open_at(Some(back))?;
+                next = Some(due);
                 break;
             }
             let h = &due.header;
@@ -202,7 +182,7 @@ impl Playback {
         for due in newest.values() {
             self.publish(due);
         }
-        Some(reader)
+        (Some(reader), next)
     }
 
     fn publish(&self, due: &Due) {

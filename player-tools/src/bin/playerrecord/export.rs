@@ -33,7 +33,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<()> {
-    let (reader, _converted) = crate::mcap_file::open_recording(&args.file)?;
+    let reader = crate::mcap_file::open_recording(&args.file)?;
     if args.rosbag2 {
         return rosbag2(reader, &args);
     }
@@ -56,10 +56,7 @@ pub fn run(args: Args) -> Result<()> {
 }
 
 /// The recording as a rosbag2 folder at `args.out`.
-fn rosbag2<R: std::io::Read>(
-    mut reader: player_proto::recording::RecordingReader<R>,
-    args: &Args,
-) -> Result<()> {
+fn rosbag2(mut reader: impl player_proto::recording::RecordStream, args: &Args) -> Result<()> {
     let mut bag = player_ros2::bag::BagWriter::create(&args.out, &args.names)?;
     let mut stopped = None;
     loop {

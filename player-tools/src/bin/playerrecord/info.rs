@@ -15,7 +15,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<()> {
-    let (reader, _converted) = crate::mcap_file::open_recording(&args.file)?;
+    let reader = crate::mcap_file::open_recording(&args.file)?;
     let index = RecordingIndex::build(reader);
     let mut out = std::io::stdout().lock();
     writeln!(

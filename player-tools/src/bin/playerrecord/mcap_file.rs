@@ -7,25 +7,13 @@ use std::io::{BufReader, BufWriter};
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
-use player_mcap::as_prec::ConvertedRecording;
-use player_proto::recording::{self, RecordingReader};
+use player_proto::recording::RecordStream;
 
-/// A recording opened for reading, and the `.prec` an MCAP file was converted to for it
-/// (removed when this is dropped, so keep it while reading).
-pub type Opened = (RecordingReader<BufReader<File>>, Option<ConvertedRecording>);
-
-/// Opens a recording whichever kind its file is: a `.prec` as it is, an MCAP file written from
-/// one (by `export --mcap` or by recording to `*.mcap`) through the `.prec` it holds.
-pub fn open_recording(path: &Path) -> Result<Opened> {
-    if !player_mcap::is_mcap(path) {
-        let reader =
-            recording::open(path).with_context(|| format!("reading {}", path.display()))?;
-        return Ok((reader, None));
-    }
-    let converted = player_mcap::as_prec::convert(path)?;
-    let reader = recording::open(&converted.path)
-        .with_context(|| format!("reading what {} holds", path.display()))?;
-    Ok((reader, Some(converted)))
+/// Reads a recording whichever kind its file is: a `.prec`, or an MCAP file written from one
+/// (by `export --mcap` or by recording to `*.mcap`), read directly.
+pub fn open_recording(path: &Path) -> Result<Box<dyn RecordStream>> {
+    let read = || player_mcap::open_recording(path)?.read();
+    read().with_context(|| format!("reading {}", path.display()))
 }
 
 /// Is this file to be written as MCAP (by its extension)?
@@ -35,12 +23,7 @@ pub fn named_mcap(path: &Path) -> bool {
 }
 
 /// Writes a recording as MCAP.
-pub fn export(
-    reader: RecordingReader<BufReader<File>>,
-    out: File,
-    from: &Path,
-    to: &Path,
-) -> Result<()> {
+pub fn export(reader: impl RecordStream, out: File, from: &Path, to: &Path) -> Result<()> {
     let (stats, out) = player_mcap::prec_to_mcap(reader, BufWriter::new(out), Default::default())
         .with_context(|| format!("writing {}", to.display()))?;
     out.into_inner()
