@@ -10,12 +10,15 @@
 //! 4. **stop** — [`Front::stop`], once, after every robot's thread has ended.
 //!
 //! A front that passes commands on (the page's controller, Zenoh's) is also handed each
-//! robot's upstream client ([`Front::commands_through`]).
+//! robot's upstream client ([`Front::commands_through`]), and every front the robot's
+//! [`Watch`] ([`Front::watch`]): what its viewers look at is what the relay subscribes to.
 
 use std::sync::Arc;
 
 use player_proto::RobotId;
 use player_proto::client::{Client, ConnectionTap};
+
+use crate::watch::{Watch, Watching};
 
 pub trait Front: Send + Sync {
     /// What the front is called in logs.
@@ -30,6 +33,14 @@ pub trait Front: Send + Sync {
     /// by default.
     fn commands_through(&self, robot: &RobotId, client: Arc<Client>) {
         let _ = (robot, client);
+    }
+
+    /// The relay's subscriptions to `robot`, for a front that looks only at what its viewers
+    /// do: it answers [`Watching::AsLooked`] and holds a [`crate::watch::Look`] per device
+    /// looked at. By default a front watches everything: every device stays subscribed.
+    fn watch(&self, robot: &RobotId, watch: Watch) -> Watching {
+        let _ = (robot, watch);
+        Watching::Everything
     }
 
     /// The relay stops (its robots' threads have ended): let the viewers go. Nothing by

@@ -15,10 +15,15 @@
 //! Every front, WebSockets or not, is a [`Front`] ([`front`]): the relay tells it each robot
 //! that arrives, its messages, its leaving, and when to stop. A new front is a crate that
 //! implements it (and, over WebSockets, starts from [`socket`] and [`outbox`]).
+//!
+//! A front costs what is watched ([`watch`]): it holds a [`Look`] at each device a viewer
+//! looks at, and the relay subscribes upstream only to what some front or observer looks at.
 
 pub mod front;
 pub mod outbox;
 pub mod socket;
+pub mod watch;
 
 pub use front::Front;
 pub use socket::{CloseCode, STALLED_AFTER, SendError};
+pub use watch::{Device, Look, Upstream, Watch, Watching};

@@ -10,7 +10,8 @@ use std::sync::Arc;
 use player_proto::client::Client;
 use player_proto::server::{Commanders, ReplaceRule, Server, ServerConfig, ServerError};
 
-use crate::relayed_device::{RelayedDevice, UpstreamSubscriptions};
+use crate::relayed_device::RelayedDevice;
+use crate::subscriptions::Subscriptions;
 
 /// How the downstream servers are set up.
 #[derive(Debug, Clone)]
@@ -24,7 +25,7 @@ pub struct DownstreamOptions {
 /// Starts serving one robot's devices on `port` (0: any free port).
 pub(crate) fn serve_robot(
     upstream: &Arc<Client>,
-    subscribed: &UpstreamSubscriptions,
+    subscribed: &Arc<Subscriptions>,
     port: u16,
     options: &DownstreamOptions,
 ) -> Result<Server, ServerError> {

@@ -32,6 +32,7 @@
 pub mod downstream;
 mod relayed_device;
 pub mod robot;
+pub mod subscriptions;
 mod survey;
 pub mod world;
 
@@ -44,8 +45,9 @@ use player_proto::client::{ClientOptions, ConnectError, ConnectionTap, Tap, fan_
 use player_proto::server::Commanders;
 
 pub use downstream::DownstreamOptions;
-pub use player_front::Front;
+pub use player_front::{Front, Watch, Watching};
 pub use robot::RelayedRobot;
+use subscriptions::Subscriptions;
 
 /// Kernel send buffer of each observer's connection: a few laser scans. More only lets stale
 /// data wait in the kernel for a slow observer.
@@ -194,12 +196,18 @@ impl Relay {
                     upstream,
                     downstream.clone(),
                     survey,
+                    Arc::new(Subscriptions::default()),
                 )
             })
             .collect::<Result<Vec<_>, _>>()?;
         for front in &config.fronts {
             for robot in &robots {
                 front.commands_through(robot.id(), robot.upstream().clone());
+                // What the front's viewers look at is what the relay subscribes to.
+                let watch = Watch::new(robot.subscriptions().clone());
+                if front.watch(robot.id(), watch) == Watching::Everything {
+                    robot.subscriptions().watch_everything();
+                }
             }
         }
         Ok(Relay {

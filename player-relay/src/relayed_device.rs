@@ -2,25 +2,23 @@
 //! requests go up to the robot over the relay's one connection; the server in front has
 //! already refused what an observer may not send, so whatever reaches here may go.
 
-use std::collections::HashSet;
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 
 use player_proto::client::{Client, RequestError};
 use player_proto::message::Message;
 use player_proto::server::{Device, Reply};
-use player_proto::wire::{DevAddr, Interface};
+use player_proto::wire::DevAddr;
 
-/// Devices subscribed upstream. Shared by every incarnation of a robot's downstream server,
-/// because the upstream client keeps (and restores) a subscription once made: asking again
-/// would register the relay twice with a real Player server.
-pub(crate) type UpstreamSubscriptions = Arc<Mutex<HashSet<(Interface, u16)>>>;
+use crate::subscriptions::Subscriptions;
 
 pub(crate) struct RelayedDevice {
     pub upstream: Arc<Client>,
     /// The device's address on the robot's server.
     pub addr: DevAddr,
     pub driver: String,
-    pub subscribed: UpstreamSubscriptions,
+    /// The robot's upstream subscriptions, shared with the fronts' looks and every
+    /// incarnation of its downstream server.
+    pub subscribed: Arc<Subscriptions>,
 }
 
 impl Device for RelayedDevice {
@@ -31,16 +29,8 @@ impl Device for RelayedDevice {
     /// The first observer of a device subscribes the relay to it upstream; the subscription is
     /// kept after the last one leaves (cheap next to reconnecting for the next observer).
     fn on_subscribe(&mut self) -> bool {
-        let device = (self.addr.interf, self.addr.index);
-        let first = self
-            .subscribed
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .insert(device);
-        if first {
-            // The grant arrives on the robot thread; data flows from then on.
-            drop(self.upstream.subscribe_async(self.addr));
-        }
+        // The grant arrives on the robot thread; data flows from then on.
+        self.subscribed.observe((self.addr.interf, self.addr.index));
         true
     }
 

@@ -17,7 +17,7 @@ use player_proto::wire::{DevAddr, Interface};
 
 use crate::RelayError;
 use crate::downstream::{DownstreamOptions, serve_robot};
-use crate::relayed_device::UpstreamSubscriptions;
+use crate::subscriptions::Subscriptions;
 
 /// Where a robot's downstream stands, with a signal on every change.
 #[derive(Default)]
@@ -49,6 +49,7 @@ impl Shared {
 pub struct RelayedRobot {
     id: RobotId,
     upstream: Arc<Client>,
+    subscriptions: Arc<Subscriptions>,
     shared: Arc<Shared>,
     stop: Arc<AtomicBool>,
     wake: SyncSender<()>,
@@ -62,6 +63,7 @@ impl RelayedRobot {
         client: ClientOptions,
         downstream: DownstreamOptions,
         survey: bool,
+        subscriptions: Arc<Subscriptions>,
     ) -> Result<RelayedRobot, RelayError> {
         // One pending wake-up is enough: the thread looks at everything new when it wakes.
         let (wake, woken) = sync_channel(1);
@@ -73,6 +75,7 @@ impl RelayedRobot {
             ..client
         };
         let upstream = Arc::new(Client::spawn(id.host(), id.port(), options)?);
+        subscriptions.set_client(upstream.clone());
         let shared = Arc::new(Shared::default());
         shared.publish(|s| s.port = (listen_port != 0).then_some(listen_port));
         let stop = Arc::new(AtomicBool::new(false));
@@ -84,7 +87,7 @@ impl RelayedRobot {
             downstream,
             survey,
             surveyed: false,
-            subscribed: UpstreamSubscriptions::default(),
+            subscribed: subscriptions.clone(),
             forwarded: HashMap::new(),
         };
         let thread = std::thread::Builder::new()
@@ -94,6 +97,7 @@ impl RelayedRobot {
         Ok(RelayedRobot {
             id: id.clone(),
             upstream,
+            subscriptions,
             shared,
             stop,
             wake,
@@ -108,6 +112,18 @@ impl RelayedRobot {
 
     pub fn upstream(&self) -> &Arc<Client> {
         &self.upstream
+    }
+
+    /// The devices the relay is subscribed to upstream now: those some front looks at or
+    /// some observer subscribed to (and, for a moment on each connection, all of them while
+    /// the fronts' survey describes them).
+    pub fn upstream_subscriptions(&self) -> Vec<player_front::Device> {
+        self.subscriptions.subscribed()
+    }
+
+    /// The robot's subscriptions, as the fronts' watches see them.
+    pub fn subscriptions(&self) -> &Arc<Subscriptions> {
+        &self.subscriptions
     }
 
     /// The port observers connect to, once it is bound.
@@ -159,7 +175,7 @@ struct Follower {
     survey: bool,
     /// Whether this connection was surveyed.
     surveyed: bool,
-    subscribed: UpstreamSubscriptions,
+    subscribed: Arc<Subscriptions>,
     /// The sequence number last passed on, per device and subtype.
     forwarded: HashMap<(Interface, u16, u8), u64>,
 }

@@ -1,65 +1,59 @@
 //! For the relay's fronts (the web page, a Foxglove server), which are not Player clients and
-//! so never subscribe or ask: on each connection to a robot, subscribe to all its devices and
-//! ask what describes them (geometries, configurations, map tiles). The answers reach the
-//! fronts through the upstream client's tap, like the data that follows.
+//! so never subscribe or ask: on each connection to a robot, hold all its devices subscribed
+//! for a moment, ask what describes them (geometries, configurations, map tiles) and wait for
+//! each one's first data — so that every front knows what the robot has (Foxglove advertises
+//! a channel once it has converted a message for it) — then let go of whatever nobody looks
+//! at. The answers and the first data reach the fronts through the upstream client's tap, and
+//! the fronts keep what describes a device for the viewers that come later.
 
 use std::sync::Arc;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
+use player_front::Device;
 use player_proto::RobotId;
 use player_proto::client::Client;
 use player_proto::client::describe::describe;
 
-use crate::relayed_device::UpstreamSubscriptions;
+use crate::subscriptions::Subscriptions;
 
-/// How long a robot has to answer the survey's subscriptions, and then its questions.
+/// How long a robot has to answer the survey's questions.
 const SURVEY_WAIT: Duration = Duration::from_secs(5);
 
+/// How long the survey holds a device for its first data: a device with nothing to say yet
+/// (a planner with no path) is let go after this.
+const FIRST_DATA_WAIT: Duration = Duration::from_secs(2);
+
+/// How often the survey looks whether every device's first data came.
+const FIRST_DATA_POLL: Duration = Duration::from_millis(50);
+
 /// Surveys the robot on a thread of its own: the relay's robot thread never waits on it.
-pub(crate) fn start(id: &RobotId, upstream: &Arc<Client>, subscribed: &UpstreamSubscriptions) {
-    let (id, upstream, subscribed) = (id.clone(), upstream.clone(), subscribed.clone());
+pub(crate) fn start(id: &RobotId, upstream: &Arc<Client>, subscriptions: &Arc<Subscriptions>) {
+    let (id, upstream, subscriptions) = (id.clone(), upstream.clone(), subscriptions.clone());
     let spawned = std::thread::Builder::new()
         .name(format!("survey {id}"))
-        .spawn(move || survey(&id, &upstream, &subscribed));
+        .spawn(move || survey(&id, &upstream, &subscriptions));
     if let Err(e) = spawned {
         tracing::error!("cannot start a survey thread: {e}");
     }
 }
 
-fn survey(id: &RobotId, upstream: &Client, subscribed: &UpstreamSubscriptions) {
-    let mut pending = Vec::new();
-    for device in upstream.devices() {
-        let addr = upstream.addr(device.addr.interf, device.addr.index);
-        let key = (addr.interf, addr.index);
-        // A device subscribed once stays subscribed across reconnections (the client restores
-        // it): asking again would register the relay twice with a real Player server.
-        let first = subscribed
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .insert(key);
-        if first {
-            pending.push((addr, Some(upstream.subscribe_async(addr))));
-        } else {
-            pending.push((addr, None));
-        }
+fn survey(id: &RobotId, upstream: &Client, subscriptions: &Subscriptions) {
+    let devices: Vec<Device> = upstream
+        .devices()
+        .iter()
+        .map(|d| (d.addr.interf, d.addr.index))
+        .collect();
+    subscriptions.survey(&devices);
+    let addrs: Vec<_> = devices
+        .iter()
+        .map(|&(interf, index)| upstream.addr(interf, index))
+        .collect();
+    let described = describe(addrs.iter().map(|addr| (upstream, *addr)), SURVEY_WAIT);
+    let deadline = Instant::now() + FIRST_DATA_WAIT;
+    while Instant::now() < deadline && addrs.iter().any(|addr| upstream.stats(*addr).messages == 0)
+    {
+        std::thread::sleep(FIRST_DATA_POLL);
     }
-    let mut devices = Vec::new();
-    for (addr, reply) in pending {
-        match reply.map(|r| r.wait(SURVEY_WAIT)) {
-            Some(Err(e)) => {
-                tracing::warn!(device = %addr, "not subscribed for the relay's fronts: {e}");
-                subscribed
-                    .lock()
-                    .unwrap_or_else(|e| e.into_inner())
-                    .remove(&(addr.interf, addr.index));
-            }
-            _ => devices.push((upstream, addr)),
-        }
-    }
-    let described = describe(devices, SURVEY_WAIT);
-    tracing::debug!(
-        robot = %id,
-        ?described,
-        "surveyed for the fronts"
-    );
+    subscriptions.surveyed();
+    tracing::debug!(robot = %id, ?described, "surveyed for the fronts");
 }

@@ -340,6 +340,52 @@ function frame() {
   view.zoom = Math.min(canvas.width / w, canvas.height / h, 200);
 }
 
+// ---- what the page shows --------------------------------------------------------------
+
+// The relay sends every robot's pose, and the sensors of the robots in view only (of at most
+// SENSORS_IN_VIEW robots: zoomed out over more, a scan is a few pixels wide and the page draws
+// bodies only). The page says which robots are in view when that changes, at most twice a
+// second; what the relay does not send, the robots' servers do not compute.
+const SENSORS_IN_VIEW = 64;
+let shownSaid = null;
+
+function inView() {
+  const [x0, y1] = toWorld(0, 0), [x1, y0] = toWorld(canvas.width, canvas.height);
+  const margin = 2; // a robot just outside still reaches in with its scan
+  const names = [];
+  for (const [name, robot] of robots) {
+    const seen = bases(robot).some(({ d }) => {
+      const { px, py } = d.State.pos;
+      return px >= x0 - margin && px <= x1 + margin && py >= y0 - margin && py <= y1 + margin;
+    });
+    if (seen) names.push(name);
+  }
+  return names;
+}
+
+function sayShown() {
+  if (!socket || socket.readyState !== WebSocket.OPEN || canvas.width === 0) return;
+  let names = inView();
+  if (names.length > SENSORS_IN_VIEW) names = [];
+  if (selected && !names.includes(selected.robot)) names.push(selected.robot);
+  names.sort();
+  const said = names.join("\n");
+  if (said === shownSaid) return;
+  shownSaid = said;
+  socket.send(JSON.stringify({ type: "show", robots: names }));
+  // The sensors of robots out of view stop coming: their last readings are not drawn stale.
+  const shown = new Set(names);
+  for (const [name, robot] of robots) {
+    if (shown.has(name)) continue;
+    for (const [device, d] of robot.devices) {
+      if (device.startsWith("position2d:")) continue;
+      for (const key of Object.keys(d)) if (key !== "geom" && key !== "config") delete d[key];
+    }
+  }
+  dirty = true;
+}
+setInterval(sayShown, 500);
+
 // ---- rows -----------------------------------------------------------------------------
 
 // At most this many rows are listed: with a thousand robots, the selected one, those the
@@ -382,8 +428,9 @@ function showRows(rows) {
       const age = d.age === null ? "no data" : `${d.age.toFixed(1)} s`;
       const hz = d.hz >= 10 ? d.hz.toFixed(0) : d.hz.toFixed(1);
       const span = document.createElement("span");
-      span.className = "device" + (d.age === null || d.age > 2 ? " stale" : "");
-      span.textContent = `${d.device} ${hz} Hz · ${age}`;
+      span.className = "device" + (!d.shown ? " unshown" : d.age === null || d.age > 2 ? " stale" : "");
+      // A device no page shows is not subscribed: it has no rate to give.
+      span.textContent = d.shown ? `${d.device} ${hz} Hz · ${age}` : `${d.device} · not shown`;
       devices.append(span);
     }
     tr.append(cell(row.robot), cell(link, `link-${row.link.state}`), devices);
@@ -514,7 +561,7 @@ document.addEventListener("visibilitychange", () => { if (document.hidden) stopD
 function connect() {
   const badge = document.getElementById("socket");
   socket = new WebSocket(`${location.protocol === "https:" ? "wss" : "ws"}://${location.host}/ws`);
-  socket.onopen = () => { badge.textContent = "live"; badge.className = "badge ok"; };
+  socket.onopen = () => { badge.textContent = "live"; badge.className = "badge ok"; shownSaid = null; };
   socket.onmessage = (e) => onMessage(JSON.parse(e.data));
   socket.onclose = () => {
     held.clear();

@@ -81,6 +81,8 @@ impl Control {
             FromPage::Goal { robot, device, .. } | FromPage::Velocity { robot, device, .. } => {
                 (robot.clone(), *device)
             }
+            // What a page has in view is the hub's, not a command (see `socket`).
+            FromPage::Show { .. } => return Ok(()),
         };
         if device.interf != Interface::POSITION2D {
             return Err(Refused::NotABase(device));
@@ -112,6 +114,7 @@ impl Control {
                 }
                 (device, Body::Position2d(Position2d::Velocity(command)))
             }
+            FromPage::Show { .. } => return Ok(()),
             FromPage::Goal { goal, .. } => {
                 if has(Interface::PLANNER) {
                     let addr = DevAddr::local(Interface::PLANNER, device.index);

@@ -1,39 +1,31 @@
 //! Everything the pages are shown, in one place: each robot's link, the newest message of
 //! each kind per device (what a page that opens now is sent first), and a broadcast of every
 //! new message to the open pages. Fed from the relay's upstream taps; each message is turned
-//! into JSON once, whatever the number of pages.
+//! into JSON once, whatever the number of pages. What the open pages show ([`Views`]) is what
+//! the hub looks at through each robot's [`Watch`], and so what the relay subscribes to; data
+//! of a device no page shows is counted in the rows and not turned into JSON.
 
 use std::collections::{BTreeMap, HashMap};
 use std::sync::{Arc, Mutex, MutexGuard};
 use std::time::{Instant, SystemTime};
 
 use axum::extract::ws::Utf8Bytes;
+use player_front::{Device, Look, Watch};
 use player_proto::RobotId;
 use player_proto::capture::Direction;
 use player_proto::client::{DeviceStats, RobotTap, TapEvent};
-use player_proto::message::Message;
+use player_proto::interfaces::player::Player;
+use player_proto::message::{Body, Message};
 use player_proto::wire::{DevAddr, Header, Interface, MsgType};
 use tokio::sync::broadcast;
 
 use crate::page::{DeviceRow, Kind, Link, Row, ToPage};
+use crate::views::{DRAWN, Views};
 use crate::walls::Walls;
 
 /// Frames a page may fall behind before it is sent the newest of everything instead: about
 /// a second of 16 robots' data.
 const BROADCAST_DEPTH: usize = 1024;
-
-/// The interfaces the page draws; other devices' data is only counted in the rows. A camera's
-/// frames would cost every page megabytes a second for nothing drawn.
-const DRAWN: &[Interface] = &[
-    Interface::POSITION2D,
-    Interface::LASER,
-    Interface::RANGER,
-    Interface::SONAR,
-    Interface::FIDUCIAL,
-    Interface::MAP,
-    Interface::LOCALIZE,
-    Interface::PLANNER,
-];
 
 /// One JSON text frame, shared by every page (a cloned frame shares its bytes).
 pub type Frame = Utf8Bytes;
@@ -44,6 +36,49 @@ struct Robot {
     /// The newest frame per (kind, device, subtype, tile): a page that opens now starts here.
     newest: BTreeMap<(Kind, DevAddr, u8, (u32, u32)), Frame>,
     rates: HashMap<DevAddr, Rate>,
+    /// The robot's devices, as its server's device list says.
+    devices: Vec<Device>,
+    /// The relay's subscriptions to this robot, where it subscribes as the pages look; `None`
+    /// for a robot whose client subscribes by itself (pv3d's): everything it gets is shown.
+    watch: Option<Watch>,
+    /// What the open pages look at now.
+    looks: HashMap<Device, Look>,
+}
+
+impl Robot {
+    fn new() -> Robot {
+        Robot {
+            link: Link::Connecting,
+            newest: BTreeMap::new(),
+            rates: HashMap::new(),
+            devices: Vec::new(),
+            watch: None,
+            looks: HashMap::new(),
+        }
+    }
+
+    /// Whether the pages are sent `device`'s data.
+    fn shown(&self, device: Device) -> bool {
+        self.watch.is_none() || self.looks.contains_key(&device)
+    }
+
+    /// Looks at what `views` show of this robot (the `rank`-th by name), and away from the
+    /// rest; a device looked away from leaves no stale data for the next page.
+    fn settle(&mut self, name: &str, rank: usize, views: &Views) {
+        let Some(watch) = &self.watch else {
+            return;
+        };
+        for &device in &self.devices {
+            let shown = views.shows(name, rank, device);
+            if shown && !self.looks.contains_key(&device) {
+                self.looks.insert(device, watch.look(device));
+            } else if !shown && self.looks.remove(&device).is_some() {
+                self.newest.retain(|(kind, addr, _, _), _| {
+                    *kind != Kind::Data || (addr.interf, addr.index) != device
+                });
+            }
+        }
+    }
 }
 
 /// A device's readings as the client counts them (a reading sent as several messages stamped
@@ -56,6 +91,8 @@ struct Rate {
 }
 
 pub struct Hub {
+    /// Taken before `robots` where both are, never while `robots` is held.
+    views: Mutex<Views>,
     robots: Mutex<BTreeMap<String, Robot>>,
     /// The world's walls, as a frame, once known.
     world: Mutex<Option<Frame>>,
@@ -66,6 +103,7 @@ pub struct Hub {
 impl Default for Hub {
     fn default() -> Hub {
         Hub {
+            views: Mutex::new(Views::default()),
             robots: Mutex::new(BTreeMap::new()),
             world: Mutex::new(None),
             live: broadcast::channel(BROADCAST_DEPTH).0,
@@ -78,6 +116,55 @@ impl Hub {
     fn robots(&self) -> MutexGuard<'_, BTreeMap<String, Robot>> {
         // Every change is whole under the lock: a poisoned lock still guards a usable value.
         self.robots.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    fn views(&self) -> MutexGuard<'_, Views> {
+        self.views.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// Looks at what the open pages show of every robot, and away from the rest.
+    fn settle(&self, views: &Views) {
+        for (rank, (name, robot)) in self.robots().iter_mut().enumerate() {
+            robot.settle(name, rank, views);
+        }
+    }
+
+    /// The relay subscribes to `robot` as the pages look, through `watch`.
+    pub fn watch(&self, robot: &RobotId, watch: Watch) {
+        let views = self.views();
+        self.robots()
+            .entry(robot.to_string())
+            .or_insert_with(Robot::new)
+            .watch = Some(watch);
+        self.settle(&views);
+    }
+
+    /// A page opened: it shows every robot's pose, and the first robots' sensors until it
+    /// says what is in its view.
+    pub fn page_opened(&self, page: u64) {
+        let mut views = self.views();
+        views.opened(page);
+        self.settle(&views);
+    }
+
+    /// A page closed: what only it showed is let go.
+    pub fn page_closed(&self, page: u64) {
+        let mut views = self.views();
+        views.closed(page);
+        self.settle(&views);
+    }
+
+    /// The page has these robots in view: their sensors are shown to it.
+    pub fn page_shows(&self, page: u64, robots: &[String]) {
+        let mut views = self.views();
+        if views.show(page, robots) {
+            self.settle(&views);
+        }
+    }
+
+    /// Devices looked at now, over every robot (for tests and benches).
+    pub fn looks(&self) -> usize {
+        self.robots().values().map(|r| r.looks.len()).sum()
     }
 
     /// A tap for the relay's robots (`RelayConfig::fronts`): each is shown as its
@@ -147,21 +234,30 @@ impl Hub {
             .map(|(name, robot)| Row {
                 robot: name.clone(),
                 link: robot.link.clone(),
-                devices: robot
-                    .rates
-                    .iter_mut()
-                    .map(|(device, rate)| {
+                devices: {
+                    // A device nobody looks at has no data, and its row says it is not shown.
+                    for &(interf, index) in &robot.devices {
+                        robot
+                            .rates
+                            .entry(DevAddr::local(interf, index))
+                            .or_default();
+                    }
+                    let watched = robot.watch.is_some();
+                    let looks = &robot.looks;
+                    robot.rates.iter_mut().map(move |(device, rate)| {
                         let row = DeviceRow {
                             device: *device,
                             hz: (rate.stats.updates - rate.at_status) as f64 / elapsed,
                             age: rate.newest.map(|t| now.duration_since(t).as_secs_f64()),
+                            shown: !watched || looks.contains_key(&(device.interf, device.index)),
                         };
                         if restart {
                             rate.at_status = rate.stats.updates;
                         }
                         row
                     })
-                    .collect(),
+                }
+                .collect(),
             })
             .collect();
         if restart {
@@ -177,11 +273,7 @@ impl Hub {
 
     fn set_link(&self, name: &str, link: Link) {
         let mut robots = self.robots();
-        let robot = robots.entry(name.to_string()).or_insert_with(|| Robot {
-            link: Link::Connecting,
-            newest: BTreeMap::new(),
-            rates: HashMap::new(),
-        });
+        let robot = robots.entry(name.to_string()).or_insert_with(Robot::new);
         if robot.link == link && link != Link::Connecting {
             return;
         }
@@ -214,9 +306,14 @@ impl Hub {
             let rate = robot.rates.entry(device).or_default();
             rate.stats.count(header.timestamp, body.len());
             rate.newest = Some(Instant::now());
+            // Data another front or an observer looks at is counted, not sent.
+            if !robot.shown((device.interf, device.index)) {
+                return;
+            }
         }
         drop(robots);
-        if !DRAWN.contains(&device.interf) {
+        let devlist = device.interf == Interface::PLAYER && kind == Kind::Reply;
+        if !DRAWN.contains(&device.interf) && !devlist {
             return;
         }
         let message = match Message::decode(*header, body.clone()) {
@@ -226,6 +323,12 @@ impl Hub {
                 return;
             }
         };
+        if let Body::Player(Player::DevList(list)) = &message.body {
+            return self.devices_of(name, list.devices.iter());
+        }
+        if devlist {
+            return;
+        }
         let tile = match &message.body {
             player_proto::message::Body::Map(player_proto::interfaces::map::Map::Tile(t)) => {
                 (t.col, t.row)
@@ -245,6 +348,17 @@ impl Hub {
             robot.newest.insert(key, frame.clone());
         }
         let _ = self.live.send(frame);
+    }
+}
+
+impl Hub {
+    /// The robot's server listed its devices: the pages look at those they show.
+    fn devices_of<'a>(&self, name: &str, devices: impl Iterator<Item = &'a DevAddr>) {
+        let views = self.views();
+        if let Some(robot) = self.robots().get_mut(name) {
+            robot.devices = devices.map(|d| (d.interf, d.index)).collect();
+        }
+        self.settle(&views);
     }
 }
 

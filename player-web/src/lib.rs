@@ -14,7 +14,10 @@
 //!   [`player_front::STALLED_AFTER`], as every front's viewers are;
 //! * [`control`] — the same command rule as the relay's Player ports, and a dead-man stop;
 //! * [`http`] — the page, its script and style, compiled in (no CDN, no internet needed);
-//! * [`walls`] — the world's walls, where the relay knows them (the world it simulates).
+//! * [`walls`] — the world's walls, where the relay knows them (the world it simulates);
+//! * [`views`] — what the open pages show: every robot's pose, and the sensors of the robots
+//!   in a page's view (at most [`views::SENSORS_IN_VIEW`]); the relay subscribes to that
+//!   alone, and nothing while no page is open.
 
 pub mod control;
 pub mod http;
@@ -22,13 +25,14 @@ pub mod hub;
 pub mod page;
 pub mod refused;
 pub mod socket;
+pub mod views;
 pub mod walls;
 
 use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 use std::time::Duration;
 
-use player_front::Front;
+use player_front::{Front, Watch, Watching};
 use player_proto::RobotId;
 use player_proto::client::{Client, ConnectionTap, RobotTap, Tap, unnamed};
 use player_proto::server::Commanders;
@@ -124,6 +128,11 @@ impl WebFront {
         unnamed(self.robot_tap())
     }
 
+    /// Devices the open pages look at now, over every robot.
+    pub fn looks(&self) -> usize {
+        self.hub.looks()
+    }
+
     /// Draws `walls` (the world's, where the relay knows them) under the robots.
     pub fn set_walls(&self, walls: &walls::Walls) {
         self.hub.set_walls(walls);
@@ -153,6 +162,11 @@ impl Front for WebFront {
 
     fn commands_through(&self, robot: &RobotId, client: Arc<Client>) {
         self.add_robot_as(robot.clone(), client);
+    }
+
+    fn watch(&self, robot: &RobotId, watch: Watch) -> Watching {
+        self.hub.watch(robot, watch);
+        Watching::AsLooked
     }
 }
 

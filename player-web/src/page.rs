@@ -70,12 +70,19 @@ pub struct DeviceRow {
     pub hz: f64,
     /// Seconds since the newest data; `None` before any.
     pub age: Option<f64>,
+    /// Whether the pages are sent its data: false for a device no open page shows (a robot
+    /// out of every page's view, a camera), which the relay then does not subscribe to.
+    pub shown: bool,
 }
 
-/// Page → server: the controller's commands, in player-proto's types.
+/// Page → server: what the page has in view (from any page), and the controller's commands,
+/// in player-proto's types.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(rename_all = "snake_case", tag = "type", deny_unknown_fields)]
 pub enum FromPage {
+    /// The robots the page has in view: it is sent their sensors (at most
+    /// [`crate::views::SENSORS_IN_VIEW`] robots'), and every robot's pose.
+    Show { robots: Vec<String> },
     /// Go to `goal` (world pose): through the robot's planner of the same index when it has
     /// one, else as a position command to the base.
     Goal {

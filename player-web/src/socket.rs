@@ -26,6 +26,8 @@ static NEXT_PAGE: AtomicU64 = AtomicU64::new(1);
 /// Serves one page until it or the server goes.
 pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, control: Arc<Control>) {
     let page = peer(NEXT_PAGE.fetch_add(1, Ordering::Relaxed), from.ip());
+    // From now until the page goes, by whatever way, the relay subscribes to what it shows.
+    let _open = Open::new(&hub, page.id);
     let (mut out, mut incoming) = socket.split();
     // Subscribed before the snapshot is taken: nothing falls between the two.
     let mut live = hub.subscribe();
@@ -76,7 +78,13 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
                     };
                     let outcome = serde_json::from_str::<FromPage>(&text)
                         .map_err(Refused::from)
-                        .and_then(|command| control.execute(page, command, &mut driven));
+                        .and_then(|command| match command {
+                            FromPage::Show { robots } => {
+                                hub.page_shows(page.id, &robots);
+                                Ok(())
+                            }
+                            command => control.execute(page, command, &mut driven),
+                        });
                     if let Err(why) = outcome {
                         refuse(&mut out, &why).await;
                     }
@@ -90,6 +98,29 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
     tracing::debug!(page = page.id, %from, "page gone: {why}");
     control.stop_stale(page, &mut driven, true);
     control.left(page);
+}
+
+/// An open page, as the hub's views count it: closed when dropped (the page went, or the
+/// server stops and its task with it).
+struct Open {
+    hub: Arc<Hub>,
+    page: u64,
+}
+
+impl Open {
+    fn new(hub: &Arc<Hub>, page: u64) -> Open {
+        hub.page_opened(page);
+        Open {
+            hub: hub.clone(),
+            page,
+        }
+    }
+}
+
+impl Drop for Open {
+    fn drop(&mut self) {
+        self.hub.page_closed(self.page);
+    }
 }
 
 async fn send(out: &mut Out, frame: crate::hub::Frame) -> Result<(), SendError> {

@@ -12,8 +12,8 @@ use zenoh::key_expr::KeyExpr;
 use zenoh::query::{Query, Queryable};
 
 use crate::error::ZenohError;
-use crate::front::FrontShared;
 use crate::keys::{Leaf, every_device, every_devices};
+use crate::shared::FrontShared;
 
 /// Whether a query asks for `key`.
 fn asks_for(query: &Query, key: &str) -> bool {

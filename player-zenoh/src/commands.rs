@@ -24,8 +24,8 @@ use zenoh::pubsub::Subscriber;
 use zenoh::query::{Query, Queryable};
 
 use crate::error::ZenohError;
-use crate::front::FrontShared;
 use crate::keys::{Leaf, RobotKey, device_of_key, every_device};
+use crate::shared::FrontShared;
 use crate::stamp::Stamp;
 
 /// How long the robot has to answer a request from Zenoh.

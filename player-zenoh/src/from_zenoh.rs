@@ -6,53 +6,23 @@
 //! same port, so clients that reconnect find it where it was.
 
 use std::collections::{BTreeMap, HashSet};
-use std::net::{IpAddr, Ipv4Addr};
 use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, channel};
 use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use player_proto::server::Commanders;
 use zenoh::Session;
 use zenoh::Wait;
 use zenoh::pubsub::Subscriber;
 use zenoh::sample::SampleKind;
 
+use crate::bridge_config::FromZenohConfig;
 use crate::error::ZenohError;
 use crate::keys::{RobotKey, alive_of_site};
 use crate::remote::{Remote, serve};
 
 /// How often a robot whose devices could not be had yet is tried again.
 const RETRY: Duration = Duration::from_millis(500);
-
-/// Which robots to serve, where, and who may command through them.
-#[derive(Debug, Clone)]
-pub struct FromZenohConfig {
-    /// The site whose robots are served; `*` for every site.
-    pub site: String,
-    /// Sent with every command and request: the robot's side executes those of its
-    /// controller only (`--zenoh-controller` there).
-    pub identity: String,
-    pub bind: IpAddr,
-    /// The n-th robot found is served on `base_port + n`; 0: any free port.
-    pub base_port: u16,
-    /// Which local clients may command (and so send commands on with `identity`).
-    pub commanders: Commanders,
-    pub send_buffer: Option<usize>,
-}
-
-impl FromZenohConfig {
-    pub fn new(site: &str, identity: &str) -> FromZenohConfig {
-        FromZenohConfig {
-            site: site.into(),
-            identity: identity.into(),
-            bind: IpAddr::V4(Ipv4Addr::LOCALHOST),
-            base_port: 0,
-            commanders: Commanders::Everyone,
-            send_buffer: None,
-        }
-    }
-}
 
 enum Event {
     Appeared(RobotKey),

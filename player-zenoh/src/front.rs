@@ -6,81 +6,22 @@
 
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::{Arc, Mutex, MutexGuard};
+use std::sync::{Arc, Mutex};
 
-use player_front::Front;
+use player_front::{Front, Watch, Watching};
 use player_proto::RobotId;
 use player_proto::capture::Direction;
 use player_proto::client::{Client, ConnectionTap, RobotTap, Tap, TapEvent, unnamed};
 use player_proto::wire::MsgType;
 use zenoh::Session;
 use zenoh::Wait;
-use zenoh::liveliness::LivelinessToken;
 use zenoh::pubsub::Subscriber;
 use zenoh::query::Queryable;
 
-use crate::cache::ReplyCache;
 use crate::error::ZenohError;
 use crate::keys::RobotKey;
 use crate::queue::{EventQueue, FrontEvent};
-
-/// Events waiting for the publishing task, at most: about a second of a busy relay's data.
-pub const DEFAULT_QUEUE: usize = 4096;
-
-/// How the front publishes.
-#[derive(Debug, Clone)]
-pub struct FrontConfig {
-    /// The `<site>` of every key.
-    pub site: String,
-    /// The identity whose commands reach the robots; `None`: nobody's do.
-    pub controller: Option<String>,
-    /// See [`DEFAULT_QUEUE`].
-    pub queue: usize,
-}
-
-impl FrontConfig {
-    pub fn new(site: &str) -> FrontConfig {
-        FrontConfig {
-            site: site.into(),
-            controller: None,
-            queue: DEFAULT_QUEUE,
-        }
-    }
-}
-
-/// One robot, as the front knows it.
-#[derive(Default)]
-pub(crate) struct RobotEntry {
-    /// The relay's upstream client, for commands and requests (see [`ZenohFront::add_robot`]).
-    pub client: Option<Arc<Client>>,
-    pub cache: ReplyCache,
-    pub connected: bool,
-    pub token: Option<LivelinessToken>,
-}
-
-/// What the publishing task, the taps and the Zenoh callbacks share.
-pub(crate) struct FrontShared {
-    pub config: FrontConfig,
-    pub session: Session,
-    pub queue: EventQueue,
-    pub robots: Mutex<HashMap<RobotKey, RobotEntry>>,
-    pub runtime: tokio::runtime::Handle,
-    /// Commands and requests refused (not the controller, stale, malformed).
-    pub refused: AtomicU64,
-}
-
-impl FrontShared {
-    pub fn robots(&self) -> MutexGuard<'_, HashMap<RobotKey, RobotEntry>> {
-        self.robots.lock().unwrap_or_else(|e| e.into_inner())
-    }
-
-    /// The upstream client of a robot of this front that is connected now.
-    pub fn client(&self, robot: &RobotKey) -> Option<Arc<Client>> {
-        let robots = self.robots();
-        let entry = robots.get(robot)?;
-        entry.connected.then(|| entry.client.clone()).flatten()
-    }
-}
+use crate::shared::{FrontConfig, FrontShared};
 
 /// A running front; stops publishing, and withdraws its robots, when dropped.
 pub struct ZenohFront {
@@ -103,6 +44,7 @@ impl ZenohFront {
             config,
             session,
             robots: Mutex::new(HashMap::new()),
+            looks: Mutex::new(HashMap::new()),
             runtime: runtime.handle().clone(),
             refused: AtomicU64::new(0),
         });
@@ -142,6 +84,13 @@ impl ZenohFront {
                         // Only requests matter of what the relay sends: their replies are
                         // paired with them in the cache.
                         if direction == Direction::ClientToServer && header.msg_type != MsgType::Req
+                        {
+                            return;
+                        }
+                        // Data no Zenoh subscriber matches (another front's, an observer's)
+                        // is not queued.
+                        if header.msg_type == MsgType::Data
+                            && !shared.looked_at(&robot, (header.addr.interf, header.addr.index))
                         {
                             return;
                         }
@@ -196,6 +145,11 @@ impl ZenohFront {
         self.shared.refused.load(Ordering::Relaxed)
     }
 
+    /// Devices some Zenoh subscriber matches now, over every robot.
+    pub fn looks(&self) -> usize {
+        self.shared.looks().len()
+    }
+
     /// Robots announced (connected, described, with a liveliness token) now.
     pub fn announced(&self) -> usize {
         self.shared
@@ -219,6 +173,14 @@ impl Front for ZenohFront {
 
     fn commands_through(&self, robot: &RobotId, client: Arc<Client>) {
         self.add_robot_as(robot, client);
+    }
+
+    /// Each device's data key is looked at while a Zenoh subscriber matches it (see
+    /// `publish`): the relay subscribes upstream to that alone.
+    fn watch(&self, robot: &RobotId, watch: Watch) -> Watching {
+        let robot = self.key_of(robot);
+        self.shared.robots().entry(robot).or_default().watch = Some(watch);
+        Watching::AsLooked
     }
 }
 

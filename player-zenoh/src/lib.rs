@@ -34,6 +34,7 @@
 //! a broken link is replayed when it heals.
 
 mod answers;
+mod bridge_config;
 pub mod cache;
 pub mod commands;
 mod error;
@@ -44,13 +45,16 @@ pub mod options;
 mod publish;
 pub mod queue;
 mod remote;
+mod shared;
 pub mod stamp;
 
+pub use bridge_config::FromZenohConfig;
 pub use error::ZenohError;
-pub use from_zenoh::{FromZenoh, FromZenohConfig};
-pub use front::{DEFAULT_QUEUE, FrontConfig, ZenohFront};
+pub use from_zenoh::FromZenoh;
+pub use front::ZenohFront;
 pub use keys::RobotKey;
 pub use options::{Mode, UnknownMode, ZenohOptions};
+pub use shared::{DEFAULT_QUEUE, FrontConfig};
 pub use stamp::{MAX_COMMAND_AGE, Stamp};
 /// The Zenoh crate this one is built on, for opening sessions.
 pub use zenoh;

@@ -3,19 +3,26 @@
 //! link loses old scans rather than holding the relay up), replies into the cache, and the
 //! robot's liveliness token declared once its devices are known and undeclared when its
 //! connection closes.
+//!
+//! Watching drives subscribing: once a robot's devices are known, each device's data key has
+//! its publisher and a matching listener, and while some Zenoh subscriber matches the key the
+//! front holds a look at the device (`FrontShared::matching`): the relay subscribes upstream
+//! to it then, and lets it go when the last subscriber leaves.
 
 use std::collections::HashMap;
 use std::sync::Arc;
 
 use player_proto::capture::Direction;
-use player_proto::wire::MsgType;
+use player_proto::interfaces::player::{self, Player};
+use player_proto::message::{Body, Message};
+use player_proto::wire::{Header, Interface, MsgType};
 use zenoh::pubsub::Publisher;
 use zenoh::qos::CongestionControl;
 
 use crate::cache::wire_bytes;
-use crate::front::FrontShared;
 use crate::keys::{Leaf, RobotKey};
 use crate::queue::FrontEvent;
+use crate::shared::FrontShared;
 
 /// Runs until the front's runtime stops.
 pub(crate) async fn run(shared: Arc<FrontShared>) {
@@ -77,6 +84,19 @@ pub(crate) async fn run(shared: Arc<FrontShared>) {
                         entry.cache.observe(direction, &header, &body);
                         entry.connected && entry.token.is_none() && entry.cache.ready()
                     };
+                    if direction == Direction::ServerToClient {
+                        for (interf, index) in devices_listed(&header, &body) {
+                            let key = robot.device(interf, index, Leaf::Data);
+                            if publishers.contains_key(&key) {
+                                continue;
+                            }
+                            let device = (interf, index);
+                            if let Some(publisher) = declare(&shared, &key).await {
+                                listen(&shared, &robot, device, &publisher).await;
+                                publishers.insert(key, publisher);
+                            }
+                        }
+                    }
                     if announce {
                         announce_robot(&shared, robot).await;
                     }
@@ -98,6 +118,38 @@ async fn declare(shared: &FrontShared, key: &str) -> Option<Publisher<'static>> 
             tracing::warn!(key, "cannot publish: {e}");
             None
         }
+    }
+}
+
+/// The devices a device-list reply lists; none for any other message.
+fn devices_listed(header: &Header, body: &bytes::Bytes) -> Vec<(Interface, u16)> {
+    let is_list = header.addr.interf == Interface::PLAYER
+        && header.msg_type == MsgType::Ack
+        && header.subtype == player::REQ_DEVLIST;
+    match is_list.then(|| Message::decode(*header, body.clone())) {
+        Some(Ok(Message {
+            body: Body::Player(Player::DevList(list)),
+            ..
+        })) => list.devices.iter().map(|d| (d.interf, d.index)).collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// Looks at `device` while some subscriber matches its publisher's key.
+async fn listen(
+    shared: &Arc<FrontShared>,
+    robot: &RobotKey,
+    device: (Interface, u16),
+    publisher: &Publisher<'static>,
+) {
+    let (watching, matched) = (shared.clone(), robot.clone());
+    let listening = publisher
+        .matching_listener()
+        .callback(move |status| watching.matching(&matched, device, status.matching()))
+        .background()
+        .await;
+    if let Err(e) = listening {
+        tracing::warn!(%robot, "no matching listener for {}:{}: {e}", device.0, device.1);
     }
 }
 

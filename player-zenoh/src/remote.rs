@@ -18,10 +18,10 @@ use zenoh::pubsub::Subscriber;
 use zenoh::qos::CongestionControl;
 use zenoh::query::ConsolidationMode;
 
+use crate::bridge_config::FromZenohConfig;
 use crate::cache::CachedReply;
 use crate::commands::decode_raw;
 use crate::error::ZenohError;
-use crate::from_zenoh::FromZenohConfig;
 use crate::keys::{Leaf, RobotKey};
 use crate::stamp::Stamp;
 

@@ -5,16 +5,24 @@
 //! Player timestamp as log time. Subscribing, latching and publishing happen under one lock,
 //! so a new subscriber gets what was latched and then everything after it, nothing twice or
 //! lost between the two.
+//!
+//! Watching drives subscribing: a channel knows the devices whose data it carries (its
+//! sources), and a viewer's subscription holds a [`Look`] at each, through the robot's
+//! [`Watch`]; the relay subscribes upstream to a device while some look is held. Data of a
+//! device that has its channels and no viewer on them is not converted at all. A device's
+//! channels are made from its first data (the relay's survey holds every device until its
+//! first data came, then lets go of what nobody looks at).
 
-use std::collections::HashMap;
+use std::collections::{BTreeSet, HashMap, HashSet};
 use std::sync::{Arc, Mutex, MutexGuard};
 use std::time::{SystemTime, UNIX_EPOCH};
 
 use bytes::Bytes;
 use foxglove::messages::log::Level;
+use player_front::{Device, Look, Watch};
 use player_proto::capture::Direction;
 use player_proto::client::TapEvent;
-use player_proto::wire::Header;
+use player_proto::wire::{Header, MsgType};
 
 use super::channels::Channels;
 use super::outbox::{Data, Outbox};
@@ -26,9 +34,18 @@ use crate::{Converter, Output, log};
 /// A connected viewer, numbered from 1.
 pub type ViewerId = u64;
 
+/// A device of a robot, by the robot's name.
+type Source = (String, Device);
+
+/// A viewer's subscription: its channel, and its looks at the devices the channel carries.
+struct Subscription {
+    channel: ChannelId,
+    looks: Vec<(Source, Look)>,
+}
+
 struct Viewer {
     outbox: Arc<Outbox>,
-    subscriptions: HashMap<SubscriptionId, ChannelId>,
+    subscriptions: HashMap<SubscriptionId, Subscription>,
 }
 
 struct Subscriber {
@@ -44,6 +61,15 @@ struct State {
     viewers: HashMap<ViewerId, Viewer>,
     subscribers: HashMap<ChannelId, Vec<Subscriber>>,
     next_viewer: ViewerId,
+    /// The relay's subscriptions to each robot that subscribes as viewers look; a robot
+    /// without one (a client that subscribes by itself) is converted whole.
+    watches: HashMap<String, Watch>,
+    /// The devices whose data each channel carries.
+    sources: HashMap<ChannelId, BTreeSet<Source>>,
+    /// Devices whose data has made its channels.
+    known: HashSet<Source>,
+    /// Viewers' looks held now, per device.
+    looked: HashMap<Source, usize>,
 }
 
 #[derive(Default)]
@@ -75,16 +101,36 @@ impl Hub {
         };
         let time = system_timestamp(time);
         let output = log(robot, time, level, &text);
-        self.lock().publish(output, time.total_nanos());
+        self.lock().publish(output, time.total_nanos(), None);
     }
 
     fn frame(&self, robot: &str, header: &Header, body: &Bytes) {
         let mut state = self.lock();
+        let source = (header.msg_type == MsgType::Data)
+            .then(|| (robot.to_string(), (header.addr.interf, header.addr.index)));
+        if let Some(source) = &source {
+            let watched = state.watches.contains_key(robot);
+            let unlooked = !state.looked.contains_key(source);
+            if watched && unlooked && state.known.contains(source) {
+                // Its channels exist and nobody is on them: nothing to convert.
+                return;
+            }
+        }
         let outputs = state.converter.server_message(robot, header, body);
         let log_time = timestamp(header.timestamp).total_nanos();
         for output in outputs {
-            state.publish(output, log_time);
+            state.publish(output, log_time, source.as_ref());
         }
+    }
+
+    /// The relay subscribes to `robot` as viewers look, through `watch`.
+    pub fn watch(&self, robot: &str, watch: Watch) {
+        self.lock().watches.insert(robot.to_string(), watch);
+    }
+
+    /// Devices looked at now, over every robot (for tests and benches).
+    pub fn looks(&self) -> usize {
+        self.lock().looked.len()
     }
 
     /// A new viewer: its id, with the channels so far advertised to it.
@@ -107,8 +153,8 @@ impl Hub {
     pub fn leave(&self, viewer: ViewerId) {
         let mut state = self.lock();
         if let Some(gone) = state.viewers.remove(&viewer) {
-            for channel in gone.subscriptions.values() {
-                state.unlist(*channel, viewer);
+            for subscription in gone.subscriptions.into_values() {
+                state.unlist(subscription, viewer);
             }
         }
     }
@@ -131,10 +177,20 @@ impl Hub {
         if entry.subscriptions.contains_key(&subscription) {
             return Err(Refusal::SubscriptionInUse(subscription));
         }
-        if entry.subscriptions.values().any(|c| *c == channel) {
+        if entry.subscriptions.values().any(|s| s.channel == channel) {
             return Err(Refusal::AlreadySubscribed(channel));
         }
-        entry.subscriptions.insert(subscription, channel);
+        // The relay subscribes to what the channel carries while the viewer is on it.
+        let mut looks = Vec::new();
+        for source in state.sources.get(&channel).into_iter().flatten() {
+            if let Some(watch) = state.watches.get(&source.0) {
+                looks.push((source.clone(), watch.look(source.1)));
+                *state.looked.entry(source.clone()).or_default() += 1;
+            }
+        }
+        entry
+            .subscriptions
+            .insert(subscription, Subscription { channel, looks });
         for (payload, log_time) in state.channels.latched(channel) {
             entry.outbox.push_data(Data {
                 subscription,
@@ -161,12 +217,12 @@ impl Hub {
         subscription: SubscriptionId,
     ) -> Result<(), Refusal> {
         let mut state = self.lock();
-        let channel = state
+        let gone = state
             .viewers
             .get_mut(&viewer)
             .and_then(|v| v.subscriptions.remove(&subscription))
             .ok_or(Refusal::UnknownSubscription(subscription))?;
-        state.unlist(channel, viewer);
+        state.unlist(gone, viewer);
         Ok(())
     }
 
@@ -189,8 +245,17 @@ impl Hub {
 }
 
 impl State {
-    fn publish(&mut self, output: Output, log_time: u64) {
+    /// Encodes `output` once and queues it to the channel's subscribers; `source` is the
+    /// device whose data made it, if data did.
+    fn publish(&mut self, output: Output, log_time: u64, source: Option<&Source>) {
         let (channel, advertise) = self.channels.channel_of(&output);
+        if let Some(source) = source {
+            self.known.insert(source.clone());
+            self.sources
+                .entry(channel)
+                .or_default()
+                .insert(source.clone());
+        }
         if let Some(advertise) = advertise {
             for viewer in self.viewers.values() {
                 viewer.outbox.push_control(advertise.clone());
@@ -207,9 +272,19 @@ impl State {
         }
     }
 
-    fn unlist(&mut self, channel: ChannelId, viewer: ViewerId) {
-        if let Some(list) = self.subscribers.get_mut(&channel) {
+    /// The viewer's `subscription` ended: off its channel's list, and its looks let go.
+    fn unlist(&mut self, subscription: Subscription, viewer: ViewerId) {
+        if let Some(list) = self.subscribers.get_mut(&subscription.channel) {
             list.retain(|s| s.viewer != viewer);
+        }
+        for (source, look) in subscription.looks {
+            drop(look);
+            if let Some(n) = self.looked.get_mut(&source) {
+                *n -= 1;
+                if *n == 0 {
+                    self.looked.remove(&source);
+                }
+            }
         }
     }
 }

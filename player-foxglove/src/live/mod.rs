@@ -12,7 +12,9 @@
 //! encoded once for all, and a viewer's queued messages leave in one write. The SDK's server
 //! also refuses viewers that offer only `foxglove.websocket.v1` (older Lichtblick builds).
 //!
-//! * [`hub`] — the conversion, the channels and the subscriptions, fed by the taps;
+//! * [`hub`] — the conversion, the channels and the subscriptions, fed by the taps; a
+//!   viewer's subscription is a look at the devices its channel carries, and the relay
+//!   subscribes upstream to those alone;
 //! * [`channels`] — one channel per topic, and what is latched on it for later subscribers;
 //! * [`outbox`] — a viewer's bounded queue (oldest dropped, in count and bytes): the kit's
 //!   (`player_front::outbox`) with Foxglove's bounds;
@@ -33,7 +35,7 @@ use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 use std::time::{SystemTime, UNIX_EPOCH};
 
-use player_front::Front;
+use player_front::{Front, Watch, Watching};
 use player_proto::RobotId;
 use player_proto::client::{ConnectionTap, RobotTap, Tap, unnamed};
 
@@ -104,6 +106,11 @@ impl FoxgloveLive {
         self.hub.viewers()
     }
 
+    /// Devices the viewers look at now (through their subscriptions), over every robot.
+    pub fn looks(&self) -> usize {
+        self.hub.looks()
+    }
+
     /// Topics with a channel so far.
     pub fn topics(&self) -> Vec<String> {
         self.hub.topics()
@@ -135,6 +142,11 @@ impl Front for FoxgloveLive {
 
     fn arrived(&self, robot: &RobotId) -> ConnectionTap {
         (self.robot_tap())(robot)
+    }
+
+    fn watch(&self, robot: &RobotId, watch: Watch) -> Watching {
+        self.hub.watch(&robot.to_string(), watch);
+        Watching::AsLooked
     }
 
     fn stop(&self) {
