@@ -16,7 +16,7 @@ use player_proto::message::Message;
 use player_proto::recording::{Event, Record};
 
 use crate::cdr::CdrError;
-use crate::convert::{Converted, convert};
+use crate::convert::{Converted, Converter};
 use crate::names::namespace;
 
 /// Why a rosbag2 folder could not be written.
@@ -53,9 +53,12 @@ pub struct BagStats {
 /// How a topic is offered, as rosbag2 keeps it (`offered_qos_profiles`): sensor data best
 /// effort, the rest reliable; `/tf_static` and maps transient local.
 fn qos(topic: &str) -> String {
-    let best_effort =
-        topic.ends_with("/scan") || topic.contains("/scan_") || topic.contains("/image_raw");
-    let latched = topic == "/tf_static" || topic == "/map";
+    let sensor = ["scan", "image_raw", "camera_info", "sonar", "range"];
+    let best_effort = sensor
+        .iter()
+        .any(|kind| topic.ends_with(&format!("/{kind}")) || topic.contains(&format!("/{kind}_")))
+        || topic.contains("/image_raw");
+    let latched = topic == "/tf_static" || topic == "/map" || topic.starts_with("/map_");
     let forever = "\n    sec: 2147483647\n    nsec: 4294967295";
     format!(
         "- history: 1\n  depth: 10\n  reliability: {}\n  durability: {}\n  deadline:{forever}\n  lifespan:{forever}\n  liveliness: 1\n  liveliness_lease_duration:{forever}\n  avoid_ros_namespace_conventions: false",
@@ -72,7 +75,8 @@ pub struct BagWriter {
     out: mcap::Writer<BufWriter<File>>,
     schemas: HashMap<&'static str, u16>,
     channels: HashMap<String, (u16, &'static str)>,
-    connections: HashMap<u32, String>,
+    /// Each connection's robot, as its conversion.
+    connections: HashMap<u32, Converter>,
     names: HashMap<(String, u16), String>,
     stats: BagStats,
     sequence: u32,
@@ -136,21 +140,22 @@ impl BagWriter {
                     .get(&(host.clone(), *port))
                     .cloned()
                     .unwrap_or_else(|| namespace(&RobotId::new(host.clone(), *port)));
-                self.connections.insert(record.connection, ns);
+                self.connections
+                    .insert(record.connection, Converter::new(ns));
             }
             Event::Message {
                 direction: Direction::ServerToClient,
                 header,
                 body,
             } => {
-                let Some(ns) = self.connections.get(&record.connection).cloned() else {
+                let Some(converter) = self.connections.get_mut(&record.connection) else {
                     return Ok(());
                 };
                 let Ok(message) = Message::decode(*header, body.clone()) else {
                     self.stats.undecodable += 1;
                     return Ok(());
                 };
-                let converted = convert(&ns, &message);
+                let converted = converter.convert(&message);
                 if converted.is_empty() {
                     self.stats.unmapped += 1;
                 }
@@ -273,5 +278,8 @@ mod tests {
         assert!(qos("/r0/scan_1").contains("reliability: 2"));
         assert!(qos("/r0/odom").contains("reliability: 1"));
         assert!(qos("/tf_static").contains("durability: 1"));
+        assert!(qos("/r0/range_1").contains("reliability: 2"));
+        assert!(qos("/r0/camera_info").contains("reliability: 2"));
+        assert!(qos("/map").contains("durability: 1") && qos("/map").contains("reliability: 1"));
     }
 }

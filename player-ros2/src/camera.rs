@@ -1,12 +1,27 @@
 //! A Player camera's picture as ROS 2's: raw pixels as `sensor_msgs/msg/Image` (RGB 5-6-5,
-//! which ROS has no encoding for, widened to `rgb8`), a JPEG as `CompressedImage`.
+//! which ROS has no encoding for, widened to `rgb8`), a JPEG as `CompressedImage`; beside
+//! either, its size as `CameraInfo` (uncalibrated: Player's camera interface says nothing of
+//! its lens).
 
 use player_proto::interfaces::camera::{
     COMPRESS_JPEG, CameraData, FORMAT_MONO8, FORMAT_MONO16, FORMAT_RGB565, FORMAT_RGB888,
 };
 
-use crate::convert::RosOut;
-use crate::msgs::{CompressedImage, Header, Image};
+use crate::msgs::{CameraInfo, CompressedImage, Header, Image};
+use crate::out::RosOut;
+
+/// The picture's `CameraInfo`: its size, and zeros for the calibration (`k`, `r`, `p` all
+/// zero is ROS's "uncalibrated"; image_proc and rviz2 then show the picture as it is).
+pub fn info(data: &CameraData, header: Header) -> CameraInfo {
+    CameraInfo {
+        header,
+        height: data.height,
+        width: data.width,
+        distortion_model: "plumb_bob".into(),
+        d: vec![0.0; 5],
+        ..CameraInfo::default()
+    }
+}
 
 /// The ROS 2 message of a picture, or `None` for a pixel format ROS has no name for (or
 /// pixels that do not fill the picture).

@@ -1,120 +1,204 @@
-//! Player's messages as ROS 2 messages: one conversion for files and (next) the live front.
-//! Units are already REP-103's (metres, radians, counter-clockwise); frames are REP-105's,
-//! per robot: a base's odometry is `ns/odom` -> `ns/base_link`, a laser's scan is in
-//! `ns/laser`, a localizer's estimate and a planner's path in `map`.
+//! Player's messages as ROS 2 messages: one conversion for files and the live front. Units
+//! are already REP-103's (metres, radians, counter-clockwise); frames are REP-105's, per
+//! robot: a base's odometry is `ns/odom` -> `ns/base_link`, a laser's scan is in `ns/laser`,
+//! sonar and ranger echoes in `ns/base_link`, a localizer's estimate and a planner's path in
+//! `map`.
 //!
 //! Mapped: laser scans, position2d (odometry and its transform), localize (the best
 //! hypothesis, with its covariance), planner way-points (the reply to a way-point request),
 //! power, cameras (raw as `Image` on `/ns/image_raw`, JPEG as `CompressedImage` on
-//! `/ns/image_raw/compressed`). Not yet: ranger and sonar arrays, maps (their tiles).
+//! `/ns/image_raw/compressed`, each with `CameraInfo` on `/ns/camera_info`), sonar and ranger
+//! arrays (a `PointCloud2` each, [`crate::ranges`]), maps (an `OccupancyGrid` on `/map` once
+//! the replies to a map's info and tiles make it whole). What places echoes and assembles maps
+//! comes in replies and data before them, so a robot's conversion is a [`Converter`] that
+//! remembers it.
+
+use std::collections::HashMap;
 
 use player_proto::interfaces::camera::Camera;
+use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::laser::{Laser, LaserScan as PlayerScan};
 use player_proto::interfaces::localize::{Localize, covariance_matrix};
-use player_proto::interfaces::planner::Planner;
+use player_proto::interfaces::map::Map;
+use player_proto::interfaces::planner::{Planner, PlannerWaypoints};
 use player_proto::interfaces::position2d::Position2d;
 use player_proto::interfaces::power::Power;
+use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry};
+use player_proto::interfaces::sonar::Sonar;
 use player_proto::message::{Body, Message};
 use player_proto::wire::{Interface, MsgType};
 
-use crate::cdr::{CdrError, serialize};
+use crate::map::MapTiles;
 use crate::msgs::{
-    BatteryState, CompressedImage, Header, Image, LaserScan, Odometry, Path, Pose, PoseStamped,
-    PoseWithCovariance, PoseWithCovarianceStamped, RosMessage, TFMessage, Time, Transform,
-    TransformStamped, Twist, TwistWithCovariance, Vector3, covariance, schema_text,
+    BatteryState, Header, LaserScan, Odometry, Path, Pose, PoseStamped, PoseWithCovariance,
+    PoseWithCovarianceStamped, TFMessage, Time, Transform, TransformStamped, Twist,
+    TwistWithCovariance, Vector3, covariance,
 };
 use crate::names::{frame, topic};
+pub use crate::out::{Converted, RosOut};
+use crate::ranges::RangerState;
 
-/// The interfaces whose messages [`convert`] maps: a message of any other becomes nothing, so
-/// it need not even be decoded.
-pub const MAPPED: [Interface; 6] = [
+/// The interfaces whose messages [`Converter::convert`] maps: a message of any other becomes
+/// nothing, so it need not even be decoded.
+pub const MAPPED: [Interface; 9] = [
     Interface::LASER,
     Interface::POSITION2D,
     Interface::LOCALIZE,
     Interface::PLANNER,
     Interface::POWER,
     Interface::CAMERA,
+    Interface::SONAR,
+    Interface::RANGER,
+    Interface::MAP,
 ];
 
 /// The frame localizers and planners speak in.
 pub const MAP_FRAME: &str = "map";
 
-/// A ROS 2 message of one of the types Player's data becomes. Short-lived (made, then sent
-/// or written at once), so the sizes of its variants do not matter.
-#[derive(Debug, Clone, PartialEq)]
-#[allow(clippy::large_enum_variant)]
-pub enum RosOut {
-    LaserScan(LaserScan),
-    Odometry(Odometry),
-    Tf(TFMessage),
-    PoseWithCovarianceStamped(PoseWithCovarianceStamped),
-    Path(Path),
-    BatteryState(BatteryState),
-    Image(Image),
-    CompressedImage(CompressedImage),
+/// The conversion of one robot's messages: its namespace, and what its devices told of
+/// themselves (sonar and ranger geometries, ranger configurations, a map's info and tiles).
+#[derive(Debug, Clone, Default)]
+pub struct Converter {
+    ns: String,
+    sonars: HashMap<u16, Vec<Pose3d>>,
+    rangers: HashMap<u16, RangerState>,
+    maps: HashMap<u16, MapTiles>,
 }
 
-macro_rules! each_type {
-    ($self:expr, $m:ident => $e:expr) => {
-        match $self {
-            RosOut::LaserScan($m) => $e,
-            RosOut::Odometry($m) => $e,
-            RosOut::Tf($m) => $e,
-            RosOut::PoseWithCovarianceStamped($m) => $e,
-            RosOut::Path($m) => $e,
-            RosOut::BatteryState($m) => $e,
-            RosOut::Image($m) => $e,
-            RosOut::CompressedImage($m) => $e,
+impl Converter {
+    /// The conversion of the robot of namespace `ns`.
+    pub fn new(ns: impl Into<String>) -> Converter {
+        Converter {
+            ns: ns.into(),
+            ..Converter::default()
         }
+    }
+
+    pub fn namespace(&self) -> &str {
+        &self.ns
+    }
+
+    /// Sonar `index`'s transducers, on the robot.
+    pub fn sonar_geometry(&mut self, index: u16, poses: &[Pose3d]) {
+        self.sonars.insert(index, poses.to_vec());
+    }
+
+    /// Ranger `index`'s place on the robot and its elements' on it.
+    pub fn ranger_geometry(&mut self, index: u16, geometry: &RangerGeometry) {
+        self.rangers.entry(index).or_default().geometry = Some(geometry.clone());
+    }
+
+    /// Ranger `index`'s angles and ranges.
+    pub fn ranger_config(&mut self, index: u16, config: &RangerConfig) {
+        self.rangers.entry(index).or_default().config = Some(*config);
+    }
+
+    /// The ROS 2 messages of `message`: none for what is not mapped, or not yet placeable.
+    pub fn convert(&mut self, message: &Message) -> Vec<Converted> {
+        let header = &message.header;
+        let index = header.addr.index;
+        let stamp = Time::from_seconds(header.timestamp);
+        match (&message.body, header.msg_type) {
+            (Body::Sonar(Sonar::Geometry(g) | Sonar::GeometryData(g)), _) => {
+                self.sonar_geometry(index, &g.poses);
+                Vec::new()
+            }
+            (Body::Sonar(Sonar::Ranges(data)), MsgType::Data) => {
+                let poses = self.sonars.get(&index).map_or(&[][..], |p| &p[..]);
+                let at = Header::new(stamp, frame(&self.ns, "base_link", 0));
+                crate::ranges::sonar(at, poses, &data.ranges)
+                    .map(|cloud| {
+                        let topic = topic(&self.ns, "sonar", index);
+                        vec![Converted::new(topic, stamp, RosOut::PointCloud2(cloud))]
+                    })
+                    .unwrap_or_default()
+            }
+            (Body::Ranger(Ranger::Geometry(g) | Ranger::GeometryData(g)), _) => {
+                self.ranger_geometry(index, g);
+                Vec::new()
+            }
+            (Body::Ranger(Ranger::Config(c) | Ranger::SetConfig(c)), MsgType::Ack) => {
+                self.ranger_config(index, c);
+                Vec::new()
+            }
+            (Body::Ranger(Ranger::RangesStamped(stamped)), MsgType::Data) => {
+                if stamped.have_geom != 0 {
+                    self.ranger_geometry(index, &stamped.geom);
+                }
+                if stamped.have_config != 0 {
+                    self.ranger_config(index, &stamped.config);
+                }
+                self.ranger_ranges(index, stamp, &stamped.data.ranges)
+            }
+            (Body::Ranger(Ranger::Ranges(data)), MsgType::Data) => {
+                self.ranger_ranges(index, stamp, &data.ranges)
+            }
+            (Body::Map(Map::Info(info) | Map::InfoData(info)), _) => {
+                self.maps.entry(index).or_default().info(info);
+                Vec::new()
+            }
+            (Body::Map(Map::Tile(tile)), MsgType::Ack) => {
+                let header = Header::new(stamp, MAP_FRAME);
+                match self.maps.entry(index).or_default().tile(tile, header) {
+                    Some(grid) => vec![Converted::new(
+                        map_topic(index),
+                        stamp,
+                        RosOut::OccupancyGrid(grid),
+                    )],
+                    None => Vec::new(),
+                }
+            }
+            _ => convert(&self.ns, message),
+        }
+    }
+
+    fn ranger_ranges(&self, index: u16, stamp: Time, ranges: &[f64]) -> Vec<Converted> {
+        let state = self.rangers.get(&index).cloned().unwrap_or_default();
+        let at = Header::new(stamp, frame(&self.ns, "base_link", 0));
+        match crate::ranges::ranger(at, &state, ranges) {
+            Some(cloud) => vec![Converted::new(
+                topic(&self.ns, "range", index),
+                stamp,
+                RosOut::PointCloud2(cloud),
+            )],
+            None => Vec::new(),
+        }
+    }
+}
+
+/// Where map `index` goes: `/map`, a second map `/map_1`.
+pub fn map_topic(index: u16) -> String {
+    if index == 0 {
+        "/map".to_string()
+    } else {
+        format!("/map_{index}")
+    }
+}
+
+/// A planner's way-points as the path `/ns/plan` (in `map`).
+pub fn plan(ns: &str, index: u16, stamp: Time, waypoints: &PlannerWaypoints) -> Converted {
+    let header = Header::new(stamp, MAP_FRAME);
+    let path = Path {
+        header: header.clone(),
+        poses: waypoints
+            .waypoints
+            .iter()
+            .map(|p| PoseStamped {
+                header: header.clone(),
+                pose: Pose::planar(p.px, p.py, p.pa),
+            })
+            .collect(),
     };
+    Converted::new(topic(ns, "plan", index), stamp, RosOut::Path(path))
 }
 
-fn type_of<T: RosMessage>(_: &T) -> &'static str {
-    T::TYPE
-}
-
-fn schema_of<T: RosMessage>(_: &T) -> String {
-    schema_text::<T>()
-}
-
-impl RosOut {
-    /// `pkg/msg/Type`.
-    pub fn type_name(&self) -> &'static str {
-        each_type!(self, m => type_of(m))
-    }
-
-    /// The type's schema (`ros2msg`).
-    pub fn schema(&self) -> String {
-        each_type!(self, m => schema_of(m))
-    }
-
-    /// The message as ROS 2 serializes it.
-    pub fn cdr(&self) -> Result<Vec<u8>, CdrError> {
-        each_type!(self, m => serialize(m))
-    }
-}
-
-/// One ROS 2 message made from a Player message: its topic, its time and itself.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Converted {
-    pub topic: String,
-    pub stamp: Time,
-    pub message: RosOut,
-}
-
-fn converted(topic: String, stamp: Time, message: RosOut) -> Converted {
-    Converted {
-        topic,
-        stamp,
-        message,
-    }
-}
-
-/// The ROS 2 messages of `message`, from robot namespace `ns`: none for what is not mapped.
+/// The ROS 2 messages of `message`, from robot namespace `ns`, of what needs nothing known
+/// before it (a [`Converter`] adds sonars, rangers and maps).
 pub fn convert(ns: &str, message: &Message) -> Vec<Converted> {
     let header = &message.header;
     let index = header.addr.index;
     let stamp = Time::from_seconds(header.timestamp);
+    let converted = Converted::new;
     match (&message.body, header.msg_type) {
         (Body::Laser(Laser::Scan(scan)), MsgType::Data) => {
             let scan = laser_scan(scan, Header::new(stamp, frame(ns, "laser", index)));
@@ -213,25 +297,7 @@ pub fn convert(ns: &str, message: &Message) -> Vec<Converted> {
                 None => Vec::new(),
             }
         }
-        (Body::Planner(Planner::Waypoints(w)), MsgType::Ack) => {
-            let header = Header::new(stamp, MAP_FRAME);
-            let path = Path {
-                header: header.clone(),
-                poses: w
-                    .waypoints
-                    .iter()
-                    .map(|p| PoseStamped {
-                        header: header.clone(),
-                        pose: Pose::planar(p.px, p.py, p.pa),
-                    })
-                    .collect(),
-            };
-            vec![converted(
-                topic(ns, "plan", index),
-                stamp,
-                RosOut::Path(path),
-            )]
-        }
+        (Body::Planner(Planner::Waypoints(w)), MsgType::Ack) => vec![plan(ns, index, stamp, w)],
         (Body::Power(Power::State(p)), MsgType::Data) => {
             let battery = BatteryState {
                 header: Header::new(stamp, frame(ns, "base_link", 0)),
@@ -257,15 +323,24 @@ pub fn convert(ns: &str, message: &Message) -> Vec<Converted> {
         }
         (Body::Camera(Camera::State(picture)), MsgType::Data) => {
             let header = Header::new(stamp, frame(ns, "camera", index));
-            match crate::camera::picture(picture, header) {
-                Some(RosOut::CompressedImage(jpeg)) => vec![converted(
+            let info = crate::camera::info(picture, header.clone());
+            let image = match crate::camera::picture(picture, header) {
+                Some(RosOut::CompressedImage(jpeg)) => converted(
                     format!("{}/compressed", topic(ns, "image_raw", index)),
                     stamp,
                     RosOut::CompressedImage(jpeg),
-                )],
-                Some(image) => vec![converted(topic(ns, "image_raw", index), stamp, image)],
-                None => Vec::new(),
-            }
+                ),
+                Some(image) => converted(topic(ns, "image_raw", index), stamp, image),
+                None => return Vec::new(),
+            };
+            vec![
+                image,
+                converted(
+                    topic(ns, "camera_info", index),
+                    stamp,
+                    RosOut::CameraInfo(info),
+                ),
+            ]
         }
         _ => Vec::new(),
     }

@@ -48,9 +48,74 @@ pub fn grid(info: &MapInfo, tiles: &[MapData], header: Header) -> Result<Occupan
     })
 }
 
+/// A map read as a recording saw it asked: its info, then its tiles one reply at a time; the
+/// grid is whole once the tiles cover every cell.
+#[derive(Debug, Clone, Default)]
+pub struct MapTiles {
+    info: Option<MapInfo>,
+    tiles: Vec<MapData>,
+}
+
+impl MapTiles {
+    /// The map's info came (a new reading of the map begins).
+    pub fn info(&mut self, info: &MapInfo) {
+        self.info = Some(*info);
+        self.tiles.clear();
+    }
+
+    /// A tile came: the whole grid once this one completes it (then a new reading may begin).
+    pub fn tile(&mut self, tile: &MapData, header: Header) -> Option<OccupancyGrid> {
+        let info = self.info.as_ref()?;
+        self.tiles
+            .retain(|t| (t.row, t.col) != (tile.row, tile.col));
+        self.tiles.push(tile.clone());
+        let (width, height) = (u64::from(info.width), u64::from(info.height));
+        let covered: u64 = self
+            .tiles
+            .iter()
+            .map(|t| {
+                let w = u64::from(t.width).min(width.saturating_sub(u64::from(t.col)));
+                let h = u64::from(t.height).min(height.saturating_sub(u64::from(t.row)));
+                w * h
+            })
+            .sum();
+        if covered < width * height {
+            return None;
+        }
+        let whole = grid(info, &self.tiles, header).ok();
+        self.tiles.clear();
+        whole
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_map_is_whole_once_its_tiles_cover_it() {
+        let info = MapInfo {
+            scale: 0.5,
+            width: 4,
+            height: 2,
+            ..MapInfo::default()
+        };
+        let mut tiles = MapTiles::default();
+        let tile = |col| MapData::compress(col, 0, 2, 2, 1, &[-1, 1, -1, 1]);
+        assert!(
+            tiles.tile(&tile(0), Header::default()).is_none(),
+            "no info yet"
+        );
+        tiles.info(&info);
+        assert!(tiles.tile(&tile(0), Header::default()).is_none());
+        assert!(
+            tiles.tile(&tile(0), Header::default()).is_none(),
+            "the same tile again"
+        );
+        let grid = tiles.tile(&tile(2), Header::default()).unwrap();
+        assert_eq!(grid.data, [0, 100, 0, 100, 0, 100, 0, 100]);
+        assert_eq!((grid.info.width, grid.info.resolution), (4, 0.5));
+    }
 
     #[test]
     fn cells_become_ros_occupancy() {

@@ -13,7 +13,7 @@
 use std::path::{Path, PathBuf};
 
 use player_sim::sim::{Command, Simulation, ranger_scan};
-use player_sim::world::{Pose, World};
+use player_sim::world::{Pose, RangerNoise, RangerSpec, World};
 use serde_json::Value;
 
 mod golden_gaps;
@@ -140,7 +140,31 @@ fn still_world(path: &Path) -> Simulation {
     Simulation::new(world)
 }
 
-/// player-sim's readings at each golden pose of `name`, in `world`, against Stage's.
+/// A ranger without its sensors' own noise.
+fn noiseless(ranger: &RangerSpec) -> RangerSpec {
+    let mut exact = ranger.clone();
+    for sensor in &mut exact.sensors {
+        sensor.noise = RangerNoise::default();
+    }
+    exact
+}
+
+/// A robust standard deviation (1.4826 times the median absolute deviation from the median):
+/// beams where the geometry differs do not count.
+fn robust_sd(values: &mut [f64]) -> f64 {
+    let median = |v: &mut [f64]| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let centre = median(values);
+    let mut deviations: Vec<f64> = values.iter().map(|v| (v - centre).abs()).collect();
+    1.4826 * median(&mut deviations)
+}
+
+/// player-sim's readings at each golden pose of `name`, in `world`, against Stage's. A sensor
+/// with its own `noise` is compared without it (Stage's draws cannot be repeated); that its
+/// noise spreads readings as Stage's does is checked apart, by the spread of Stage's and of
+/// player-sim's noisy readings around player-sim's exact ones.
 fn compare_readings(world: &Path, name: &str) -> Figures {
     let (header, scans) = golden(name);
     let mut sim = still_world(world);
@@ -148,13 +172,27 @@ fn compare_readings(world: &Path, name: &str) -> Figures {
     let i = sim.robot_index(robot).expect("the golden robot");
     let rangers = sim.world.robots[i].rangers.clone();
     let mut figures = Figures::default();
-    for scan in &scans {
+    let (mut stage_spread, mut our_spread) = (Vec::new(), Vec::new());
+    for (k, scan) in scans.iter().enumerate() {
         sim.robots[i].pose = pose(&scan["pose"]);
+        // Other draws at each pose.
+        sim.noise.seed = k as u64;
         let theirs = scan["ranges"].as_array().expect("ranges");
         assert_eq!(theirs.len(), rangers.len(), "{name}: rangers");
         for (ranger, stage) in rangers.iter().zip(theirs) {
             let stage = numbers(stage);
-            let ours = ranger_scan(&sim, i, ranger);
+            let exact = noiseless(ranger);
+            let ours = ranger_scan(&sim, i, &exact);
+            if exact != *ranger {
+                let noisy = ranger_scan(&sim, i, ranger);
+                let max = ranger.sensors[0].max_range;
+                for ((exact, noisy), stage) in ours.iter().zip(&noisy).zip(&stage) {
+                    if *exact < max && *stage < max {
+                        stage_spread.push(stage - exact);
+                        our_spread.push(noisy - exact);
+                    }
+                }
+            }
             assert_eq!(ours.len(), stage.len(), "{name}: beams of a ranger");
             for (a, b) in ours.iter().zip(&stage) {
                 let off = (a - b).abs();
@@ -168,6 +206,20 @@ fn compare_readings(world: &Path, name: &str) -> Figures {
                 }
             }
         }
+    }
+    if !stage_spread.is_empty() {
+        let (stage, ours) = (robust_sd(&mut stage_spread), robust_sd(&mut our_spread));
+        println!(
+            "{name}: noise around player-sim's exact readings, robust sd: Stage {:.1} mm, \
+             player-sim {:.1} mm ({} beams)",
+            stage * 1000.0,
+            ours * 1000.0,
+            stage_spread.len()
+        );
+        assert!(
+            (0.8..=1.25).contains(&(ours / stage)),
+            "{name}: noise spread {ours} m against Stage's {stage} m"
+        );
     }
     figures
 }

@@ -95,11 +95,7 @@ fn omni_drive_goes_sideways_and_go_to_arrives() {
         y: -1.0,
         a: 1.0,
     };
-    sim.robots[0].command = Command::GoTo {
-        target,
-        speed: 0.5,
-        turn: 1.0,
-    };
+    sim.robots[0].command = Command::GoTo { target };
     run(&mut sim, 20.0);
     let p = sim.robots[0].pose;
     assert!(

@@ -19,6 +19,7 @@ from rosbags.typesys import Stores, get_typestore
 from test_mcap_export import read_prec
 
 LASER, POSITION2D, LOCALIZE, CAMERA = 6, 4, 25, 40
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def export(playerrecord, captures, tmp: pathlib.Path):
@@ -113,6 +114,82 @@ def test_the_messages_say_what_the_player_servers_sent(playerrecord, captures, t
     assert jpeg.format == "jpeg" and bytes(jpeg.data[:2]) == b"\xff\xd8"
     plans = by_topic["/r0/plan"]
     assert any(len(p.poses) > 1 for p in plans) and all(p.header.frame_id == "map" for p in plans)
+    # Beside each picture, its size (uncalibrated: Player says nothing of the lens).
+    assert types["/r0/camera_info"] == "sensor_msgs/msg/CameraInfo"
+    assert len(by_topic["/r0/camera_info"]) == len(by_topic["/r0/image_raw"])
+    info = by_topic["/r0/camera_info"][0]
+    assert (info.width, info.height) == (image.width, image.height) and not info.k.any()
+    # The map a client read tile by tile (captures/nav/map_info_data): one whole grid, its
+    # 1681 walls and 23919 free cells as navclient counted them.
+    assert types["/map"] == "nav_msgs/msg/OccupancyGrid"
+    (grid,) = by_topic["/map"]
+    assert (grid.info.width, grid.info.height, grid.header.frame_id) == (160, 160, "map")
+    assert grid.info.resolution == pytest.approx(0.1)
+    assert (grid.info.origin.position.x, grid.info.origin.position.y) == (-8.0, -8.0)
+    cells = collections.Counter(int(c) for c in grid.data)
+    assert cells == {100: 1681, 0: 23919}
+
+
+def free_port():
+    import socket
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def test_a_recorded_simulation_s_rangers_become_point_clouds(playerrecord, player_sim, tmp_path):
+    """multirobot.world recorded by playerrecord (which asks every ranger its geometry and
+    configuration): r0's laser ranger (181 beams) and its ring of 8 sonars as clouds in
+    r0/base_link."""
+    port = free_port()
+    sim = subprocess.Popen(
+        [player_sim, ROOT / "stage-worlds" / "multirobot.world", "--port-base", str(port)],
+        stderr=subprocess.DEVNULL,
+    )
+    try:
+        prec = tmp_path / "sim.prec"
+        subprocess.run(
+            [playerrecord, "record", f"localhost:{port}", "-o", prec, "-t", "2"],
+            check=True,
+            capture_output=True,
+            timeout=30,
+        )
+    finally:
+        sim.terminate()
+        sim.wait(10)
+    bag = tmp_path / "bag"
+    subprocess.run(
+        [playerrecord, "export", "--rosbag2", prec, "-o", bag, "--name", f"localhost:{port}=r0"],
+        check=True,
+        capture_output=True,
+    )
+    typestore = get_typestore(Stores.ROS2_JAZZY)
+    clouds = collections.defaultdict(list)
+    with Reader(bag) as reader:
+        for connection, _, raw in reader.messages():
+            if connection.msgtype == "sensor_msgs/msg/PointCloud2":
+                clouds[connection.topic].append(typestore.deserialize_cdr(raw, connection.msgtype))
+    assert set(clouds) == {"/r0/range", "/r0/range_1"}, clouds.keys()
+    for topic, beams in (("/r0/range", 181), ("/r0/range_1", 8)):
+        cloud = clouds[topic][-1]
+        assert cloud.header.frame_id == "r0/base_link"
+        assert [f.name for f in cloud.fields] == ["x", "y", "z", "range"]
+        points = [struct.unpack_from("<4f", bytes(cloud.data), i * 16) for i in range(cloud.width)]
+        assert cloud.width == beams
+        # Each echo lies its range away from its transducer, which stands on the robot.
+        for x, y, _, r in points:
+            assert 0 < r <= 8.0 and abs(math.hypot(x, y) - r) < 0.5, (topic, x, y, r)
+    # The sonars face every way round the robot; the laser ranger looks ahead.
+    ring = clouds["/r0/range_1"][-1]
+    bearings = {
+        round(math.degrees(math.atan2(*struct.unpack_from("<2f", bytes(ring.data), i * 16)[::-1])))
+        for i in range(ring.width)
+    }
+    assert max(bearings) - min(bearings) > 270, bearings
+    # The first sonar, 0.2 m ahead of the ranger facing forward: its echo straight ahead.
+    x, y, _, r = struct.unpack_from("<4f", bytes(ring.data), 0)
+    assert abs(y) < 0.05 and x == pytest.approx(r + 0.2, abs=0.1), (x, y, r)
 
 
 def test_mcap_ros2_decodes_every_message_and_the_metadata_adds_up(playerrecord, captures, tmp_path):

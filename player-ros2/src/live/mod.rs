@@ -1,19 +1,26 @@
 //! The live front: each Player robot a ROS 2 node over DDS (RTPS), ROS 2's default middleware,
 //! which any ROS 2 from Humble on discovers with no set-up. Its data goes out through the same
-//! conversion as the files ([`crate::convert`]); `cmd_vel` comes back as a velocity for the
-//! robot's base, refused when absurd and stopped when its publisher goes quiet
-//! ([`commands`]).
+//! conversion as the files ([`crate::convert`]); `cmd_vel` (a `Twist`, or a `TwistStamped`
+//! by choice: [`Commands`]) comes back as a velocity for the robot's base, refused when absurd
+//! and stopped when its publisher goes quiet ([`commands`]); a simulation's time goes out on
+//! `/clock` ([`clock`]).
 //!
 //! DDS discovers by multicast: run it where that is meant to happen (the tests run it inside a
 //! network namespace of their own).
 
+pub mod clock;
 pub mod commands;
+mod describe;
 mod front;
+mod inputs;
 mod node;
+mod publishers;
 pub mod steer;
 
+pub use clock::SimClock;
+pub use describe::{Described, describe};
 pub use front::Ros2Front;
-
+pub use inputs::Commands;
 pub use node::RobotNode;
 
 use player_proto::RobotId;
@@ -53,6 +60,7 @@ pub fn domain(given: Option<u16>) -> Result<u16, LiveError> {
 }
 
 /// A process's way into one ROS 2 domain.
+#[derive(Clone)]
 pub struct Ros2 {
     context: Context,
 }
@@ -73,9 +81,14 @@ impl Ros2 {
         Ok(Ros2 { context })
     }
 
-    /// The node of `robot`: `/ns/player`, publishing its data, and (unless `read_only`)
-    /// subscribed to its `cmd_vel`.
-    pub fn robot(&self, robot: &RobotId, read_only: bool) -> Result<RobotNode, LiveError> {
-        RobotNode::new(&self.context, robot, read_only)
+    /// The node of `robot`: `/ns/player`, publishing its data, and (unless read-only)
+    /// subscribed to its `cmd_vel`, `goal_pose` and `initialpose`.
+    pub fn robot(&self, robot: &RobotId, commands: Commands) -> Result<RobotNode, LiveError> {
+        RobotNode::new(&self.context, robot, commands)
+    }
+
+    /// Publishes `clock` on `/clock` until the returned thread is dropped.
+    pub fn clock(&self, clock: SimClock) -> Result<clock::ClockThread, LiveError> {
+        clock::ClockThread::start(&self.context, clock)
     }
 }

@@ -178,3 +178,23 @@ impl RosMessage for Twist {
         vec![("geometry_msgs/msg/Vector3", VECTOR3)]
     }
 }
+
+/// geometry_msgs/msg/TwistStamped: Jazzy's `cmd_vel` (Nav2's and teleop's from Jazzy on).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct TwistStamped {
+    pub header: Header,
+    pub twist: Twist,
+}
+
+impl RosMessage for TwistStamped {
+    const TYPE: &'static str = "geometry_msgs/msg/TwistStamped";
+    const DEFINITION: &'static str = "std_msgs/Header header\nTwist twist\n";
+    fn dependencies() -> Vec<(&'static str, &'static str)> {
+        let mut deps = header_deps();
+        deps.extend([
+            ("geometry_msgs/msg/Twist", TWIST),
+            ("geometry_msgs/msg/Vector3", VECTOR3),
+        ]);
+        deps
+    }
+}

@@ -10,12 +10,13 @@ mod sensor;
 pub use builtin::{Clock, Header, Time};
 pub use geometry::{
     Point, Pose, PoseStamped, PoseWithCovariance, PoseWithCovarianceStamped, Quaternion, TFMessage,
-    Transform, TransformStamped, Twist, TwistWithCovariance, Vector3,
+    Transform, TransformStamped, Twist, TwistStamped, TwistWithCovariance, Vector3,
 };
 pub use nav::{MapMetaData, OccupancyGrid, Odometry, Path};
 pub use sensor::{
-    BatteryState, CompressedImage, Image, LaserScan, POWER_SUPPLY_STATUS_CHARGING,
-    POWER_SUPPLY_STATUS_DISCHARGING, POWER_SUPPLY_STATUS_UNKNOWN,
+    BatteryState, CameraInfo, CompressedImage, Image, LaserScan, POINT_FIELD_FLOAT32,
+    POWER_SUPPLY_STATUS_CHARGING, POWER_SUPPLY_STATUS_DISCHARGING, POWER_SUPPLY_STATUS_UNKNOWN,
+    PointCloud2, PointField, RegionOfInterest,
 };
 
 /// A ROS 2 message type.

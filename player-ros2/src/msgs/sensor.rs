@@ -1,4 +1,4 @@
-//! sensor_msgs: laser scans and batteries.
+//! sensor_msgs: laser scans, batteries, pictures and their cameras, point clouds.
 
 use serde::{Deserialize, Serialize};
 
@@ -98,5 +98,84 @@ impl RosMessage for CompressedImage {
     const DEFINITION: &'static str = "std_msgs/Header header\nstring format\nuint8[] data\n";
     fn dependencies() -> Vec<(&'static str, &'static str)> {
         header_deps()
+    }
+}
+
+/// sensor_msgs/msg/RegionOfInterest: a part of a picture (all zeros: the whole of it).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+pub struct RegionOfInterest {
+    pub x_offset: u32,
+    pub y_offset: u32,
+    pub height: u32,
+    pub width: u32,
+    pub do_rectify: bool,
+}
+
+const REGION_OF_INTEREST: &str =
+    "uint32 x_offset\nuint32 y_offset\nuint32 height\nuint32 width\nbool do_rectify\n";
+
+/// sensor_msgs/msg/CameraInfo: a picture's size and its camera's calibration; `k`, `r` and
+/// `p` all zeros say "uncalibrated", as ROS's image pipeline reads them.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct CameraInfo {
+    pub header: Header,
+    pub height: u32,
+    pub width: u32,
+    pub distortion_model: String,
+    pub d: Vec<f64>,
+    pub k: [f64; 9],
+    pub r: [f64; 9],
+    pub p: [f64; 12],
+    pub binning_x: u32,
+    pub binning_y: u32,
+    pub roi: RegionOfInterest,
+}
+
+impl RosMessage for CameraInfo {
+    const TYPE: &'static str = "sensor_msgs/msg/CameraInfo";
+    const DEFINITION: &'static str = "std_msgs/Header header\nuint32 height\nuint32 width\nstring distortion_model\nfloat64[] d\nfloat64[9]  k\nfloat64[9]  r\nfloat64[12] p\nuint32 binning_x\nuint32 binning_y\nRegionOfInterest roi\n";
+    fn dependencies() -> Vec<(&'static str, &'static str)> {
+        let mut deps = header_deps();
+        deps.push(("sensor_msgs/msg/RegionOfInterest", REGION_OF_INTEREST));
+        deps
+    }
+}
+
+/// sensor_msgs/msg/PointField: one field of a point cloud's points.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct PointField {
+    pub name: String,
+    /// Bytes from the start of the point.
+    pub offset: u32,
+    pub datatype: u8,
+    pub count: u32,
+}
+
+/// PointField's `datatype` of a 32-bit float.
+pub const POINT_FIELD_FLOAT32: u8 = 7;
+
+const POINT_FIELD: &str = "uint8 INT8    = 1\nuint8 UINT8   = 2\nuint8 INT16   = 3\nuint8 UINT16  = 4\nuint8 INT32   = 5\nuint8 UINT32  = 6\nuint8 FLOAT32 = 7\nuint8 FLOAT64 = 8\nstring name\nuint32 offset\nuint8  datatype\nuint32 count\n";
+
+/// sensor_msgs/msg/PointCloud2: points as packed bytes, `point_step` bytes each.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct PointCloud2 {
+    pub header: Header,
+    pub height: u32,
+    pub width: u32,
+    pub fields: Vec<PointField>,
+    pub is_bigendian: bool,
+    pub point_step: u32,
+    pub row_step: u32,
+    pub data: Vec<u8>,
+    pub is_dense: bool,
+}
+
+impl RosMessage for PointCloud2 {
+    const TYPE: &'static str = "sensor_msgs/msg/PointCloud2";
+    const DEFINITION: &'static str = "std_msgs/Header header\nuint32 height\nuint32 width\nPointField[] fields\nbool    is_bigendian\nuint32  point_step\nuint32  row_step\nuint8[] data\nbool is_dense\n";
+    fn dependencies() -> Vec<(&'static str, &'static str)> {
+        let mut deps = header_deps();
+        deps.push(("sensor_msgs/msg/PointField", POINT_FIELD));
+        deps
     }
 }

@@ -42,8 +42,10 @@ impl SimDevice {
             Source::Position { robot } => {
                 let r = &sim.robots[robot];
                 let (vx, vy, va) = r.velocity;
+                // The true pose, or the odometry's (the world's `localization`).
+                let pose = sim.reported_pose(robot);
                 let state = Position2dData {
-                    pos: Pose2d::new(r.pose.x, r.pose.y, r.pose.a),
+                    pos: Pose2d::new(pose.x, pose.y, pose.a),
                     vel: Pose2d::new(vx, vy, va),
                     stall: u8::from(r.stall),
                 };

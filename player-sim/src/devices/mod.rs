@@ -18,13 +18,13 @@ use player_proto::interfaces::fiducial::{Fiducial, FiducialFov, FiducialGeometry
 use player_proto::interfaces::gripper::Gripper;
 use player_proto::interfaces::kind::BodyKind;
 use player_proto::interfaces::laser::{Laser, LaserConfig, LaserGeometry};
-use player_proto::interfaces::position2d::{Position2d, Position2dGeometry};
+use player_proto::interfaces::position2d::{self, Position2d, Position2dGeometry};
 use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry};
 use player_proto::interfaces::simulation::{Simulation as SimMsg, SimulationPose2d};
 use player_proto::interfaces::sonar::{Sonar, SonarGeometry};
 use player_proto::message::{Body, Message};
 use player_proto::server::{Device, Reply};
-use player_proto::wire::DevAddr;
+use player_proto::wire::{DevAddr, MsgType};
 
 use crate::camera_frames::camera_data;
 use crate::served::{ServedDevice, Source};
@@ -97,6 +97,19 @@ impl SimDevice {
                             sh: spec.size[2],
                         },
                     })))
+                } else if let Body::Position2d(Position2d::SetOdometry(set)) = &request.body {
+                    let pose = Pose {
+                        x: set.pose.px,
+                        y: set.pose.py,
+                        a: set.pose.pa,
+                    };
+                    sim.set_odometry(robot, pose);
+                    Reply::Ack(Body::Empty)
+                } else if request.header.msg_type == MsgType::Req
+                    && request.header.subtype == position2d::REQ_RESET_ODOM
+                {
+                    sim.set_odometry(robot, Pose::default());
+                    Reply::Ack(Body::Empty)
                 } else if asks(request, Position2d::REQ_MOTOR_POWER)
                     || asks(request, Position2d::REQ_VELOCITY_MODE)
                     || asks(request, Position2d::REQ_POSITION_MODE)
@@ -328,14 +341,13 @@ impl Device for SimDevice {
                 vy: 0.0,
                 va: 0.0,
             },
+            // Stage steers to the pose with its own speeds; the command's are not read.
             Body::Position2d(Position2d::Position(p)) => Command::GoTo {
                 target: Pose {
                     x: p.pos.px,
                     y: p.pos.py,
                     a: p.pos.pa,
                 },
-                speed: if p.vel.px > 0.0 { p.vel.px } else { 0.5 },
-                turn: if p.vel.pa > 0.0 { p.vel.pa } else { 1.0 },
             },
             _ => return,
         };

@@ -12,6 +12,8 @@ mod geometry;
 mod gripper;
 mod nearby;
 mod noise;
+mod odometry;
+mod position_control;
 mod sensors;
 mod shapes;
 mod walking;
@@ -27,6 +29,8 @@ pub use geometry::GroundBox;
 pub use gripper::{BEAM_BITS, GripperCommand, GripperState, Paddles};
 pub use nearby::{NearbyBoxes, SolidBox};
 pub use noise::Noise;
+pub use odometry::{integrate, odometry_error};
+pub use position_control::goto_velocity;
 pub use sensors::{
     FiducialHit, RangerReturns, body_at, fiducials, on_robot, ranger_returns, ranger_scan,
     ranger_scan_exhaustive,
@@ -43,14 +47,17 @@ use crate::world::{Controller, Drive, Pose, World};
 pub enum Command {
     /// Velocity in the robot frame: forward m/s, sideways m/s (omni only), turn rad/s.
     Velocity { vx: f64, vy: f64, va: f64 },
-    /// Go to this pose (position mode) at most at these speeds.
-    GoTo { target: Pose, speed: f64, turn: f64 },
+    /// Go to this pose (position mode), in the frame the robot reports its pose in, steered
+    /// as Stage steers (see [`goto_velocity`]).
+    GoTo { target: Pose },
 }
 
 /// A robot's moving state.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RobotState {
     pub pose: Pose,
+    /// Its odometry's reading (`localization "odom"`; see [`Simulation::reported_pose`]).
+    pub estimate: Pose,
     /// Actual velocity over the last step (robot frame).
     pub velocity: (f64, f64, f64),
     pub stall: bool,
@@ -97,6 +104,7 @@ impl Simulation {
             .iter()
             .map(|r| RobotState {
                 pose: r.pose,
+                estimate: r.localization.odometry_start(r.pose),
                 velocity: (0.0, 0.0, 0.0),
                 stall: false,
                 command: STOP,
@@ -258,6 +266,7 @@ impl Simulation {
             } else {
                 0.0
             };
+            self.integrate_odometry(i, (vx, vy, va), dt);
             let p = self.robots[i].pose;
             let (s, c) = p.a.sin_cos();
             let next = Pose {
@@ -300,30 +309,8 @@ impl Simulation {
     fn commanded_velocity(&mut self, i: usize) -> (f64, f64, f64) {
         match self.robots[i].command {
             Command::Velocity { vx, vy, va } => (vx, vy, va),
-            Command::GoTo {
-                target,
-                speed,
-                turn,
-            } => {
-                let p = self.robots[i].pose;
-                let (dx, dy) = (target.x - p.x, target.y - p.y);
-                let distance = dx.hypot(dy);
-                if distance < 0.02 {
-                    let error = wrap(target.a - p.a);
-                    if error.abs() < 0.01 {
-                        self.robots[i].command = STOP;
-                        return (0.0, 0.0, 0.0);
-                    }
-                    return (0.0, 0.0, (error / self.world.interval).clamp(-turn, turn));
-                }
-                let error = wrap(dy.atan2(dx) - p.a);
-                let va = (error / self.world.interval).clamp(-turn, turn);
-                let vx = if error.abs() < 0.3 {
-                    (distance / self.world.interval).min(speed)
-                } else {
-                    0.0
-                };
-                (vx, 0.0, va)
+            Command::GoTo { target } => {
+                goto_velocity(self.world.robots[i].drive, self.reported_pose(i), target)
             }
         }
     }

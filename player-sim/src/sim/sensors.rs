@@ -220,16 +220,18 @@ fn scan_with<F: Fn(usize, f64) -> Option<Hit>>(
         };
         let caster = prepare(origin, sensor.max_range, fan, sensor.z);
         for i in 0..n {
-            let angle = origin.a + first + i as f64 * step;
+            let draw = [sim.steps, robot as u64, place, index as u64, i as u64];
+            let turn = sim.noise.beam_turn(&sensor.noise, step, &draw);
+            let angle = origin.a + first + i as f64 * step + turn;
             let (reading, intensity) = match caster(i, angle) {
                 // A beam that hits nothing reads the maximum, as a real one does: no noise.
                 None => (sensor.max_range, 0.0),
                 Some((range, intensity)) => (
-                    sim.noise.range(
+                    sim.noise.reading(
                         range,
-                        sensor.min_range,
-                        sensor.max_range,
-                        &[sim.steps, robot as u64, place, index as u64, i as u64],
+                        &sensor.noise,
+                        (sensor.min_range, sensor.max_range),
+                        &draw,
                     ),
                     intensity,
                 ),

@@ -14,10 +14,12 @@ mod controller;
 mod floorplan;
 mod gripper;
 mod ignored;
+mod localization;
 mod models;
 mod mounted_body;
 mod person;
 mod properties;
+mod ranger_noise;
 mod raster;
 mod robot;
 mod shape_slices;
@@ -35,9 +37,11 @@ pub(crate) use cell_floor::floor_i64;
 pub use controller::Controller;
 pub use gripper::GripperSpec;
 pub use ignored::ignored_summary;
+pub use localization::{DEFAULT_ODOM_ERROR_SPAN, Localization, LocalizationSpec};
 pub use models::{Model, Types, read_with_includes};
 pub use mounted_body::MountedBody;
 pub use person::{PersonSpec, STANCE_WIDTH, Walk};
+pub use ranger_noise::RangerNoise;
 pub use shape_slices::{ShapeSlice, slice_at};
 pub use velocity_bounds::VelocityBounds;
 pub use wall_rects::WallRect;
@@ -78,6 +82,8 @@ pub struct SensorSpec {
     /// plus the sensor's own (its pose's z and half its size's). A beam meets only what
     /// stands at that height: it passes over a lower robot, box or wall.
     pub z: f64,
+    /// Its `noise` (Stage's; none unless set).
+    pub noise: RangerNoise,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -146,6 +152,8 @@ pub struct RobotSpec {
     pub battery: Option<BatterySpec>,
     /// What its commanded velocity is held within (Stage's `velocity_bounds`).
     pub velocity_bounds: VelocityBounds,
+    /// What its position2d reports as its pose (Stage's `localization`, `odom_error`).
+    pub localization: LocalizationSpec,
     /// The solid models mounted on it, which rangers meet at their heights.
     pub mounted_bodies: Vec<MountedBody>,
 }
@@ -333,6 +341,7 @@ impl World {
                     "samples",
                     "color",
                     "color_rgba",
+                    "noise",
                 ],
                 "block" => &["points", "z"],
                 _ => {

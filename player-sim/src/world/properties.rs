@@ -21,6 +21,9 @@ pub(super) const READ: &[&str] = &[
     "color_rgba",
     "drive",
     "velocity_bounds",
+    "localization",
+    "localization_origin",
+    "odom_error",
     // Stage 4.3 reads it but does not ramp a velocity command by it: its drives end where
     // player-sim's do without it (golden/stage/*-drives.jsonl, to the millimetre).
     "acceleration_bounds",

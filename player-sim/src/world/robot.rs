@@ -62,6 +62,7 @@ impl World {
             controller: None,
             battery: BatterySpec::of(model)?,
             velocity_bounds: super::VelocityBounds::of(model)?,
+            localization: super::LocalizationSpec::of(model)?,
             mounted_bodies: Vec::new(),
         };
         if let Some(p) = model.get("gripper_return") {
@@ -208,6 +209,7 @@ fn ranger(model: &Model, pose: Pose, height: f64) -> Result<Option<RangerSpec>, 
             max_range: range[1],
             fov,
             samples,
+            noise: super::RangerNoise::of(part)?,
         });
     }
     Ok((!sensors.is_empty()).then_some(RangerSpec { pose, sensors }))

@@ -2,10 +2,14 @@
 //! shows robots in a browser (`--web`), in Foxglove or in Zenoh with nothing else running.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use anyhow::{Context, Result};
 use player_proto::RobotId;
+use player_ros2::live::SimClock;
+use player_sim::StepObserver;
 use player_sim::serve::{Running, ServeOptions, serve_world_file};
+use player_sim::sim::Simulation;
 use player_sim::world::World;
 
 /// A world served in-process, and its robots as the fronts name them.
@@ -33,10 +37,14 @@ pub fn world_file() -> PathBuf {
     .to_path_buf()
 }
 
-/// Serves the robots of the world at `path` on free local ports.
-pub fn serve(path: &Path) -> Result<Demo> {
+/// Serves the robots of the world at `path` on free local ports; `clock` (ROS 2's `/clock`)
+/// is told the simulated time after each step.
+pub fn serve(path: &Path, clock: Option<SimClock>) -> Result<Demo> {
+    let observer =
+        clock.map(|clock| StepObserver(Arc::new(move |sim: &Simulation| clock.set(sim.time))));
     let options = ServeOptions {
         free_ports: true,
+        observer,
         ..ServeOptions::default()
     };
     let mut ignored = Vec::new();

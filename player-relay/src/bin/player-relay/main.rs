@@ -86,6 +86,10 @@ struct Cli {
     #[arg(long, requires = "ros2")]
     ros2_read_only: bool,
 
+    /// cmd_vel from ROS 2 is a geometry_msgs/TwistStamped (Jazzy's Nav2 and teleop), not a Twist.
+    #[arg(long, requires = "ros2", conflicts_with = "ros2_read_only")]
+    ros2_twist_stamped: bool,
+
     #[command(flatten)]
     zenoh: zenoh::ZenohArgs,
 
@@ -130,9 +134,11 @@ fn run(cli: Cli) -> Result<()> {
     if cli.seconds.is_some_and(|s| !(0.0..=1e9).contains(&s)) {
         bail!("--seconds must be from 0 to 1e9");
     }
+    // A simulation's time, for ROS 2's /clock.
+    let clock = cli.ros2.then(player_ros2::live::SimClock::new);
     let demo = match (&cli.world, cli.demo) {
-        (Some(world), _) => Some(demo::serve(world)?),
-        (None, true) => Some(demo::serve(&demo::world_file())?),
+        (Some(world), _) => Some(demo::serve(world, clock.clone())?),
+        (None, true) => Some(demo::serve(&demo::world_file(), clock.clone())?),
         (None, false) => None,
     };
     let mut robots = cli.robots;
@@ -198,9 +204,14 @@ fn run(cli: Cli) -> Result<()> {
     }
     if cli.ros2 {
         let domain = player_ros2::live::domain(cli.ros_domain)?;
+        let commands = match (cli.ros2_read_only, cli.ros2_twist_stamped) {
+            (true, _) => player_ros2::live::Commands::ReadOnly,
+            (false, true) => player_ros2::live::Commands::TwistStamped,
+            (false, false) => player_ros2::live::Commands::Twist,
+        };
+        let clock = clock.filter(|_| demo.is_some());
         let front = Arc::new(player_ros2::live::Ros2Front::start(
-            domain,
-            cli.ros2_read_only,
+            domain, commands, clock,
         )?);
         eprintln!(
             "ROS 2 → domain {domain}{}",

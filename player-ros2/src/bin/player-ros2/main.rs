@@ -8,6 +8,7 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use player_proto::RobotId;
+use player_ros2::live::Commands;
 
 /// Player robots as ROS 2 nodes: scans, odometry, /tf and more out, cmd_vel in.
 #[derive(Parser, Debug)]
@@ -24,6 +25,18 @@ struct Cli {
     /// Publish only: no cmd_vel reaches a robot.
     #[arg(long)]
     read_only: bool,
+
+    /// cmd_vel is a geometry_msgs/TwistStamped (Jazzy's Nav2 and teleop), not a Twist.
+    #[arg(long, conflicts_with = "read_only")]
+    twist_stamped: bool,
+}
+
+fn commands(cli: &Cli) -> Commands {
+    match (cli.read_only, cli.twist_stamped) {
+        (true, _) => Commands::ReadOnly,
+        (false, true) => Commands::TwistStamped,
+        (false, false) => Commands::Twist,
+    }
 }
 
 fn main() -> ExitCode {
@@ -33,6 +46,6 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = player_ros2::live::domain(cli.ros_domain)
         .map_err(anyhow::Error::from)
-        .and_then(|d| bridge::run(&cli.robots, d, cli.read_only));
+        .and_then(|d| bridge::run(&cli.robots, d, commands(&cli)));
     program_edge::exit::exit_code("player-ros2", result)
 }
