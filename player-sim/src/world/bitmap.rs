@@ -30,6 +30,10 @@ pub struct OccupancyGrid {
     pub(super) wall_sums: WallSums,
 }
 
+/// The most pixels a floorplan bitmap may have (8192 x 8192): thirty times Stage's largest
+/// stock map, and at most a few hundred megabytes while it is read.
+pub const MAX_BITMAP_PIXELS: u64 = 1 << 26;
+
 impl OccupancyGrid {
     /// Reads a PNG (or any format the `image` crate reads with our features) as Stage reads a
     /// floorplan bitmap: a pixel whose first channel is 127 or less is a wall (alpha is not
@@ -43,8 +47,26 @@ impl OccupancyGrid {
         centre_x: f64,
         centre_y: f64,
     ) -> Result<OccupancyGrid, String> {
-        let image = image::open(path)
-            .map_err(|e| format!("cannot read bitmap {}: {e}", path.display()))?
+        let cannot =
+            |e: &dyn std::fmt::Display| format!("cannot read bitmap {}: {e}", path.display());
+        let reader = image::ImageReader::open(path)
+            .and_then(|r| r.with_guessed_format())
+            .map_err(|e| cannot(&e))?;
+        // The header's size first: a lying one is refused before anything is allocated.
+        let (w, h) = reader.into_dimensions().map_err(|e| cannot(&e))?;
+        if w == 0 || h == 0 {
+            return Err(cannot(&format!("it is {w} x {h} pixels")));
+        }
+        if u64::from(w) * u64::from(h) > MAX_BITMAP_PIXELS {
+            return Err(cannot(&format!(
+                "it is {w} x {h} pixels, more than the {MAX_BITMAP_PIXELS} a floorplan may have"
+            )));
+        }
+        let image = image::ImageReader::open(path)
+            .and_then(|r| r.with_guessed_format())
+            .map_err(|e| cannot(&e))?
+            .decode()
+            .map_err(|e| cannot(&e))?
             .to_rgba8();
         let (w, h) = (image.width() as usize, image.height() as usize);
         let mut occupied = vec![false; w * h];

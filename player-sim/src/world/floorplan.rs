@@ -24,6 +24,16 @@ impl World {
             return Ok(());
         }
         let size = numbers(model.get("size"), 2, &model.pos)?;
+        if !size[..2].iter().all(|s| s.is_finite() && *s > 0.0) {
+            let at = model.get("size").map_or(&model.pos, |p| &p.pos);
+            return Err(err(
+                at,
+                format!(
+                    "a floorplan's size [{} {}] must be more than nothing each way",
+                    size[0], size[1]
+                ),
+            ));
+        }
         let pose = pose_of(model)?;
         self.floor_height = size.get(2).copied().unwrap_or(1.0);
         self.floor_color = color_of(model)?;

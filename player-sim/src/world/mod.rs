@@ -219,6 +219,9 @@ pub struct World {
     /// "ignored: <what> at file:line", once each; not logged while loading (the program says
     /// them once, with its .cfg's, in one line: [`ignored_summary`]).
     pub ignored: Vec<String>,
+    /// The notes of `ignored`, to say each once without searching the list (a world of
+    /// 100 000 models may give as many).
+    ignored_seen: std::collections::HashSet<String>,
     /// Floorplan polygons read but not drawn yet (while loading: the grid they go into is
     /// known only once every floorplan and the world's resolution are).
     pending_floor: Vec<(Polygon, Pos)>,
@@ -280,7 +283,7 @@ impl World {
 
     fn ignore(&mut self, what: &str, pos: &Pos) {
         let note = format!("ignored: {what} at {}:{}", pos.file, pos.line);
-        if !self.ignored.contains(&note) {
+        if self.ignored_seen.insert(note.clone()) {
             tracing::debug!("{note}");
             self.ignored.push(note);
         }

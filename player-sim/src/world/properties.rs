@@ -117,12 +117,24 @@ pub(super) fn origin_of(m: &Model) -> Result<Pose, WorldFileError> {
         .map(Option::unwrap_or_default)
 }
 
+/// A model's `size [x y z]` (z from `default` when not given); a negative or endless one is
+/// refused where it is written (no body has one: collisions and rays would turn it inside out).
 pub(super) fn size_of(m: &Model, default: [f64; 3]) -> Result<[f64; 3], WorldFileError> {
     let Some(p) = m.get("size") else {
         return Ok(default);
     };
     let n = numbers(Some(p), 2, &p.pos)?;
-    Ok([n[0], n[1], n.get(2).copied().unwrap_or(default[2])])
+    let size = [n[0], n[1], n.get(2).copied().unwrap_or(default[2])];
+    if !size.iter().all(|s| s.is_finite() && *s >= 0.0) {
+        return Err(err(
+            &p.pos,
+            format!(
+                "size [{} {} {}] must be finite and not negative",
+                size[0], size[1], size[2]
+            ),
+        ));
+    }
+    Ok(size)
 }
 
 pub(super) fn name_of(m: &Model, default: &str) -> String {
