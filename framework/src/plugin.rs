@@ -10,7 +10,6 @@ pub use crate::action::{Action, ObjectRef};
 use crate::config::PluginConfig;
 use crate::device::DeviceAccess;
 use crate::query::{Query, QueryError, Reply};
-pub use crate::registry::{Component, Constructor, Metadata, PluginRegistry};
 use crate::scene::{NodeId, Scene};
 
 /// Where a device's scene node is, so that other plugins can attach to it (`<parentNode>`):
@@ -150,7 +149,7 @@ impl Service {
 }
 
 /// A component of a composition. Its life, as the viewer drives it: made by its
-/// [`Constructor`], then [`Plugin::initialize`] once, [`Plugin::run`] every iteration, and
+/// [`Constructor`](crate::registry::Constructor), then [`Plugin::initialize`] once, [`Plugin::run`] every iteration, and
 /// [`Plugin::clean`] once before it is removed; nothing is called after `clean`.
 pub trait Plugin: Send {
     /// The configuration this plugin was made from, with its current state written in.

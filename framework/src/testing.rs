@@ -38,7 +38,8 @@ use std::time::Instant;
 use crate::config::ConfigValueError;
 use crate::config::PluginConfig;
 use crate::device::RecordingDevice;
-use crate::plugin::{AnchorKey, Anchors, Plugin, PluginContext, PluginRegistry};
+use crate::plugin::{AnchorKey, Anchors, Plugin, PluginContext};
+use crate::registry::PluginRegistry;
 use crate::scene::{NodeId, Object3D, Scene};
 use glam::Vec3;
 

@@ -5,7 +5,8 @@ use std::path::Path;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use crate::grade::{Graded, grade};
+use crate::grade::grade;
+use crate::graded::Graded;
 use crate::report::{junit_xml, report_html, summary_csv};
 use crate::run::{Runner, Submission};
 use crate::spec::Spec;

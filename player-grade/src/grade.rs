@@ -3,40 +3,18 @@
 //! Whatever the program does, this gives a grade; only the grader's own trouble (a full disk)
 //! is an error, and even that is graded as nothing with the reason said.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::Duration;
 
 use player_sim::world::World;
 
-use crate::checks::{Rule, Verdict};
+use crate::checks::Rule;
+use crate::graded::Graded;
 use crate::output::SHOWN_LINES;
 use crate::python_check;
 use crate::report::results_json;
 use crate::run::{Ending, Outcome, Runner, Submission, run};
 use crate::spec::Spec;
-
-/// A submission's grade.
-#[derive(Debug, Clone)]
-pub struct Graded {
-    pub name: String,
-    pub score: f64,
-    pub max_score: f64,
-    pub verdicts: Vec<Verdict>,
-    /// How the run ended, in a sentence.
-    pub ended: String,
-    /// The program's last lines.
-    pub output: String,
-    /// The program's error, when it failed.
-    pub error: Option<String>,
-    /// What else a teacher should know (never commanded, not isolated, recording trouble).
-    pub notes: Vec<String>,
-    /// Wall-clock seconds the run took.
-    pub wall: Duration,
-    /// Simulated seconds the run lasted.
-    pub simulated: f64,
-    /// `DIR/<name>`.
-    pub folder: PathBuf,
-}
 
 /// Runs and grades `submission` into `out/<name>/` (its name as given).
 pub fn grade(spec: &Spec, submission: &Submission, runner: &Runner, out: &Path) -> Graded {

@@ -12,6 +12,7 @@
 pub mod checks;
 pub mod class;
 pub mod grade;
+pub mod graded;
 pub mod output;
 pub mod picture;
 pub mod python_check;
@@ -20,3 +21,4 @@ pub mod run;
 pub mod sandbox;
 pub mod spec;
 pub mod trace;
+pub mod zone;

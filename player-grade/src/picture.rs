@@ -6,8 +6,9 @@
 use image::{Rgb, RgbImage};
 use player_sim::world::World;
 
-use crate::checks::{Check, Rule, Verdict, Zone};
+use crate::checks::{Check, Rule, Verdict};
 use crate::trace::Trace;
+use crate::zone::Zone;
 
 /// The picture's longer side, pixels.
 const SIDE: u32 = 640;

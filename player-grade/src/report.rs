@@ -7,7 +7,7 @@ use std::path::Path;
 
 use serde_json::{Value, json};
 
-use crate::grade::Graded;
+use crate::graded::Graded;
 use crate::spec::Spec;
 
 /// Gradescope's `results.json`: the score, the run's time, the output a student sees (how the

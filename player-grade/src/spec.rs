@@ -11,7 +11,8 @@ use player_sim::world::World;
 use serde::Deserialize;
 use toml::Spanned;
 
-use crate::checks::{Check, Rule, Zone};
+use crate::checks::{Check, Rule};
+use crate::zone::Zone;
 
 /// Why a spec cannot be used.
 #[derive(Debug, thiserror::Error)]

@@ -8,7 +8,7 @@ use player_sim::StepObserver;
 use player_sim::sim::Simulation;
 use serde::Serialize;
 
-use crate::checks::Zone;
+use crate::zone::Zone;
 
 /// One step.
 #[derive(Debug, Clone, PartialEq, Serialize)]

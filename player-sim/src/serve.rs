@@ -5,58 +5,18 @@ use std::net::IpAddr;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
-use std::time::Duration;
 
 use player_proto::server::{Lockstep, Server, ServerConfig, ServerError};
 use player_proto::wire::DevAddr;
 
 use crate::devices::SimDevice;
+pub use crate::serve_options::{LockstepOptions, ServeOptions};
 use crate::served::{ServedDevice, attach_navigation, devices_beside};
 use crate::sim::Simulation;
-use crate::sim_record::{PortRecord, SimRecording};
-use crate::stepper::{Published, StepObserver, step_loop};
+use crate::sim_record::PortRecord;
+use crate::stepper::{Published, step_loop};
 use crate::world::World;
 use crate::worldfile::WorldFileError;
-
-/// Lockstep serving ([`player_proto::server::Lockstep`]): a step is taken once every client
-/// driving a robot has sent its command for it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LockstepOptions {
-    /// How long a step waits for a driver's command (wall clock); `None`: for ever.
-    pub patience: Option<Duration>,
-}
-
-/// How a simulation is served.
-#[derive(Debug, Clone)]
-pub struct ServeOptions {
-    pub bind: IpAddr,
-    /// Simulated seconds per real second; 0 runs as fast as the machine can.
-    pub speedup: f64,
-    /// Stop after this many steps (for tests and benchmarks).
-    pub max_steps: Option<u64>,
-    /// Serve on free ports chosen by the system instead of the configured ones.
-    pub free_ports: bool,
-    /// Step in lockstep with the clients that drive robots.
-    pub lockstep: Option<LockstepOptions>,
-    /// Record every device of every port each step, stamped with simulated time.
-    pub record: Option<SimRecording>,
-    /// Called after each step with the simulation (ground truth for a grader).
-    pub observer: Option<StepObserver>,
-}
-
-impl Default for ServeOptions {
-    fn default() -> Self {
-        ServeOptions {
-            bind: IpAddr::V4(std::net::Ipv4Addr::LOCALHOST),
-            speedup: 1.0,
-            max_steps: None,
-            free_ports: false,
-            lockstep: None,
-            record: None,
-            observer: None,
-        }
-    }
-}
 
 /// A simulation being served; stops when dropped.
 pub struct Running {

@@ -3,7 +3,7 @@
 //! — and, when the simulation records itself, every device's data recorded.
 
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use player_proto::capture::Direction;
@@ -11,20 +11,10 @@ use player_proto::server::{DeviceKey, Lockstep, Publisher};
 use player_proto::wire::{DevAddr, MsgType};
 
 use crate::devices::SimDevice;
-use crate::serve::ServeOptions;
+use crate::serve_options::ServeOptions;
 use crate::served::Source;
 use crate::sim::Simulation;
 use crate::sim_record::PortRecord;
-
-/// Called after each step with the simulation, under its lock: must be quick.
-#[derive(Clone)]
-pub struct StepObserver(pub Arc<dyn Fn(&Simulation) + Send + Sync>);
-
-impl std::fmt::Debug for StepObserver {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("StepObserver")
-    }
-}
 
 /// A served device as the step loop publishes it.
 pub(crate) struct Published {

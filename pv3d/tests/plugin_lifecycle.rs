@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
-use framework::plugin::Metadata;
+use framework::registry::Metadata;
 use framework::scene::{NodeId, Object3D};
 use framework::{ConfigValueError, Plugin, PluginConfig, PluginContext, PluginRegistry};
 use pv3d::app::Viewer;

@@ -6,8 +6,8 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Instant;
 
-use framework::plugin::Metadata;
 use framework::query::{Query, QueryError, Reply, Target, XmlElement};
+use framework::registry::Metadata;
 use framework::{ConfigValueError, Plugin, PluginConfig, PluginContext};
 use pv3d::app::Viewer;
 use pv3d::composition::{PluginInstance, parse_str};

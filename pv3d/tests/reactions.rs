@@ -8,8 +8,8 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Instant;
 
-use framework::plugin::Metadata;
 use framework::query::{Query, QueryError, Reply, Target, XmlElement};
+use framework::registry::Metadata;
 use framework::scene::{NodeId, Object3D};
 use framework::{ConfigValueError, Plugin, PluginConfig, PluginContext};
 use glam::{Affine3A, Vec3};

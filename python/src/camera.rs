@@ -7,16 +7,10 @@ use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 
 use crate::link::DeviceCore;
+use crate::pictures::RgbFrame;
 use crate::waiting::timeout_arg;
 
-/// A camera frame decoded to RGB bytes, row by row from the top.
-pub struct Rgb {
-    pub width: usize,
-    pub height: usize,
-    pub pixels: Vec<u8>,
-}
-
-fn decode(label: &str, frame: &CameraData) -> PyResult<Rgb> {
+fn decode(label: &str, frame: &CameraData) -> PyResult<RgbFrame> {
     let rgba = frame
         .to_rgba()
         .map_err(|e| PyValueError::new_err(format!("{label}: the frame does not decode: {e}")))?;
@@ -26,7 +20,7 @@ fn decode(label: &str, frame: &CameraData) -> PyResult<Rgb> {
         .chunks_exact(4)
         .flat_map(|p| [p[0], p[1], p[2]])
         .collect();
-    Ok(Rgb {
+    Ok(RgbFrame {
         width,
         height,
         pixels,
@@ -34,7 +28,7 @@ fn decode(label: &str, frame: &CameraData) -> PyResult<Rgb> {
 }
 
 /// The frame as a `player3.frame.Frame`: a numpy array that Jupyter shows as a picture.
-fn to_array<'py>(py: Python<'py>, rgb: Rgb) -> PyResult<Bound<'py, PyAny>> {
+fn to_array<'py>(py: Python<'py>, rgb: RgbFrame) -> PyResult<Bound<'py, PyAny>> {
     let shape = [rgb.height, rgb.width, 3];
     let array: Bound<'py, PyArray3<u8>> = PyArray1::from_vec(py, rgb.pixels).reshape(shape)?;
     let frame = py.import("player3.frame")?.getattr("Frame")?;

@@ -7,7 +7,12 @@ use image::{ImageFormat, Rgb, RgbImage};
 use pyo3::PyResult;
 use pyo3::exceptions::PyValueError;
 
-use crate::camera::Rgb as RgbFrame;
+/// A camera frame decoded to RGB bytes, row by row from the top.
+pub struct RgbFrame {
+    pub width: usize,
+    pub height: usize,
+    pub pixels: Vec<u8>,
+}
 
 /// Side of a scan picture, pixels.
 const SCAN_SIZE: u32 = 320;

@@ -16,7 +16,8 @@ use player_proto::interfaces::blobfinder::BlobfinderData;
 
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::LastTaken;
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use layout::blob_boxes;
 
 /// The canvas's backdrop, and the width of a blob's outline.

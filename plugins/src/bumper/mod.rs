@@ -12,7 +12,8 @@ use player_proto::interfaces::bumper::{Bumper, BumperData, BumperDefine, BumperG
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::{NodeId, Object3D, Rgba, Scene};
 use segments::bumper_polyline;
 

@@ -14,7 +14,8 @@ pub mod window;
 use filtered::FrameFilter;
 use frames::{CameraFrames, Offered};
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use player_proto::interfaces::camera::Camera;
 use window::{CameraWindow, Picture};
 

@@ -14,7 +14,8 @@ use player_proto::interfaces::fiducial::{Fiducial, FiducialData, FiducialGeometr
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::pose::transform_of;
 use framework::scene::{Aabb, NodeId, Object3D, Rgba};
 

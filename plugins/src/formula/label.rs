@@ -11,7 +11,8 @@
 //! text).
 
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::plugin::{AnchorKey, Metadata, Plugin, PluginContext};
+use framework::plugin::{AnchorKey, Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::{ImageQuad, NodeId, Object3D, Rgba, Sampling};
 use glam::{Affine3A, Vec2, Vec3};
 

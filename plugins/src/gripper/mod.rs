@@ -15,7 +15,8 @@ use player_proto::interfaces::gripper::{Gripper, GripperData, GripperGeometry, G
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Metadata, Plugin, PluginContext, Service};
+use framework::plugin::{Plugin, PluginContext, Service};
+use framework::registry::Metadata;
 use framework::scene::pose::transform_of;
 use framework::scene::{NodeId, Object3D, Rgba, Scene};
 use paddles::{Grip, paddles};

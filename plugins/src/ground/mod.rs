@@ -15,7 +15,8 @@ pub use floorplan::{Placement, walls_from_bitmap};
 use glam::Vec3;
 
 use framework::config::{ConfigValueError, Param, PluginConfig};
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::polygon::{parse_corners, prism};
 use framework::scene::{NodeId, Object3D, Rgba, SceneLighting};
 

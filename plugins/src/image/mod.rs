@@ -13,7 +13,8 @@ mod load;
 use glam::{Affine3A, Vec2, Vec3};
 
 use framework::config::{ConfigValueError, Param, PluginConfig};
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::filter_config::read_filter_chain;
 use framework::scene::{ImageQuad, NodeId, Object3D, Rgba, Sampling};
 

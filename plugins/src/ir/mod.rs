@@ -15,7 +15,8 @@ use crate::sonar::ring::ConeRing;
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::{NodeId, Object3D, Rgba};
 
 /// An infrared beam's look where the composition does not say.

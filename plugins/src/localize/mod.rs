@@ -22,7 +22,8 @@ use player_proto::interfaces::localize::{Localize, LocalizeData, LocalizeParticl
 
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
-use framework::plugin::{Handled, InputEvent, Metadata, Plugin, PluginContext, Service};
+use framework::plugin::{Handled, InputEvent, Plugin, PluginContext, Service};
+use framework::registry::Metadata;
 use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 use pose_drag::{DragStep, PoseDrag};
 use set_pose::{HandPlacedSpread, set_pose_request};

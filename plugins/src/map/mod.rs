@@ -22,7 +22,8 @@ pub mod grid;
 use glam::{Affine3A, Vec2, Vec3};
 
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::plugin::{Metadata, Plugin, PluginContext, Service};
+use framework::plugin::{Plugin, PluginContext, Service};
+use framework::registry::Metadata;
 use framework::scene::filter_config::read_filter_chain;
 use framework::scene::pose::transform_of_2d;
 use framework::scene::{FilterChain, ImageQuad, Kernel, NodeId, Object3D, Sampling, Scene};

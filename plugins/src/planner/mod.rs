@@ -26,7 +26,8 @@ use player_proto::interfaces::planner::{
 use crate::localize::pose_drag::{DragStep, PoseDrag};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
-use framework::plugin::{Handled, InputEvent, Metadata, Plugin, PluginContext, Service};
+use framework::plugin::{Handled, InputEvent, Plugin, PluginContext, Service};
+use framework::registry::Metadata;
 use framework::scene::{Aabb, NodeId, Object3D, Rgba, Scene};
 use plan::PlanWatch;
 

@@ -15,7 +15,8 @@ use player_proto::interfaces::pointcloud3d::PointCloud3dData;
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::LastTaken;
 use framework::parent_link::ParentLink;
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::{NodeId, Object3D, Rgba, Scene};
 use ramp::HeightRange;
 

@@ -16,7 +16,8 @@ use player_proto::interfaces::power::PowerData;
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::LastTaken;
 use framework::parent_link::ParentLink;
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::{NodeId, Object3D, Rgba, Scene};
 
 pub use charge::{Charge, Level};

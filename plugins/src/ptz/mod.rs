@@ -12,7 +12,8 @@ use player_proto::interfaces::ptz::{Ptz, PtzData};
 
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::LastTaken;
-use framework::plugin::{Metadata, Plugin, PluginContext, Service};
+use framework::plugin::{Plugin, PluginContext, Service};
+use framework::registry::Metadata;
 use target::{Aim, Limits};
 
 const CENTRE: &str = "Centre";

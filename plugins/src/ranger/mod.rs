@@ -26,7 +26,8 @@ use crate::sonar::cones::{ConeStyle, Transducer};
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, DeviceAccess, LastTaken, RequestError, Stamped};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::pose::transform_of;
 use framework::scene::{NodeId, Object3D, Scene};
 

@@ -16,7 +16,8 @@ use cone_params::cone_style_from_config;
 use framework::config::{ConfigValueError, PluginConfig};
 use framework::device::{Awaited, LastTaken};
 use framework::parent_link::ParentLink;
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::{NodeId, Object3D};
 use ring::ConeRing;
 

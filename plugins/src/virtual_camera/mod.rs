@@ -21,7 +21,8 @@ pub mod serve;
 use std::sync::Arc;
 
 use framework::config::{ConfigValueError, PluginConfig};
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
+use framework::registry::Metadata;
 use framework::scene::{NodeId, Object3D, Pixels, Rgba, ViewOutput, VirtualView};
 use glam::{Affine3A, EulerRot, Quat, Vec3};
 use image::RgbaImage;

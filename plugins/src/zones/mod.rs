@@ -13,8 +13,9 @@ use std::collections::{HashSet, VecDeque};
 use glam::{Vec2, Vec3};
 
 use framework::config::{ConfigValueError, Param, PluginConfig};
-use framework::plugin::{Metadata, Plugin, PluginContext};
+use framework::plugin::{Plugin, PluginContext};
 use framework::query::{Query, Reply};
+use framework::registry::Metadata;
 use framework::scene::{NodeId, Object3D, Rgba, Scene};
 
 use framework::scene::polygon::{contains, parse_corners, triangulate};

@@ -29,7 +29,8 @@ use std::time::Instant;
 use eframe::egui::{self, Ui};
 use framework::config::DeviceRef;
 use framework::device::DeviceAccess;
-use framework::plugin::{Anchors, Metadata, Plugin, PluginContext, PluginRegistry};
+use framework::plugin::{Anchors, Plugin, PluginContext};
+use framework::registry::{Metadata, PluginRegistry};
 use framework::scene::Scene;
 
 use super::view3d::{TargetDrag, View3d};

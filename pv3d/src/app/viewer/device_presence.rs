@@ -5,7 +5,7 @@
 
 use eframe::egui;
 use framework::config::DeviceRef;
-use framework::plugin::Metadata;
+use framework::registry::Metadata;
 
 use super::Viewer;
 use crate::composition::{FoundDevice, PluginInstance, write_back};

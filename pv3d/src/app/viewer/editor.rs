@@ -5,7 +5,7 @@
 //! writes it back; a disabled plugin is saved with `enabled="false"` and loaded disabled.
 
 use framework::device::DeviceAccess;
-use framework::plugin::Metadata;
+use framework::registry::Metadata;
 use std::sync::Arc;
 
 use super::{Slot, Viewer};

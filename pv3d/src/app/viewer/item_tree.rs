@@ -5,7 +5,7 @@
 use std::time::Instant;
 
 use eframe::egui::{self, Ui};
-use framework::plugin::Metadata;
+use framework::registry::Metadata;
 
 use super::Viewer;
 use super::device_presence::{GONE, GONE_COLOR};
