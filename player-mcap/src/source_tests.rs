@@ -3,7 +3,7 @@
 
 use player_proto::recording::{PrecFile, Record, RecordSource, RecordStream, RecordingIndex};
 
-use crate::tests::{mcap_of, prec, real_records};
+use crate::tests::{foreign_mcap, mcap_of, prec, real_records};
 use crate::{McapFile, open_recording};
 
 fn all(mut stream: impl RecordStream) -> Vec<Record> {
@@ -97,22 +97,7 @@ fn a_file_cut_short_is_read_to_the_cut_and_seeks_without_an_index() {
 fn a_foreign_mcap_file_is_refused_when_opened() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("foreign.mcap");
-    let mut writer = mcap::Writer::new(std::io::BufWriter::new(
-        std::fs::File::create(&path).unwrap(),
-    ))
-    .unwrap();
-    let channel = writer
-        .add_channel(0, "/chatter", "json", &Default::default())
-        .unwrap();
-    let header = mcap::records::MessageHeader {
-        channel_id: channel,
-        sequence: 0,
-        log_time: 1,
-        publish_time: 1,
-    };
-    writer.write_to_known_channel(&header, b"{}").unwrap();
-    writer.finish().unwrap();
-    drop(writer);
+    std::fs::write(&path, foreign_mcap()).unwrap();
     let error = McapFile::open(&path).err().expect("refused").to_string();
     assert!(error.contains("not a Player recording"), "{error}");
 }

@@ -131,8 +131,8 @@ fn every_cut_keeps_the_whole_chunks_before_it_and_says_where() {
     assert!(kept_some, "no cut kept anything");
 }
 
-#[test]
-fn a_file_without_player_channels_is_named_as_such() {
+/// An MCAP file of another program's: one JSON message on `/chatter`.
+pub(crate) fn foreign_mcap() -> Vec<u8> {
     let mut writer = mcap::Writer::new(Cursor::new(Vec::new())).unwrap();
     let channel = writer
         .add_channel(0, "/chatter", "json", &Default::default())
@@ -145,8 +145,12 @@ fn a_file_without_player_channels_is_named_as_such() {
     };
     writer.write_to_known_channel(&header, b"{}").unwrap();
     writer.finish().unwrap();
-    let bytes = writer.into_inner().into_inner();
-    let (got, stopped) = read_mcap(&bytes);
+    writer.into_inner().into_inner()
+}
+
+#[test]
+fn a_file_without_player_channels_is_named_as_such() {
+    let (got, stopped) = read_mcap(&foreign_mcap());
     assert!(got.is_empty());
     let error = stopped.expect("refused").to_string();
     assert!(error.contains("not a Player recording"), "{error}");
