@@ -58,7 +58,11 @@ fn qos(topic: &str) -> String {
         .iter()
         .any(|kind| topic.ends_with(&format!("/{kind}")) || topic.contains(&format!("/{kind}_")))
         || topic.contains("/image_raw");
-    let latched = topic == "/tf_static" || topic == "/map" || topic.starts_with("/map_");
+    let latched = topic == "/tf_static"
+        || topic == "/map"
+        || topic.starts_with("/map_")
+        || topic.ends_with("/plan")
+        || topic.contains("/plan_");
     let forever = "\n    sec: 2147483647\n    nsec: 4294967295";
     format!(
         "- history: 1\n  depth: 10\n  reliability: {}\n  durability: {}\n  deadline:{forever}\n  lifespan:{forever}\n  liveliness: 1\n  liveliness_lease_duration:{forever}\n  avoid_ros_namespace_conventions: false",

@@ -10,9 +10,9 @@ player-sim and the bridge itself and prints what it saw as one line of JSON.
         commands stop, sends a NaN and an absurd speed;
     unshare -n python ros2_peer.py nav PLAYER_SIM PLAYER_ROS2 navigation.world
         comes late for the map, sends a goal to the planner and a start to the localizer;
-    unshare -n python ros2_peer.py relay - PLAYER_RELAY simple.world
-        the same robot through `player-relay --world simple.world --ros2` instead: read its
-        scans and odometry, drive it, and see its odometry say it moved.
+
+The relay's front is ros2_relay.py; faults (a teleop killed, a robot gone and back, a quiet
+domain, ROS 2's graph) are ros2_faults.py.
 """
 
 import json
@@ -156,6 +156,12 @@ class PoseStamped(IdlStruct, typename="geometry_msgs::msg::dds_::PoseStamped_"):
 
 
 @dataclass
+class Path(IdlStruct, typename="nav_msgs::msg::dds_::Path_"):
+    header: Header
+    poses: sequence[PoseStamped]
+
+
+@dataclass
 class PoseWithCovarianceStamped(
     IdlStruct, typename="geometry_msgs::msg::dds_::PoseWithCovarianceStamped_"
 ):
@@ -226,8 +232,6 @@ RELIABLE = Qos(Policy.Reliability.Reliable(duration(seconds=1)), Policy.History.
 
 def main(mode, player_sim, bridge, world):
     loopback_with_multicast()
-    if mode == "relay":
-        return through_the_relay(bridge, world)
     port = free_port()
     sim = subprocess.Popen(
         [player_sim, world, "--port-base", str(port)], stderr=subprocess.DEVNULL
@@ -253,40 +257,6 @@ def newest(reader):
     return samples[-1] if samples else None
 
 
-def through_the_relay(relay, world):
-    log = open("/tmp/player-relay-peer.log", "w")
-    process = subprocess.Popen([relay, "--world", world, "--ros2"], stderr=log)
-    seen = {}
-    try:
-        participant = DomainParticipant(0)
-        scans = DataReader(
-            participant,
-            Topic(participant, "rt/r0/scan", LaserScan),
-            qos=Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(5)),
-        )
-        odometry = DataReader(participant, Topic(participant, "rt/r0/odom", Odometry), qos=RELIABLE)
-        cmd_vel = DataWriter(participant, Topic(participant, "rt/r0/cmd_vel", Twist), qos=RELIABLE)
-        scan = wait_for("a scan on rt/r0/scan", lambda: newest(scans))
-        seen["beams"] = len(scan.ranges)
-        start = wait_for("odometry on rt/r0/odom", lambda: newest(odometry)).pose.pose.position
-        wait_for(
-            "the relay's cmd_vel reader",
-            lambda: True if cmd_vel.get_publication_matched_status().current_count else None,
-        )
-        for _ in range(20):
-            cmd_vel.write(Twist(linear=Vector3(x=0.5)))
-            time.sleep(0.1)
-        time.sleep(0.3)
-        end = wait_for("odometry after driving", lambda: newest(odometry)).pose.pose.position
-        seen["moved"] = math.hypot(end.x - start.x, end.y - start.y)
-    finally:
-        process.terminate()
-        process.wait(10)
-        log.close()
-    seen["relay_log"] = open("/tmp/player-relay-peer.log").read()[-3000:]
-    print(json.dumps(seen))
-
-
 def navigate(port, seen):
     nav = wait_for("player-sim", lambda: try_connect(port))
     participant = DomainParticipant(0)
@@ -310,6 +280,7 @@ def navigate(port, seen):
     )
     wait_for("the bridge's goal reader", lambda: True if goals.get_publication_matched_status().current_count else None)
     wait_for("the bridge's start reader", lambda: True if starts.get_publication_matched_status().current_count else None)
+    plans = DataReader(participant, Topic(participant, "rt/nav/plan", Path), qos=LATCHED)
     here = Header(frame_id="map")
     goals.write(PoseStamped(here, Pose(Point(3.5, 4.5, 0.0), yaw_quaternion(1.57))))
     planner = nav.planner(0)
@@ -320,6 +291,12 @@ def navigate(port, seen):
         ),
     )
     seen["goal"] = list(state.goal)
+    path = wait_for(
+        "a path to the goal on rt/nav/plan",
+        lambda: next((p for p in plans.take(10) if len(p.poses) > 1), None),
+    )
+    last = path.poses[-1].pose.position
+    seen["plan"] = {"frame": path.header.frame_id, "poses": len(path.poses), "last": [last.x, last.y]}
     covariance = [0.0] * 36
     covariance[0] = covariance[7] = 0.1
     covariance[35] = 0.05

@@ -3,9 +3,11 @@ from PyPI) in a network namespace of the test's own, loopback only, reads a simu
 scans and odometry under ROS 2's names and drives it through cmd_vel — the robot moves, as
 Player's own position2d says; it stops when the commands stop; a NaN or absurd command never
 reaches it; garbage datagrams to the DDS ports change nothing; the laser's place on the base
-is on /tf_static. On navigation.world, a late
-subscriber gets the map, a goal_pose reaches Player's planner and an initialpose its
-localizer."""
+is on /tf_static. On navigation.world, a late subscriber gets the map, a goal_pose reaches
+Player's planner (and its path comes back on /nav/plan) and an initialpose its localizer.
+Through the relay: the simulation's /clock, TwistStamped, a ranger's cloud. Faults: a quiet
+domain, a teleop killed mid-stream, a robot's server killed and restarted; ROS 2's graph
+(ros_discovery_info, what `ros2 node list` reads) throughout."""
 
 import json
 import os
@@ -27,10 +29,6 @@ def player_ros2() -> pathlib.Path:
     return ROOT / "target" / "debug" / "player-ros2"
 
 
-@pytest.mark.skipif(
-    os.geteuid() != 0 or shutil.which("unshare") is None,
-    reason="DDS discovers by multicast: this test needs a network namespace of its own (root)",
-)
 def peer(mode, world, player_sim, player_ros2):
     """What the Cyclone DDS peer saw, in a network namespace of its own."""
     done = subprocess.run(
@@ -87,6 +85,9 @@ def test_a_ros2_peer_gets_the_map_late_and_sends_a_goal_and_a_start(player_sim, 
     assert grid["values"] == [0, 100] and grid["corner"] == 100, "free and walls, as ROS counts"
     assert grid["frame"] == "map"
     assert seen["goal"][:2] == pytest.approx([3.5, 4.5]), "rviz2's goal reached Player's planner"
+    # The planner's path to it, asked of the planner once its plan changed.
+    assert seen["plan"]["frame"] == "map" and seen["plan"]["poses"] > 1
+    assert seen["plan"]["last"] == pytest.approx([3.5, 4.5], abs=0.3)
     assert seen["estimate"][:2] == pytest.approx([-6.0, -4.0], abs=0.3)
 
 
@@ -98,9 +99,57 @@ def player_relay() -> pathlib.Path:
     return ROOT / "target" / "debug" / "player-relay"
 
 
+def in_a_namespace(script, *args):
+    """What a peer script saw, run in a network namespace of its own."""
+    done = subprocess.run(
+        ["unshare", "-n", sys.executable, ROOT / "tests" / "python" / script, *args],
+        capture_output=True,
+        text=True,
+        timeout=180,
+    )
+    assert done.returncode == 0, done.stderr[-3000:] + done.stdout[-2000:]
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
 @needs_a_namespace
-def test_the_relay_puts_its_robots_in_ros2_by_their_world_names(player_relay):
-    seen = peer("relay", "simple.world", "-", player_relay)
+def test_the_relay_puts_its_robots_in_ros2_by_their_world_names_on_the_simulated_clock(
+    player_relay,
+):
+    seen = in_a_namespace("ros2_relay.py", player_relay, ROOT / "stage-worlds" / "simple.world")
     assert seen["beams"] == 181
+    # Driven through Jazzy's TwistStamped (--ros2-twist-stamped): two seconds at 0.5 m/s.
     assert 0.7 < seen["moved"] < 1.4, seen
     assert "ROS 2 node /r0/player" in seen["relay_log"], seen["relay_log"]
+    # /clock is the simulation's time, and a scan is stamped by it: the tick after a scan is
+    # no earlier than the scan and at most a few steps later (100 ms each).
+    assert 0 < seen["scan_stamp"] <= seen["clock"] < seen["scan_stamp"] + 0.5, seen
+    assert 0.5 < seen["clock_rate"] < 1.5, "simulated seconds per second, at Stage's pace"
+    # The laser ranger's 181 echoes as a cloud on the base.
+    assert seen["cloud"] == {"width": 181, "frame": "r0/base_link"}
+    # What `ros2 node list` reads: the robot's node and the clock's.
+    assert {"/r0/player", "/player_relay"} <= set(seen["nodes"]), seen["nodes"]
+    assert "ERROR" not in seen["relay_log"] and "WARN" not in seen["relay_log"], seen["relay_log"]
+
+
+@needs_a_namespace
+def test_faults_a_quiet_domain_a_dead_teleop_a_robot_gone_and_back(player_sim, player_ros2):
+    seen = in_a_namespace(
+        "ros2_faults.py", player_sim, player_ros2, ROOT / "stage-worlds" / "simple.world"
+    )
+    # Alone in the domain for three seconds: a line per robot, nothing else.
+    quiet = seen["quiet_log"].splitlines()
+    assert len(quiet) == 2 and all(" INFO " in line for line in quiet), quiet
+    assert seen["nodes"] == ["/a/player", "/b/player"], "ros_discovery_info, as ros2 node list"
+    # The teleop killed with SIGKILL: a stopped within the half-second deadline (plus one
+    # command's period and a sample), stays stopped, and its scans keep coming.
+    assert seen["stopped_after"] < 1.0 and seen["still_after_2s"] < 0.01, seen
+    assert seen["a_scans_after_teleop"] >= 1
+    # b's server killed: its topics and node gone from discovery, a's still there.
+    assert seen["nodes_without_b"] == ["/a/player"]
+    assert seen["a_matched_without_b"] == 1 and seen["a_scans_without_b"] >= 1
+    # b's server back on its port: the bridge reconnects and says what happened.
+    assert seen["b_back"] >= 1 and seen["nodes_with_b_back"] == ["/a/player", "/b/player"]
+    log = seen["bridge_log"]
+    assert "b: lost its Player server (the server closed the connection)" in log, log
+    assert "b: back in ROS 2 as /b/player" in log, log
+    assert "a: no cmd_vel for half a second: stopping" in log, log

@@ -1,6 +1,6 @@
 //! A robot node's publishers: one per topic its data goes to, made when the first message
 //! for it comes, each with the QoS ROS gives its kind of data — sensor data best effort, the
-//! rest reliable, what stays for latecomers (maps, fixed transforms) transient local.
+//! rest reliable, what stays for latecomers (maps, fixed transforms, plans) transient local.
 
 use std::collections::HashMap;
 
@@ -144,7 +144,8 @@ impl Publishers {
             RosOut::PoseWithCovarianceStamped(m) => {
                 self.poses.publish(node, topic, RELIABLE, m, who)
             }
-            RosOut::Path(m) => self.paths.publish(node, topic, RELIABLE, m, who),
+            // A plan stays for rviz2 opened later (a planner's path comes once per plan).
+            RosOut::Path(m) => self.paths.publish(node, topic, LATCHED, m, who),
             RosOut::BatteryState(m) => self.batteries.publish(node, topic, RELIABLE, m, who),
             RosOut::Image(m) => self.images.publish(node, topic, SENSOR, m, who),
             RosOut::CompressedImage(m) => self.jpegs.publish(node, topic, SENSOR, m, who),

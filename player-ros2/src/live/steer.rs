@@ -9,7 +9,6 @@ use std::time::Instant;
 
 use super::RobotNode;
 use super::commands::{Deadline, Refused, goal, initial_pose, velocity};
-use crate::convert::plan;
 use crate::msgs::{PoseStamped, PoseWithCovarianceStamped, Time, Twist};
 use crate::out::Converted;
 use player_proto::RobotId;
@@ -18,6 +17,9 @@ use player_proto::interfaces::common::Pose2d;
 use player_proto::interfaces::localize::{Localize, LocalizeSetPose};
 use player_proto::interfaces::planner::{Planner, PlannerCmd};
 use player_proto::wire::Interface;
+
+/// How often a followed plan is asked for again.
+pub const PLAN_AGAIN: std::time::Duration = std::time::Duration::from_secs(2);
 
 /// What ROS 2 told a robot's node since the last look.
 #[derive(Debug, Default)]
@@ -91,8 +93,8 @@ pub struct Steering {
     deadline: Deadline,
     /// Kinds of refused command already said.
     refused: HashSet<&'static str>,
-    /// The planner's (goal, number of way-points) when its path was last asked for.
-    planned: Option<(Pose2d, u32)>,
+    /// The planner's (goal, number of way-points) when its path was last asked for, and when.
+    planned: Option<((Pose2d, u32), Instant)>,
 }
 
 impl Steering {
@@ -137,20 +139,25 @@ impl Steering {
     }
 
     /// The planner's path as `/ns/plan` when its plan changed (a new goal, another number of
-    /// way-points) since the last one asked for: Player's planner says only how many
-    /// way-points it has; the path is the reply to a request.
+    /// way-points) since the last one asked for, and again every [`PLAN_AGAIN`] while it is
+    /// followed, as ROS's planners publish theirs as they go: Player's planner says only how
+    /// many way-points it has; the path is the reply to a request.
     pub fn plan(&mut self, ns: &str, client: &Client) -> Option<Converted> {
         let addr = client.addr(Interface::PLANNER, 0);
         let (state, stamped) = client.latest_kind(addr, Planner::DATA_STATE)?;
-        let now = (state.goal, state.waypoints_count);
-        if !state.is_valid() || state.waypoints_count == 0 || self.planned == Some(now) {
+        let plan = (state.goal, state.waypoints_count);
+        let now = Instant::now();
+        let asked_lately = self
+            .planned
+            .is_some_and(|(p, at)| p == plan && (state.is_done() || now - at < PLAN_AGAIN));
+        if !state.is_valid() || state.waypoints_count == 0 || asked_lately {
             return None;
         }
-        self.planned = Some(now);
+        self.planned = Some((plan, now));
         match client.fetch(addr, Planner::REQ_GET_WAYPOINTS) {
             Ok(waypoints) => {
                 let stamp = Time::from_seconds(stamped.message.header.timestamp);
-                Some(plan(ns, 0, stamp, &waypoints))
+                Some(crate::convert::plan(ns, 0, stamp, &waypoints))
             }
             Err(e) => {
                 tracing::warn!("{}: no way-points from its planner: {e}", self.robot);

@@ -126,7 +126,11 @@ fn parse_robot(text: &str) -> Result<(RobotId, Option<u16>), String> {
 
 fn main() -> ExitCode {
     // RustDDS (--ros2) warns of every sample a peer's unreachable locator did not take: not news.
-    program_edge::logging::init("info,rustdds=error,ros2_client=error");
+    // Its discovery calls /clock inconsistent once our Clock writer is announced: every
+    // ros2-client node reads /clock under builtin_interfaces/Time's name.
+    program_edge::logging::init(
+        "info,rustdds=error,rustdds::discovery::discovery_db=off,ros2_client=error",
+    );
     program_edge::exit::exit_code("player-relay", run(Cli::parse()))
 }
 
