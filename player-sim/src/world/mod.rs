@@ -8,6 +8,7 @@ mod battery;
 mod bitmap;
 mod blobfinder;
 mod blocks;
+mod box_children;
 mod cell_floor;
 mod colors;
 mod controller;
@@ -47,10 +48,7 @@ pub use velocity_bounds::VelocityBounds;
 pub use wall_rects::WallRect;
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
-use properties::{
-    READ, color_of, err, fiducial_of, name_of, number, opt_number, origin_of, pose_of,
-    ranger_return_of, size_of,
-};
+use properties::{READ, err, name_of, number, opt_number};
 
 /// Stage's drive models.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -381,20 +379,8 @@ impl World {
                 {
                     self.ignore("boundary on a model that is not a floorplan", &p.pos);
                 }
-                let size = size_of(model, [1.0, 1.0, 1.0])?;
-                let obstacle = BoxObstacle {
-                    name: name_of(model, &format!("box{}", self.obstacles.len())),
-                    pose: pose_of(model)?,
-                    size,
-                    color: color_of(model)?,
-                    fiducial_id: fiducial_of(model)?,
-                    ranger_return: ranger_return_of(model)?,
-                    origin: origin_of(model)?,
-                    shape: blocks::model_blocks(model, [size[0], size[1]])?,
-                    shape_slices: shape_slices::shape_slices(model, size)?,
-                    gripper_return: opt_number(model, "gripper_return")?.is_some_and(|v| v != 0.0),
-                };
-                self.obstacles.push(obstacle);
+                let name = name_of(model, &format!("box{}", self.obstacles.len()));
+                self.box_and_children(model, Pose::default(), 0.0, name, 1)?;
             }
             other => self.ignore(&format!("a {other} outside any robot"), &model.pos),
         }

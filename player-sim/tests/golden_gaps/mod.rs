@@ -74,7 +74,8 @@ const GAPS: &[(&str, Floor, &str)] = &[
             laser_off_half_m: 0.14,
             sonar_within_5cm: 90.8,
         },
-        "the models on its charging stations and robots (children of boxes are not read)",
+        "its stations' posts and plates are read now: 98.70 % / 0 % / sonar 98.44 %, measured \
+         with the ray-casting work not committed yet; the floor stays until that is in",
     ),
     (
         "mbicp",
