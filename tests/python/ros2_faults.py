@@ -1,7 +1,9 @@
 """Faults seen from a real ROS 2 peer, for test_ros2_live.py: Eclipse Cyclone DDS in a network
-namespace of its own (loopback only), two simulated robots a and b through player-ros2.
+namespace of its own (loopback only), two simulated robots a and b through player-ros2 or
+through player-relay's ROS 2 front.
 
-    unshare -n python ros2_faults.py PLAYER_SIM PLAYER_ROS2 simple.world
+    unshare -n python ros2_faults.py bridge PLAYER_SIM PLAYER_ROS2 simple.world
+    unshare -n python ros2_faults.py relay PLAYER_SIM PLAYER_RELAY simple.world
 
 1. a domain with no peer: the bridge runs three seconds alone and its log stays quiet;
 2. ROS 2's graph: ros_discovery_info (rmw_dds_common's ParticipantEntitiesInfo, what
@@ -119,7 +121,7 @@ def moving(robot, seconds=0.3):
     return math.hypot(after[0] - before[0], after[1] - before[1]) / seconds
 
 
-def main(player_sim, bridge, world):
+def main(kind, player_sim, bridge, world):
     loopback_with_multicast()
     port_a, port_b = free_port(), free_port()
     sims = {"a": start_sim(player_sim, world, port_a), "b": start_sim(player_sim, world, port_b)}
@@ -127,8 +129,13 @@ def main(player_sim, bridge, world):
     wait_for("b's player-sim", lambda: try_connect(port_b))
     log_path = "/tmp/player-ros2-faults.log"
     log = open(log_path, "w")
+    command = {
+        "bridge": [bridge, f"127.0.0.1:{port_a}=a", f"127.0.0.1:{port_b}=b"],
+        # Observers on free ports: only ROS 2 matters here.
+        "relay": [bridge, f"127.0.0.1:{port_a}=0=a", f"127.0.0.1:{port_b}=0=b", "--ros2"],
+    }[kind]
     ros = subprocess.Popen(
-        [bridge, f"127.0.0.1:{port_a}=a", f"127.0.0.1:{port_b}=b"],
+        command,
         stderr=log,
         env={**os.environ, "NO_COLOR": "1"},
     )
@@ -228,4 +235,4 @@ if __name__ == "__main__":
     if sys.argv[1] == "teleop":
         teleop(sys.argv[2])
     else:
-        main(*sys.argv[1:4])
+        main(*sys.argv[1:5])

@@ -132,13 +132,19 @@ def test_the_relay_puts_its_robots_in_ros2_by_their_world_names_on_the_simulated
 
 
 @needs_a_namespace
-def test_faults_a_quiet_domain_a_dead_teleop_a_robot_gone_and_back(player_sim, player_ros2):
+@pytest.mark.parametrize("kind", ["bridge", "relay"])
+def test_faults_a_quiet_domain_a_dead_teleop_a_robot_gone_and_back(
+    kind, player_sim, player_ros2, player_relay
+):
+    program = {"bridge": player_ros2, "relay": player_relay}[kind]
     seen = in_a_namespace(
-        "ros2_faults.py", player_sim, player_ros2, ROOT / "stage-worlds" / "simple.world"
+        "ros2_faults.py", kind, player_sim, program, ROOT / "stage-worlds" / "simple.world"
     )
-    # Alone in the domain for three seconds: a line per robot, nothing else.
+    # Alone in the domain for three seconds: a line per robot (the relay: two, its ROS 2 node
+    # and its observers' port, after the domain it joined), nothing else.
     quiet = seen["quiet_log"].splitlines()
-    assert len(quiet) == 2 and all(" INFO " in line for line in quiet), quiet
+    lines = {"bridge": 2, "relay": 5}[kind]
+    assert len(quiet) == lines and not any("WARN" in l or "ERROR" in l for l in quiet), quiet
     assert seen["nodes"] == ["/a/player", "/b/player"], "ros_discovery_info, as ros2 node list"
     # The teleop killed with SIGKILL: a stopped within the half-second deadline (plus one
     # command's period and a sample), stays stopped, and its scans keep coming.

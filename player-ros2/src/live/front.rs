@@ -82,19 +82,22 @@ impl Front for Ros2Front {
 
     fn arrived(&self, robot: &RobotId) -> ConnectionTap {
         let slot: Slot = Arc::default();
-        join(&self.ros2, robot, self.commands, self.domain, &slot);
+        join(&self.ros2, robot, self.commands, self.domain, &slot, false);
         lock(&self.nodes).insert(robot.clone(), slot.clone());
         let (robot, clock) = (robot.clone(), self.clock.clone());
         let (ros2, commands, domain) = (self.ros2.clone(), self.commands, self.domain);
         Arc::new(move |_, event| match event {
             TapEvent::Opened(_) => {
                 if lock(&slot).is_none() {
-                    join(&ros2, &robot, commands, domain, &slot);
+                    join(&ros2, &robot, commands, domain, &slot, true);
                 }
             }
             TapEvent::Closed(why) => {
+                // Said as player-ros2 says it; the relay keeps reconnecting.
                 if lock(&slot).take().is_some() {
-                    tracing::info!("{robot}: left ROS 2 until it is back ({why})");
+                    tracing::warn!(
+                        "{robot}: lost its Player server ({why}): out of ROS 2, reconnecting"
+                    );
                 }
             }
             TapEvent::Frame {
@@ -174,14 +177,17 @@ impl Front for Ros2Front {
     }
 }
 
-/// Makes `robot`'s node into `slot`, or says why it could not.
-fn join(ros2: &Ros2, robot: &RobotId, commands: Commands, domain: u16, slot: &Slot) {
+/// Makes `robot`'s node into `slot` (`back`: after it left), or says why it could not.
+fn join(ros2: &Ros2, robot: &RobotId, commands: Commands, domain: u16, slot: &Slot, back: bool) {
     match ros2.robot(robot, commands) {
         Ok(node) => {
-            tracing::info!(
-                "{robot}: ROS 2 node /{}/player on domain {domain}",
-                node.namespace()
-            );
+            match back {
+                true => tracing::info!("{robot}: back in ROS 2 as /{}/player", node.namespace()),
+                false => tracing::info!(
+                    "{robot}: ROS 2 node /{}/player on domain {domain}",
+                    node.namespace()
+                ),
+            }
             *lock(slot) = Some(node);
         }
         Err(e) => tracing::warn!("{robot}: not in ROS 2: {e}"),
