@@ -16,7 +16,8 @@ use player_proto::message::Message;
 use player_proto::recording::{Event, Record};
 
 use crate::cdr::CdrError;
-use crate::convert::{Converted, Converter};
+use crate::convert::Converted;
+use crate::converter::Converter;
 use crate::names::namespace;
 
 /// Why a rosbag2 folder could not be written.

@@ -10,25 +10,18 @@
 //! `/ns/image_raw/compressed`, each with `CameraInfo` on `/ns/camera_info`), sonar and ranger
 //! arrays (a `PointCloud2` each, [`crate::ranges`]), maps (an `OccupancyGrid` on `/map` once
 //! the replies to a map's info and tiles make it whole). What places echoes and assembles maps
-//! comes in replies and data before them, so a robot's conversion is a [`Converter`] that
-//! remembers it.
-
-use std::collections::HashMap;
+//! comes in replies and data before them, so a robot's conversion is a
+//! [`crate::converter::Converter`] that remembers it; [`convert`] is what needs nothing before.
 
 use player_proto::interfaces::camera::Camera;
-use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::laser::{Laser, LaserScan as PlayerScan};
 use player_proto::interfaces::localize::{Localize, covariance_matrix};
-use player_proto::interfaces::map::Map;
 use player_proto::interfaces::planner::{Planner, PlannerWaypoints};
 use player_proto::interfaces::position2d::Position2d;
 use player_proto::interfaces::power::Power;
-use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry};
-use player_proto::interfaces::sonar::Sonar;
 use player_proto::message::{Body, Message};
 use player_proto::wire::{Interface, MsgType};
 
-use crate::map::MapTiles;
 use crate::msgs::{
     BatteryState, Header, LaserScan, Odometry, Path, Pose, PoseStamped, PoseWithCovariance,
     PoseWithCovarianceStamped, TFMessage, Time, Transform, TransformStamped, Twist,
@@ -36,9 +29,8 @@ use crate::msgs::{
 };
 use crate::names::{frame, topic};
 pub use crate::out::{Converted, RosOut};
-use crate::ranges::RangerState;
 
-/// The interfaces whose messages [`Converter::convert`] maps: a message of any other becomes
+/// The interfaces whose messages [`crate::converter::Converter::convert`] maps: a message of any other becomes
 /// nothing, so it need not even be decoded.
 pub const MAPPED: [Interface; 9] = [
     Interface::LASER,
@@ -54,117 +46,6 @@ pub const MAPPED: [Interface; 9] = [
 
 /// The frame localizers and planners speak in.
 pub const MAP_FRAME: &str = "map";
-
-/// The conversion of one robot's messages: its namespace, and what its devices told of
-/// themselves (sonar and ranger geometries, ranger configurations, a map's info and tiles).
-#[derive(Debug, Clone, Default)]
-pub struct Converter {
-    ns: String,
-    sonars: HashMap<u16, Vec<Pose3d>>,
-    rangers: HashMap<u16, RangerState>,
-    maps: HashMap<u16, MapTiles>,
-}
-
-impl Converter {
-    /// The conversion of the robot of namespace `ns`.
-    pub fn new(ns: impl Into<String>) -> Converter {
-        Converter {
-            ns: ns.into(),
-            ..Converter::default()
-        }
-    }
-
-    pub fn namespace(&self) -> &str {
-        &self.ns
-    }
-
-    /// Sonar `index`'s transducers, on the robot.
-    pub fn sonar_geometry(&mut self, index: u16, poses: &[Pose3d]) {
-        self.sonars.insert(index, poses.to_vec());
-    }
-
-    /// Ranger `index`'s place on the robot and its elements' on it.
-    pub fn ranger_geometry(&mut self, index: u16, geometry: &RangerGeometry) {
-        self.rangers.entry(index).or_default().geometry = Some(geometry.clone());
-    }
-
-    /// Ranger `index`'s angles and ranges.
-    pub fn ranger_config(&mut self, index: u16, config: &RangerConfig) {
-        self.rangers.entry(index).or_default().config = Some(*config);
-    }
-
-    /// The ROS 2 messages of `message`: none for what is not mapped, or not yet placeable.
-    pub fn convert(&mut self, message: &Message) -> Vec<Converted> {
-        let header = &message.header;
-        let index = header.addr.index;
-        let stamp = Time::from_seconds(header.timestamp);
-        match (&message.body, header.msg_type) {
-            (Body::Sonar(Sonar::Geometry(g) | Sonar::GeometryData(g)), _) => {
-                self.sonar_geometry(index, &g.poses);
-                Vec::new()
-            }
-            (Body::Sonar(Sonar::Ranges(data)), MsgType::Data) => {
-                let poses = self.sonars.get(&index).map_or(&[][..], |p| &p[..]);
-                let at = Header::new(stamp, frame(&self.ns, "base_link", 0));
-                crate::ranges::sonar(at, poses, &data.ranges)
-                    .map(|cloud| {
-                        let topic = topic(&self.ns, "sonar", index);
-                        vec![Converted::new(topic, stamp, RosOut::PointCloud2(cloud))]
-                    })
-                    .unwrap_or_default()
-            }
-            (Body::Ranger(Ranger::Geometry(g) | Ranger::GeometryData(g)), _) => {
-                self.ranger_geometry(index, g);
-                Vec::new()
-            }
-            (Body::Ranger(Ranger::Config(c) | Ranger::SetConfig(c)), MsgType::Ack) => {
-                self.ranger_config(index, c);
-                Vec::new()
-            }
-            (Body::Ranger(Ranger::RangesStamped(stamped)), MsgType::Data) => {
-                if stamped.have_geom != 0 {
-                    self.ranger_geometry(index, &stamped.geom);
-                }
-                if stamped.have_config != 0 {
-                    self.ranger_config(index, &stamped.config);
-                }
-                self.ranger_ranges(index, stamp, &stamped.data.ranges)
-            }
-            (Body::Ranger(Ranger::Ranges(data)), MsgType::Data) => {
-                self.ranger_ranges(index, stamp, &data.ranges)
-            }
-            (Body::Map(Map::Info(info) | Map::InfoData(info)), _) => {
-                self.maps.entry(index).or_default().info(info);
-                Vec::new()
-            }
-            (Body::Map(Map::Tile(tile)), MsgType::Ack) => {
-                let header = Header::new(stamp, MAP_FRAME);
-                match self.maps.entry(index).or_default().tile(tile, header) {
-                    Some(grid) => vec![Converted::new(
-                        map_topic(index),
-                        stamp,
-                        RosOut::OccupancyGrid(grid),
-                    )],
-                    None => Vec::new(),
-                }
-            }
-            _ => convert(&self.ns, message),
-        }
-    }
-
-    fn ranger_ranges(&self, index: u16, stamp: Time, ranges: &[f64]) -> Vec<Converted> {
-        let state = self.rangers.get(&index).cloned().unwrap_or_default();
-        let at = Header::new(stamp, frame(&self.ns, "base_link", 0));
-        match crate::ranges::ranger(at, &state, ranges) {
-            Some(cloud) => vec![Converted::new(
-                topic(&self.ns, "range", index),
-                stamp,
-                RosOut::PointCloud2(cloud),
-            )],
-            None => Vec::new(),
-        }
-    }
-}
 
 /// Where map `index` goes: `/map`, a second map `/map_1`.
 pub fn map_topic(index: u16) -> String {
@@ -193,7 +74,7 @@ pub fn plan(ns: &str, index: u16, stamp: Time, waypoints: &PlannerWaypoints) -> 
 }
 
 /// The ROS 2 messages of `message`, from robot namespace `ns`, of what needs nothing known
-/// before it (a [`Converter`] adds sonars, rangers and maps).
+/// before it (a [`crate::converter::Converter`] adds sonars, rangers and maps).
 pub fn convert(ns: &str, message: &Message) -> Vec<Converted> {
     let header = &message.header;
     let index = header.addr.index;

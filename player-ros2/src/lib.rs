@@ -3,7 +3,8 @@
 //! * [`msgs`] — ROS 2's message types, with their definitions, as serde structs.
 //! * [`cdr`] — their serialized form (CDR, little-endian, with its encapsulation header).
 //! * [`names`] — a robot's namespace, topics and frames.
-//! * [`convert`] — Player's messages as ROS 2's ([`out`]: what it makes); [`map`] a Player map
+//! * [`convert`] — Player's messages as ROS 2's ([`out`]: what it makes; [`converter`]: one
+//!   robot's, remembering what its devices said of themselves); [`map`] a Player map
 //!   as an occupancy grid; [`camera`] a picture as an image; [`ranges`] sonar and ranger
 //!   arrays as point clouds.
 //! * [`bag`] — a recording as a rosbag2 folder (MCAP with `ros2msg` schemas, `metadata.yaml`).
@@ -13,6 +14,7 @@ pub mod bag;
 pub mod camera;
 pub mod cdr;
 pub mod convert;
+pub mod converter;
 #[cfg(feature = "live")]
 pub mod live;
 pub mod map;

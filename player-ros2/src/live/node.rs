@@ -9,7 +9,7 @@ use ros2_client::{Context, Node, NodeName, NodeOptions};
 use super::LiveError;
 use super::inputs::{Commands, Inputs};
 use super::publishers::{LATCHED, Publishers};
-use crate::convert::Converter;
+use crate::converter::Converter;
 use crate::msgs::{OccupancyGrid, PoseStamped, PoseWithCovarianceStamped, TFMessage, Twist};
 use crate::names::namespace;
 use crate::out::Converted;
