@@ -10,6 +10,12 @@
 //!                                           ROBOT placed, driven at (VX, VA) for about STEPS
 //!                                           steps: its true pose at the simulated times
 //!                                           sampled on the way, one JSON line
+//! golden odom PORT INDEX "vx vy va" STEPS   position2d:INDEX commanded at (vx, vy, va) for about
+//!                                           STEPS steps: the pose it reports at each step,
+//!                                           from one before the command, one JSON line
+//! golden goto PORT ROBOT INDEX "x y a" STEPS
+//!                                           position2d:INDEX sent to (x, y, a) (position
+//!                                           control): ROBOT's true pose sampled, one JSON line
 //! ```
 //! `plan` reads the world with player-sim's own loader; the others are Player clients.
 
@@ -40,6 +46,19 @@ fn main() -> Result<()> {
             robot,
             parse_pose(start)?,
             (vx.parse()?, va.parse()?),
+            steps.parse()?,
+        ),
+        ["odom", port, index, command, steps] => odom(
+            port.parse()?,
+            index.parse()?,
+            parse_pose(command)?,
+            steps.parse()?,
+        ),
+        ["goto", port, robot, index, goal, steps] => goto(
+            port.parse()?,
+            robot,
+            index.parse()?,
+            parse_pose(goal)?,
             steps.parse()?,
         ),
         _ => bail!("usage: see the top of player-sim/examples/golden.rs"),
@@ -283,6 +302,69 @@ fn drive(port: u16, robot: &str, start: Pose, (vx, va): (f64, f64), steps: u32) 
     let line = serde_json::json!({
         "start": [start.x, start.y, start.a],
         "command": [vx, va],
+        "interval": dt,
+        "samples": samples,
+    });
+    println!("{line}");
+    Ok(())
+}
+
+/// The pose position2d:`index` reports at each step while commanded at `command` (x, y, a as
+/// vx, vy, va), from the step before the command: Stage's odometry, step by step.
+fn odom(port: u16, index: u16, command: Pose, steps: u32) -> Result<()> {
+    let client = connect(port)?;
+    let base = client.position2d(index);
+    base.subscribe()?;
+    let state = || base.state().map(|(s, t)| (t.server_time, s.pos));
+    let first = wait(|| state().map(|(t, _)| t))?;
+    let dt = wait(|| state().and_then(|(t, _)| (t > first).then_some(t - first)))?;
+    let mut samples: Vec<[f64; 4]> = Vec::new();
+    let record = |samples: &mut Vec<[f64; 4]>| -> Result<f64> {
+        let last = samples.last().map_or(f64::NEG_INFINITY, |s| s[0]);
+        let (t, p) = wait(|| state().filter(|(t, _)| *t > last))?;
+        samples.push([t, p.px, p.py, p.pa]);
+        Ok(t)
+    };
+    let start = record(&mut samples)?;
+    base.set_velocity(command.x, command.y, command.a);
+    while record(&mut samples)? < start + f64::from(steps + 2) * dt {}
+    base.set_velocity(0.0, 0.0, 0.0);
+    let line = serde_json::json!({
+        "index": index,
+        "command": [command.x, command.y, command.a],
+        "interval": dt,
+        "samples": samples,
+    });
+    println!("{line}");
+    Ok(())
+}
+
+/// ROBOT's true pose sampled while position2d:`index` steers to `goal`.
+fn goto(port: u16, robot: &str, index: u16, goal: Pose, steps: u32) -> Result<()> {
+    let client = connect(port)?;
+    let base = client.position2d(index);
+    base.subscribe()?;
+    let first = wait(|| base.state().map(|(_, s)| s.server_time))?;
+    let dt = wait(|| {
+        let t = base.state()?.1.server_time;
+        (t > first).then_some(t - first)
+    })?;
+    base.go_to(Pose2d::new(goal.x, goal.y, goal.a));
+    let mut samples: Vec<[f64; 4]> = Vec::new();
+    let deadline = Instant::now() + Duration::from_secs(60);
+    while Instant::now() < deadline {
+        let (pose, time) = true_pose3d(&client, robot)?;
+        if samples.last().is_some_and(|s| time <= s[0]) {
+            continue;
+        }
+        samples.push([time, pose[0], pose[1], pose[2]]);
+        if time >= samples[0][0] + f64::from(steps) * dt {
+            break;
+        }
+    }
+    base.set_velocity(0.0, 0.0, 0.0);
+    let line = serde_json::json!({
+        "goal": [goal.x, goal.y, goal.a],
         "interval": dt,
         "samples": samples,
     });

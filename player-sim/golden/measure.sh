@@ -16,6 +16,10 @@
 #      and records every ranger's ranges two steps later.
 #   3. In Stage's simple.world and ours (`drives`), `golden drive` runs fixed drives from a fixed
 #      pose and records the steps the odometry reported motion and the true end pose.
+#   4. In golden/odometry.world (ours; `odometry`), `golden odom` records the pose position2d
+#      reports step by step under fixed commands (localization "odom" with odom_error and
+#      localization_origin, a diff and an omni robot), and `golden goto` the true pose of a
+#      robot steered by a position command.
 # What is kept: golden/stage/<world>.jsonl (a header line, then one line a pose; stock worlds under
 # their names, ours as ours-<name>) and golden/stage/<world>-drives.jsonl. Only these numbers go into the repository, never
 # Stage's worlds, bitmaps or code. Then the tests that compare player-sim with them are run
@@ -126,6 +130,36 @@ EOF
   echo "$name drives: $(($(wc -l <"$OUT/$name-drives.jsonl") - 1))"
 }
 
+# odometry: Stage's reported odometry and its position control, in golden/odometry.world (ours)
+odometry() {
+  local dir=$tmp/w port
+  rm -rf "$dir"; mkdir -p "$dir"; cp "$HERE/odometry.world" "$dir/"
+  port=$(free_port)
+  cat >"$dir/golden.cfg" <<EOF
+driver ( name "stage" provides [ "$port:simulation:0" ] plugin "stageplugin" worldfile "odometry.world" usegui 0 )
+driver ( name "stage" provides [ "$port:position2d:0" ] model "r0" )
+driver ( name "stage" provides [ "$port:position2d:1" ] model "r1" )
+driver ( name "stage" provides [ "$port:position2d:2" ] model "r2" )
+EOF
+  start_player "$dir/golden.cfg" "$port" || return 1
+  {
+    printf '{"world":"odometry"}\n'
+    "$GOLDEN" odom "$port" 0 "0.4 0 0.3" 20
+    "$GOLDEN" odom "$port" 0 "-0.3 0 -0.5" 20
+    "$GOLDEN" odom "$port" 1 "0.2 0.3 0.2" 20
+    "$GOLDEN" odom "$port" 1 "0 -0.4 0" 15
+  } >"$tmp/odometry.jsonl"
+  {
+    printf '{"world":"odometry","robot":"r2"}\n'
+    "$GOLDEN" goto "$port" r2 2 "1.5 -2 1.57" 80
+    "$GOLDEN" goto "$port" r2 2 "-1 -3.5 -2" 80
+  } >"$tmp/goto.jsonl"
+  stop_player
+  mv "$tmp/odometry.jsonl" "$OUT/ours-odometry-odom.jsonl"
+  mv "$tmp/goto.jsonl" "$OUT/ours-odometry-goto.jsonl"
+  echo "odometry: $(($(wc -l <"$OUT/ours-odometry-odom.jsonl") - 1)) drives, $(($(wc -l <"$OUT/ours-odometry-goto.jsonl") - 1)) goals"
+}
+
 all_drives() {
   drives "$STOCK" simple.world r0 "-6.946 -6.947 0.785" simple
   drives "$REPO/stage-worlds" simple.world r0 "-2 0 0" ours-simple
@@ -135,10 +169,12 @@ if [ $# -eq 0 ]; then
   for w in $DEFAULT_STOCK; do measure "$STOCK" "$w.world" "$w" || echo "$w: FAILED"; done
   for w in $DEFAULT_OURS; do measure "$REPO/stage-worlds" "$w.world" "ours-$w" || echo "ours-$w: FAILED"; done
   all_drives
+  odometry
 else
   for w in "$@"; do
     case "$w" in
       drives) all_drives ;;
+      odometry) odometry ;;
       */*) measure "$REPO/$(dirname "$w")" "$(basename "$w")" "ours-$(basename "$w" .world)" ;;
       *) measure "$STOCK" "$w" "$(basename "$w" .world)" ;;
     esac

@@ -310,7 +310,7 @@ impl Simulation {
         match self.robots[i].command {
             Command::Velocity { vx, vy, va } => (vx, vy, va),
             Command::GoTo { target } => {
-                goto_velocity(self.world.robots[i].drive, self.reported_pose(i), target)
+                goto_velocity(self.world.robots[i].drive, self.robots[i].estimate, target)
             }
         }
     }

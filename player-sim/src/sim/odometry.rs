@@ -46,6 +46,8 @@ pub fn integrate(estimate: Pose, (vx, vy, va): (f64, f64, f64), dt: f64, error: 
 
 impl Simulation {
     /// The pose robot `i`'s position2d reports: the true pose with gps, the odometry's with odom.
+    /// (Stage reports a gps robot where it stood before the step's motion, one step behind;
+    /// player-sim reports where it stands.)
     pub fn reported_pose(&self, i: usize) -> Pose {
         match self.world.robots[i].localization.mode {
             Localization::Gps => self.robots[i].pose,
@@ -59,10 +61,13 @@ impl Simulation {
         self.robots[i].estimate = pose;
     }
 
-    /// Advances robot `i`'s odometry by this step's velocity (it drives at this step).
+    /// Advances robot `i`'s estimate by this step, before it moves at `velocity`: odometry
+    /// integrates the velocity; with gps Stage keeps the pose the robot stands at before it
+    /// moves, which its position controller steers from the next step (one step behind).
     pub(super) fn integrate_odometry(&mut self, i: usize, velocity: (f64, f64, f64), dt: f64) {
         let spec = &self.world.robots[i].localization;
-        if spec.mode != Localization::Odom {
+        if spec.mode == Localization::Gps {
+            self.robots[i].estimate = self.robots[i].pose;
             return;
         }
         let error = odometry_error(spec, &self.noise, i);

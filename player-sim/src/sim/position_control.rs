@@ -1,7 +1,8 @@
 //! Position control (Player's `CMD_POS`, Stage's `GoTo`) as Stage 4.3 steers to a goal: the
 //! goal is in the frame the robot reports its pose in (the world with gps, the odometry's
-//! with odom), and each step gives a velocity from the error between the reported pose and
-//! the goal, which the robot's `velocity_bounds` then hold as any command. Stage takes no
+//! with odom), and each step gives a velocity from the error between the robot's estimate as
+//! it stood at the previous step (Stage's controller reads its pose estimate before updating
+//! it) and the goal, which the robot's `velocity_bounds` then hold as any command. Stage takes no
 //! speed from the command: its controller's own limits are 0.4 m/s and 1 rad/s.
 //!
 //! A differential robot turns towards the goal point, drives when it faces it within π/16
