@@ -56,7 +56,9 @@ pub enum Command {
 #[derive(Debug, Clone, PartialEq)]
 pub struct RobotState {
     pub pose: Pose,
-    /// Its odometry's reading (`localization "odom"`; see [`Simulation::reported_pose`]).
+    /// Where its localization puts it: with odom, the odometry's reading (what position2d
+    /// reports); with gps, where it stood before the last step's motion, which Stage's
+    /// position controller steers from (see [`Simulation::reported_pose`]).
     pub estimate: Pose,
     /// Actual velocity over the last step (robot frame).
     pub velocity: (f64, f64, f64),
