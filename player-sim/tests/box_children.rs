@@ -63,3 +63,26 @@ fn a_models_children_stand_on_it_are_sensed_and_stop_robots() {
     assert!(sim.robots[0].stall, "stopped by the station");
     assert!(sim.robots[0].pose.x < 1.8, "{:?}", sim.robots[0].pose);
 }
+
+#[test]
+fn robots_drive_over_a_zone_that_is_no_obstacle() {
+    let dir = tempfile::tempdir().unwrap();
+    // Stage's map.inc zone: on the floor, no obstacle, transparent to rangers.
+    let text = "\
+        define zone model ( size [ 2 2 0.01 ] obstacle_return 0 ranger_return -1 )\n\
+        zone( name \"source\" pose [ 1.5 0 0 0 ] )\n\
+        model( name \"wall\" pose [ 4 0 0 0 ] size [ 0.2 2 0.5 ] )\n\
+        position( name \"r\" size [ 0.4 0.4 0.2 ] )\n";
+    let mut sim = Simulation::new(World::load(&write(dir.path(), "zone.world", text)).unwrap());
+    assert!(!sim.world.obstacles[0].obstacle_return && sim.world.obstacles[1].obstacle_return);
+    sim.robots[0].command = Command::Velocity {
+        vx: 0.5,
+        vy: 0.0,
+        va: 0.0,
+    };
+    run(&mut sim, 10.0);
+    // Across the zone, stopped by the wall behind it (its face at x = 3.9).
+    assert!(sim.robots[0].stall);
+    let x = sim.robots[0].pose.x;
+    assert!(x > 3.6 && x < 3.71, "{x}");
+}

@@ -237,7 +237,7 @@ impl Simulation {
             .obstacles
             .iter()
             .enumerate()
-            .filter(|(k, _)| !self.holds(Some(i), *k))
+            .filter(|(k, o)| o.obstacle_return && !self.holds(Some(i), *k))
             .map(|(_, o)| GroundBox {
                 pose: body_at(o.pose, o.origin),
                 length: o.size[0],

@@ -51,6 +51,7 @@ impl World {
             shape: blocks::model_blocks(model, [size[0], size[1]])?,
             shape_slices: shape_slices::shape_slices(model, standing)?,
             gripper_return: opt_number(model, "gripper_return")?.is_some_and(|v| v != 0.0),
+            obstacle_return: opt_number(model, "obstacle_return")?.is_none_or(|v| v != 0.0),
         });
         let mut models = 0;
         for child in &model.children {

@@ -176,6 +176,9 @@ pub struct BoxObstacle {
     pub shape_slices: Vec<ShapeSlice>,
     /// Stage's `gripper_return`: a gripper can pick it up.
     pub gripper_return: bool,
+    /// Stage's `obstacle_return`: robots bump into it (unless set to 0: a zone marked on the
+    /// floor, which robots drive over).
+    pub obstacle_return: bool,
 }
 
 /// Where the floorplan bitmap lies, so a viewer can draw the same walls.

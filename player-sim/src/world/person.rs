@@ -83,6 +83,7 @@ impl World {
                 shape: Vec::new(),
                 shape_slices: Vec::new(),
                 gripper_return: false,
+                obstacle_return: true,
             });
         }
         self.people.push(PersonSpec {
