@@ -2,8 +2,8 @@
 //! `localization "gps"` (the default, whatever `localization_origin` says), odometry that drifts
 //! by `odom_error` with `localization "odom"`, starting from the start pose in the frame of
 //! `localization_origin`; the drift of a robot without `odom_error` follows the world's seed.
-//! Over the wire, SET_ODOM and RESET_ODOM set the odometry, and a position command steers to a
-//! goal given in the reported frame.
+//! Over the wire, SET_ODOM and RESET_ODOM set the odometry, a position command steers to a goal
+//! given in the reported frame, and a car command's angle is a turn rate, as Stage takes it.
 
 mod support;
 
@@ -11,7 +11,7 @@ use std::time::Duration;
 
 use player_proto::client::{Client, ClientOptions};
 use player_proto::interfaces::common::Pose2d;
-use player_proto::interfaces::position2d::{self, Position2d, Position2dSetOdom};
+use player_proto::interfaces::position2d::{self, Position2d, Position2dCmdCar, Position2dSetOdom};
 use player_proto::message::Body;
 use player_sim::serve::{ServeOptions, serve};
 use player_sim::served::from_cfg;
@@ -225,4 +225,14 @@ fn over_the_wire_odometry_is_set_reset_and_steered_in() {
         (truth.x - 1.0).abs() < 0.05 && (truth.y - 3.0).abs() < 0.05,
         "{truth:?}"
     );
+    // A car command drives as Stage drives a robot that is no car: its angle is the turn rate.
+    let car = Position2dCmdCar {
+        velocity: 0.0,
+        angle: 0.5,
+    };
+    client.command(base.addr(), Position2d::Car(car));
+    wait_for("a turn", Duration::from_secs(5), || {
+        base.state().filter(|(s, _)| s.pos.pa > 0.3)
+    });
+    base.set_velocity(0.0, 0.0, 0.0);
 }

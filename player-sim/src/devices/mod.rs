@@ -341,6 +341,13 @@ impl Device for SimDevice {
                 vy: 0.0,
                 va: 0.0,
             },
+            // Stage takes a car command's steering angle as the turn rate of a robot that is no
+            // car (player-sim simulates every robot as diff or omni).
+            Body::Position2d(Position2d::Car(c)) => Command::Velocity {
+                vx: c.velocity,
+                vy: 0.0,
+                va: c.angle,
+            },
             // Stage steers to the pose with its own speeds; the command's are not read.
             Body::Position2d(Position2d::Position(p)) => Command::GoTo {
                 target: Pose {
