@@ -1,8 +1,9 @@
 //! Many clients in one process, as lightweight async tasks rather than threads: a thousand
 //! threads on two cores would measure the scheduler, not the servers. Each member connects,
 //! says when it is ready, then records the latency of what it receives inside the shared
-//! window until told to stop. [`crate::observers`] are Player clients, [`crate::pages`] web
-//! pages, [`crate::foxglove_clients`] Foxglove clients.
+//! window until told to stop. The crowds built on it (Player observers, web pages, Foxglove
+//! clients: the `observers`, `pages` and `foxglove_clients` modules) know this one; this one
+//! knows none of them.
 
 use std::future::Future;
 use std::time::{Duration, Instant};

@@ -34,6 +34,7 @@ mod relayed_device;
 pub mod robot;
 pub mod subscriptions;
 mod survey;
+mod wakes;
 pub mod world;
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr, TcpListener};

@@ -18,6 +18,7 @@ use player_proto::wire::{DevAddr, Interface};
 use crate::RelayError;
 use crate::downstream::{DownstreamOptions, serve_robot};
 use crate::subscriptions::Subscriptions;
+use crate::wakes::Wakes;
 
 /// Where a robot's downstream stands, with a signal on every change.
 #[derive(Default)]
@@ -68,13 +69,18 @@ impl RelayedRobot {
         // One pending wake-up is enough: the thread looks at everything new when it wakes.
         let (wake, woken) = sync_channel(1);
         let notify = wake.clone();
+        let wakes = Arc::new(Wakes::new(subscriptions.clone()));
+        let waking = wakes.clone();
         let options = ClientOptions {
             notifier: Some(Arc::new(move || {
-                let _ = notify.try_send(());
+                if waking.wake() {
+                    let _ = notify.try_send(());
+                }
             })),
             ..client
         };
         let upstream = Arc::new(Client::spawn(id.host(), id.port(), options)?);
+        wakes.set_client(&upstream);
         subscriptions.set_client(upstream.clone());
         let shared = Arc::new(Shared::default());
         shared.publish(|s| s.port = (listen_port != 0).then_some(listen_port));

@@ -9,6 +9,7 @@
 //! order.
 
 use std::collections::{BTreeSet, HashMap, HashSet};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
 
 use player_front::{Device, Upstream};
@@ -45,6 +46,8 @@ impl State {
 pub struct Subscriptions {
     client: OnceLock<Arc<Client>>,
     state: Mutex<State>,
+    /// Whether a Player observer ever subscribed (read on every message: no lock).
+    observed: AtomicBool,
 }
 
 impl Subscriptions {
@@ -105,8 +108,14 @@ impl Subscriptions {
         }
     }
 
+    /// Whether a Player observer ever subscribed to one of the robot's devices.
+    pub(crate) fn observed(&self) -> bool {
+        self.observed.load(Ordering::Relaxed)
+    }
+
     /// A Player observer subscribed to `device`.
     pub(crate) fn observe(&self, device: Device) {
+        self.observed.store(true, Ordering::Relaxed);
         self.change(device, |state| {
             state.observed.insert(device);
         });

@@ -577,6 +577,7 @@ window.playerWeb = {
   view,
   labels,
   get walls() { return walls; },
+  get rows() { return lastRows; },
   get selected() { return selected; },
   get controller() { return controller; },
   screenOf(robot, index) {

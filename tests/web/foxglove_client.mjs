@@ -15,6 +15,11 @@
 //   node foxglove_client.mjs stall URL COUNT HOLD_MS TIMEOUT_MS
 //     COUNT clients subscribe to every channel, and once each has a message, stop reading
 //     (their socket paused); prints "STALLED", holds them HOLD_MS, then the JSON.
+//   node foxglove_client.mjs watch URL PATTERN SECONDS TIMEOUT_MS
+//     as a person's layout does: subscribes to the channels whose topic matches the regular
+//     expression PATTERN (advertised now or later); once each has had a message prints
+//     "WATCHING", counts messages for SECONDS, then unsubscribes, closes, and prints
+//     {"channels": N, "messages": M, "hz": {"min": …, "median": …}} (per channel).
 //   node foxglove_client.mjs protocols URL TIMEOUT_MS
 //     opens sockets offering each subprotocol alone (the spec's, as Lichtblick and
 //     FoxgloveClient.SUPPORTED_SUBPROTOCOL name it, and the SDK's), both, and an unrelated
@@ -282,7 +287,45 @@ async function protocols(timeoutMs) {
   finish(result, true);
 }
 
+function watch(pattern, seconds, timeoutMs) {
+  const client = connect();
+  const wanted = new RegExp(pattern);
+  const topics = new Map(); // subscription id → topic
+  const counts = new Map(); // topic → messages while counting
+  let counting = false;
+  const timer = setTimeout(() => finish({ timedOut: true, channels: topics.size }, false), timeoutMs);
+  client.on("error", (e) => console.error(String(e)));
+  client.on("advertise", (channels) => {
+    for (const channel of channels) {
+      if (wanted.test(channel.topic)) topics.set(client.subscribe(channel.id), channel.topic);
+    }
+  });
+  client.on("message", ({ subscriptionId }) => {
+    const topic = topics.get(subscriptionId);
+    counts.set(topic, (counts.get(topic) ?? 0) + (counting ? 1 : 0));
+    if (counting || counts.size < topics.size) return;
+    counting = true;
+    clearTimeout(timer);
+    for (const topic of counts.keys()) counts.set(topic, 0);
+    console.log("WATCHING");
+    setTimeout(() => {
+      for (const id of topics.keys()) client.unsubscribe(id);
+      client.close();
+      const hz = [...counts.values()].map((n) => n / seconds).sort((a, b) => a - b);
+      const messages = hz.reduce((a, b) => a + b, 0) * seconds;
+      finish({
+        channels: topics.size,
+        messages,
+        hz: { min: hz[0] ?? 0, median: hz[Math.floor(hz.length / 2)] ?? 0 },
+      }, true);
+    }, seconds * 1000);
+  });
+}
+
 switch (mode) {
+  case "watch":
+    watch(args[0], Number(args[1]), Number(args[2]));
+    break;
   case "protocols":
     protocols(Number(args[0]));
     break;

@@ -9,6 +9,9 @@
 //   node page.mjs command URL ROBOT X Y KEYS          click ROBOT, click (X, Y) unless X is -; with KEYS 1 hold ← 1 s
 //   node page.mjs link    URL ROBOT SECONDS           ROBOT's link states as the page showed them
 //   node page.mjs find    URL TEXT                    the summary and rows listed, before and after typing TEXT in Find
+//   node page.mjs watch   URL SECONDS                 once every robot has a pose prints WATCHING, then after
+//                                                     SECONDS the rows' rates: position2d Hz (min, median), how
+//                                                     many devices are shown, and the robots with a scan drawn
 import { chromium } from "playwright-core";
 
 const CHROMIUM = process.env.CHROMIUM || "/usr/bin/chromium";
@@ -26,7 +29,7 @@ try {
   page.on("pageerror", (e) => errors.push(e.message));
   page.on("console", (m) => { if (m.type() === "error") errors.push(m.text()); });
   await page.goto(url);
-  const result = await ({ draw, follow, command, link, find })[scenario](page, ...args);
+  const result = await ({ draw, follow, command, link, find, watch })[scenario](page, ...args);
   console.log(JSON.stringify({ ...result, errors }));
 } finally {
   await browser.close();
@@ -41,6 +44,40 @@ async function settle(page) {
     return true;
   }, null, { timeout: 15000 });
   await page.waitForTimeout(1500); // map tiles inflate asynchronously; rows come once a second
+}
+
+async function watch(page, seconds) {
+  await page.waitForFunction(() => {
+    const w = window.playerWeb;
+    if (!w || w.robots.size === 0 || w.rows.length === 0) return false;
+    for (const [name] of w.robots) if (!w.screenOf(name, 0)) return false;
+    return true;
+  }, null, { timeout: 60000, polling: 500 });
+  console.log("WATCHING");
+  await page.waitForTimeout(Number(seconds) * 1000);
+  return await page.evaluate(() => {
+    const w = window.playerWeb;
+    const hz = [], shown = [];
+    for (const row of w.rows) {
+      for (const d of row.devices) {
+        if (d.device.startsWith("position2d:")) hz.push(d.hz);
+        if (d.shown) shown.push(d.device);
+      }
+    }
+    hz.sort((a, b) => a - b);
+    let scans = 0;
+    for (const robot of w.robots.values()) {
+      const laser = robot.devices.get("laser:0");
+      if (laser && laser.Scan) scans += 1;
+    }
+    return {
+      robots: w.robots.size,
+      rows: w.rows.length,
+      poseHz: { min: hz[0] ?? 0, median: hz[Math.floor(hz.length / 2)] ?? 0 },
+      shown: shown.length,
+      scans,
+    };
+  });
 }
 
 async function draw(page, out) {

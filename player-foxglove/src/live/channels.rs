@@ -58,6 +58,11 @@ impl Channels {
         (id, Some(advertise))
     }
 
+    /// Whether `output` is kept for later subscribers (a message that comes once).
+    pub fn latches(output: &Output) -> bool {
+        latch_key(output).is_some()
+    }
+
     /// Keeps `payload` for later subscribers if `output` is a message that comes once.
     pub fn latch(&mut self, id: ChannelId, output: &Output, payload: &Bytes, log_time: u64) {
         if let (Some(key), Some(channel)) = (latch_key(output), self.by_id.get_mut(&id)) {

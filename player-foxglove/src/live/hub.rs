@@ -1,6 +1,7 @@
-//! What the robots' taps and the viewers share: the conversion, the channels, and who is
-//! subscribed to what. Every frame from every server goes through one [`Converter`] (it keeps
-//! per-robot state: which devices are robots, ranger geometry, map tiles being assembled);
+//! What the robots' taps and the viewers share: the channels, and who is subscribed to what.
+//! Every frame from a server goes through its robot's own [`Converter`] (which devices are
+//! robots, ranger geometry, map tiles being assembled), on the robot's thread and outside the
+//! hub's lock, which a thousand robots' threads share;
 //! each [`Output`] is encoded once and its shared bytes queued to every subscriber, with the
 //! Player timestamp as log time. Subscribing, latching and publishing happen under one lock,
 //! so a new subscriber gets what was latched and then everything after it, nothing twice or
@@ -56,7 +57,6 @@ struct Subscriber {
 
 #[derive(Default)]
 struct State {
-    converter: Converter,
     channels: Channels,
     viewers: HashMap<ViewerId, Viewer>,
     subscribers: HashMap<ChannelId, Vec<Subscriber>>,
@@ -85,7 +85,13 @@ impl Hub {
 
     /// One tap event of the connection to `robot`, on its robot thread: converting and
     /// queueing for the viewers never waits on them.
-    pub fn event(&self, robot: &str, time: SystemTime, event: TapEvent<'_>) {
+    pub fn event(
+        &self,
+        robot: &str,
+        converter: &Mutex<Converter>,
+        time: SystemTime,
+        event: TapEvent<'_>,
+    ) {
         let (level, text) = match event {
             TapEvent::Opened(banner) => (
                 Level::Info,
@@ -96,7 +102,7 @@ impl Hub {
                 direction: Direction::ServerToClient,
                 header,
                 body,
-            } => return self.frame(robot, header, body),
+            } => return self.frame(robot, converter, header, body),
             TapEvent::Frame { .. } => return,
         };
         let time = system_timestamp(time);
@@ -104,11 +110,11 @@ impl Hub {
         self.lock().publish(output, time.total_nanos(), None);
     }
 
-    fn frame(&self, robot: &str, header: &Header, body: &Bytes) {
-        let mut state = self.lock();
+    fn frame(&self, robot: &str, converter: &Mutex<Converter>, header: &Header, body: &Bytes) {
         let source = (header.msg_type == MsgType::Data)
             .then(|| (robot.to_string(), (header.addr.interf, header.addr.index)));
         if let Some(source) = &source {
+            let state = self.lock();
             let watched = state.watches.contains_key(robot);
             let unlooked = !state.looked.contains_key(source);
             if watched && unlooked && state.known.contains(source) {
@@ -116,8 +122,15 @@ impl Hub {
                 return;
             }
         }
-        let outputs = state.converter.server_message(robot, header, body);
+        let outputs = converter
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .server_message(robot, header, body);
+        if outputs.is_empty() {
+            return;
+        }
         let log_time = timestamp(header.timestamp).total_nanos();
+        let mut state = self.lock();
         for output in outputs {
             state.publish(output, log_time, source.as_ref());
         }
@@ -260,6 +273,14 @@ impl State {
             for viewer in self.viewers.values() {
                 viewer.outbox.push_control(advertise.clone());
             }
+        }
+        let subscribed = self
+            .subscribers
+            .get(&channel)
+            .is_some_and(|s| !s.is_empty());
+        if !subscribed && !Channels::latches(&output) {
+            // Nobody to send it to, and nothing a later subscriber is sent: not encoded.
+            return;
         }
         let payload = Bytes::from(output.message.encode());
         self.channels.latch(channel, &output, &payload, log_time);

@@ -124,7 +124,9 @@ impl FoxgloveLive {
         Arc::new(move |robot: &RobotId| -> ConnectionTap {
             let hub = hub.clone();
             let robot = robot.to_string();
-            Arc::new(move |time, event| hub.event(&robot, time, event))
+            // The robot's own conversion state, used on its thread alone.
+            let converter = std::sync::Mutex::new(crate::Converter::new());
+            Arc::new(move |time, event| hub.event(&robot, &converter, time, event))
         })
     }
 

@@ -4,6 +4,9 @@
 //! ```sh
 //! cargo run --release -p bench --bin relay
 //! cargo run --release -p bench --bin relay -- --zenoh     # and through Zenoh, 4 remote bridges
+//! cargo build --release -p player-relay && \
+//!   cargo run --release -p bench --bin relay -- --swarm stage-worlds/swarm1024.world
+//!                                          # the fronts at 1 024 robots, real page and Foxglove
 //! ```
 //!
 //! The robots and the relay are child processes (this binary again, with `--role`), so that
@@ -16,7 +19,9 @@
 mod faults;
 mod fronts;
 mod roles;
+mod swarm;
 mod uplink;
+mod viewers;
 mod zenoh;
 mod zenoh_roles;
 
@@ -70,6 +75,24 @@ pub(crate) struct Args {
     /// Foxglove clients, with --fronts.
     #[arg(long, default_value_t = 200)]
     pub(crate) foxglove_clients: usize,
+    /// Instead of the load phases: `player-relay --world WORLD --web --foxglove` idle, with one
+    /// real page, one real Foxglove client, and both (see `swarm`).
+    #[arg(long, value_name = "WORLD")]
+    pub(crate) swarm: Option<std::path::PathBuf>,
+    /// With --swarm: the relay binaries to measure in turn (default: the one built beside
+    /// this benchmark).
+    #[arg(long, value_name = "PATH")]
+    pub(crate) relay_binary: Vec<std::path::PathBuf>,
+    /// With --swarm: seconds for the relay to reach its robots before anything is measured.
+    #[arg(long, default_value_t = 30.0)]
+    pub(crate) settle: f64,
+    /// With --swarm: the channels the Foxglove client subscribes to (a regular expression
+    /// over topics): by default every robot's pose and eight robots' scans.
+    #[arg(
+        long,
+        default_value = r"^/[^/]+/position2d/0/pose$|^/s[0-7]/laser/0/scan$"
+    )]
+    pub(crate) foxglove_topics: String,
     /// Instead of the load phases: direct, player-relay alone, and through a Zenoh router to
     /// `--bridges` remote processes serving the robots as Player servers.
     #[arg(long)]
@@ -118,6 +141,10 @@ fn main() -> Result<()> {
         Role::ZenohRouter => zenoh_roles::serve_router(),
         Role::ZenohSite => zenoh_roles::serve_site(&args),
         Role::ZenohBridge => zenoh_roles::serve_bridge(&args),
+        Role::Orchestrator if args.swarm.is_some() => swarm::run(
+            args.swarm.as_deref().unwrap_or(std::path::Path::new("")),
+            &args,
+        ),
         Role::Orchestrator if args.faults => faults::run(&args),
         Role::Orchestrator if args.fronts => fronts::run(&args),
         Role::Orchestrator if args.zenoh => zenoh::run(&args),
