@@ -19,6 +19,7 @@
 mod macros;
 
 pub mod access;
+pub mod body_kind;
 pub mod capture;
 pub mod client;
 pub mod delivery;

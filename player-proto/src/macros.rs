@@ -120,9 +120,9 @@ macro_rules! xdr_struct {
 ///
 /// With `for CODE` each row also names its subtype (`as DATA_SCAN`, Player's name without the
 /// `PLAYER_<INTERFACE>_` prefix): the macro then generates a typed
-/// [`BodyKind`](crate::interfaces::kind::BodyKind) constant per row (`Laser::DATA_SCAN`), the
+/// [`BodyKind`](crate::body_kind::BodyKind) constant per row (`Laser::DATA_SCAN`), the
 /// interface's [`InterfaceMessages`](crate::interfaces::kind::InterfaceMessages) list, and
-/// [`DataBody`](crate::interfaces::kind::DataBody) for every DATA body. The enum's name must
+/// [`DataBody`](crate::body_kind::DataBody) for every DATA body. The enum's name must
 /// be its [`Body`](crate::message::Body) variant's (in both forms: the decoder builds the
 /// whole [`Message`](crate::message::Message) in place, body variant included). Without `for`
 /// (the universal requests, valid on every interface) only the enum and its codec are made.
@@ -143,7 +143,7 @@ macro_rules! interface_messages {
         impl $name {
             $(
                 #[doc = concat!("`PLAYER_", stringify!($code), "_", stringify!($konst), "`: ", stringify!($class), " subtype ", stringify!($subtype), ", body [`", stringify!($ty), "`].")]
-                pub const $konst: $crate::interfaces::kind::BodyKind<$ty> = {
+                pub const $konst: $crate::body_kind::BodyKind<$ty> = {
                     fn peek(body: &$crate::message::Body) -> Option<&$ty> {
                         match body {
                             $crate::message::Body::$name($name::$variant(value)) => {
@@ -155,7 +155,7 @@ macro_rules! interface_messages {
                     fn wrap(value: $ty) -> $crate::message::Body {
                         $crate::message::Body::$name($name::$variant(value.into()))
                     }
-                    $crate::interfaces::kind::BodyKind::new(
+                    $crate::body_kind::BodyKind::new(
                         $crate::interfaces::kind::MessageKind {
                             interf: $crate::wire::Interface::$code,
                             class: $crate::wire::MessageClass::$class,
@@ -190,7 +190,7 @@ macro_rules! interface_messages {
             $( $(#[$variant_meta])* $variant(stored!($ty $(, $boxed)?)), )*
         }
 
-        impl $crate::interfaces::MessageSet for $name {
+        impl $crate::message::MessageSet for $name {
             fn decode_message(
                 header: $crate::wire::Header,
                 body: ::bytes::Bytes,
@@ -290,7 +290,7 @@ macro_rules! interface_messages {
 /// size, and every message is built and moved on its way from the socket to its reader (a
 /// 181-beam laser scan decoded measurably faster with `Message` at 192 bytes than at 280);
 /// boxed, they cost one allocation on the rare message that carries them. The row's
-/// [`BodyKind`](crate::interfaces::kind::BodyKind) and `DataBody` still name the body type
+/// [`BodyKind`](crate::body_kind::BodyKind) and `DataBody` still name the body type
 /// itself, so readers never see the box.
 macro_rules! stored {
     ($ty:ty) => { $ty };
@@ -301,8 +301,8 @@ macro_rules! stored {
 /// structures are shared between rows (a get and a set request).
 macro_rules! data_body {
     (Data, $name:ident, $konst:ident, $ty:ty) => {
-        impl $crate::interfaces::kind::DataBody for $ty {
-            const KIND: $crate::interfaces::kind::BodyKind<$ty> = $name::$konst;
+        impl $crate::body_kind::DataBody for $ty {
+            const KIND: $crate::body_kind::BodyKind<$ty> = $name::$konst;
         }
     };
     ($class:ident, $name:ident, $konst:ident, $ty:ty) => {};

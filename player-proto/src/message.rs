@@ -5,7 +5,7 @@ use std::fmt;
 
 use bytes::{Buf, BufMut, Bytes, BytesMut};
 
-use crate::interfaces::{self, MessageSet};
+use crate::interfaces;
 use crate::wire::xdr::{XdrError, XdrFault};
 use crate::wire::{DevAddr, HEADER_LEN, Header, Interface, MessageClass, MsgType};
 
@@ -344,4 +344,33 @@ impl Message {
         self.encode(&mut out);
         out.freeze()
     }
+}
+
+/// The typed messages of one interface.
+pub trait MessageSet: Sized {
+    /// Decodes the body of a message of this interface, class and subtype from `header`,
+    /// into the whole message: a body the interface defines no structure for is kept as
+    /// [`Body::Unknown`](crate::message::Body::Unknown), bytes left after the structure as
+    /// the message's `trailing`.
+    ///
+    /// It returns the finished [`Message`] rather than the body because a laser scan is
+    /// decoded every few microseconds: built here, in the place it is returned to, the value
+    /// is not moved again through a body, an optional result and a message (a 181-beam scan
+    /// spent more time in those moves than in converting its ranges).
+    fn decode_message(header: Header, body: Bytes) -> Result<Message, DecodeError>;
+
+    /// Whether viewing `body` in place agrees with decoding it (see [`crate::wire::xdr_view`]);
+    /// for the tests and the fuzz target.
+    #[doc(hidden)]
+    fn view_agrees(header: &Header, body: &Bytes) -> Result<(), String>;
+
+    /// The class this body belongs to.
+    fn class(&self) -> MessageClass;
+
+    /// The subtype number it is sent with.
+    fn subtype(&self) -> u8;
+
+    fn encode<B: BufMut>(&self, out: &mut B);
+
+    fn encoded_len(&self) -> usize;
 }

@@ -5,7 +5,7 @@
 
 mod support;
 
-use player_proto::interfaces::kind::DataBody;
+use player_proto::body_kind::DataBody;
 use player_proto::interfaces::localize::{Localize, LocalizeData, cov};
 use player_proto::interfaces::map::{Map, MapData};
 use player_proto::interfaces::planner::{Planner, PlannerData};

@@ -6,9 +6,9 @@ mod support;
 
 use std::fmt::Debug;
 
+use player_proto::body_kind::BodyKind;
 use player_proto::interfaces::camera::Camera;
 use player_proto::interfaces::fiducial::Fiducial;
-use player_proto::interfaces::kind::BodyKind;
 use player_proto::interfaces::laser::Laser;
 use player_proto::interfaces::map::Map;
 use player_proto::interfaces::player::Player;

@@ -4,10 +4,10 @@
 
 mod support;
 
+use player_proto::body_kind::DataBody;
 use player_proto::interfaces::blobfinder::Blobfinder;
 use player_proto::interfaces::bumper::Bumper;
 use player_proto::interfaces::gripper::{Gripper, STATE_CLOSED};
-use player_proto::interfaces::kind::DataBody;
 use player_proto::interfaces::map::{Map, MapInfo};
 use player_proto::interfaces::power::{MASK_PERCENT, MASK_VOLTS, MASK_WATTS, Power};
 use player_proto::message::Body;

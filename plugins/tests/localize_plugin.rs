@@ -8,8 +8,8 @@ use framework::PluginConfig;
 use framework::config::{DeviceRef, Param};
 use framework::plugin::{Handled, InputEvent, Plugin};
 use glam::Vec3;
+use player_proto::body_kind::DataBody;
 use player_proto::interfaces::common::Pose2d;
-use player_proto::interfaces::kind::DataBody;
 use player_proto::interfaces::localize::{
     Localize, LocalizeData, LocalizeHypothesis, LocalizeParticle, LocalizeParticles, cov,
 };

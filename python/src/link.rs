@@ -5,8 +5,8 @@ use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
+use player_proto::body_kind::{BodyKind, DataBody};
 use player_proto::client::{Client, ClientOptions, ConnectionState, RequestError, Stamped};
-use player_proto::interfaces::kind::{BodyKind, DataBody};
 use player_proto::message::Message;
 use player_proto::wire::{DevAddr, Interface};
 use pyo3::exceptions::{PyKeyError, PyValueError};

@@ -1,7 +1,7 @@
 //! A "get" request a plugin sends once (its device's geometry, its config) and whose typed
 //! reply it picks up on a later update, so that the UI thread never waits for the server.
 
-use player_proto::interfaces::kind::BodyKind;
+use player_proto::body_kind::BodyKind;
 
 use super::{DeviceAccess, PendingReply, RequestError};
 

@@ -10,7 +10,8 @@
 mod awaited;
 mod recording;
 
-use player_proto::interfaces::kind::{BodyKind, DataBody, MessageKind};
+use player_proto::body_kind::{BodyKind, DataBody};
+use player_proto::interfaces::kind::MessageKind;
 use player_proto::message::Body;
 
 pub use awaited::Awaited;

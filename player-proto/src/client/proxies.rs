@@ -1,10 +1,10 @@
 //! Typed proxies: one device of one interface, with its requests and data typed.
 
 use super::{Client, RequestError, Stamped};
+use crate::body_kind::{BodyKind, DataBody};
 use crate::interfaces::camera::{Camera, CameraData};
 use crate::interfaces::common::Pose2d;
 use crate::interfaces::fiducial::{Fiducial, FiducialData, FiducialGeometry};
-use crate::interfaces::kind::{BodyKind, DataBody};
 use crate::interfaces::laser::{Laser, LaserConfig, LaserGeometry, LaserScan};
 use crate::interfaces::position2d::{
     Position2d, Position2dCmdPos, Position2dCmdVel, Position2dData, Position2dGeometry,

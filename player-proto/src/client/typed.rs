@@ -3,7 +3,7 @@
 //! the structure it asked for or an error, never a body to match by hand.
 
 use super::{Client, PendingReply, RequestError, Stamped};
-use crate::interfaces::kind::{BodyKind, DataBody};
+use crate::body_kind::{BodyKind, DataBody};
 use crate::message::{Body, Message};
 use crate::wire::DevAddr;
 

@@ -127,7 +127,7 @@ mod tests {
     use proptest::prelude::*;
 
     use super::*;
-    use crate::interfaces::MessageSet;
+    use crate::message::MessageSet;
     use crate::message::{Body, Message};
     use crate::wire::{DevAddr, FrameDecoder, Interface};
 

@@ -12,11 +12,11 @@ mod speech;
 
 use std::sync::{Arc, Mutex};
 
+use player_proto::body_kind::BodyKind;
 use player_proto::interfaces::camera::Camera;
 use player_proto::interfaces::common::{BBox2d, BBox3d, Pose2d, Pose3d};
 use player_proto::interfaces::fiducial::{Fiducial, FiducialFov, FiducialGeometry};
 use player_proto::interfaces::gripper::Gripper;
-use player_proto::interfaces::kind::BodyKind;
 use player_proto::interfaces::laser::{Laser, LaserConfig, LaserGeometry};
 use player_proto::interfaces::position2d::{self, Position2d, Position2dGeometry};
 use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry};

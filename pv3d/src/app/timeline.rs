@@ -7,8 +7,8 @@
 use std::sync::Arc;
 
 use eframe::egui::{self, Ui};
+use player_proto::body_kind::BodyKind;
 use player_proto::client::{Client, ConnectionState};
-use player_proto::interfaces::kind::BodyKind;
 use player_proto::interfaces::log::{
     self, Log, LogPlayback, LogReadStep, LogSetReadPosition, LogSetReadSpeed, LogSetReadState,
 };
