@@ -149,7 +149,20 @@ fn set_pose_moves_the_estimate_and_particles_surround_it() {
 
 #[test]
 fn a_goal_is_planned_driven_to_and_reported_as_wavefront_does() {
-    let (_running, client) = start();
+    let (running, client) = start();
+    // r1 wanders along r0's route: two robots meeting head on can wedge each other (each
+    // turning into the other, both stalled), which whether they do depends on every
+    // centimetre of r1's path. This test is about the planner: r1 stands still.
+    {
+        let mut sim = running.sim.lock().unwrap();
+        let r1 = sim.robot_index("r1").expect("r1");
+        sim.world.robots[r1].controller = None;
+        sim.robots[r1].command = player_sim::sim::Command::Velocity {
+            vx: 0.0,
+            vy: 0.0,
+            va: 0.0,
+        };
+    }
     let planner = client.addr(Interface::PLANNER, 0);
     assert_eq!(client.subscribe(planner).unwrap(), "wavefront");
     let state = Planner::DATA_STATE.subtype();

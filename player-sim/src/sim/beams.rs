@@ -73,7 +73,8 @@ impl BeamBoxes {
 /// sensor), ahead of it: up to two half-open ranges of beam indices (empty ones `(0, 0)`).
 fn beams_towards(fan: Fan, cx: f64, cy: f64, radius: f64) -> [(usize, usize); 2] {
     let all = [(0, fan.count), (0, 0)];
-    let distance = cx.hypot(cy);
+    // A square root, not `hypot` (a call into the maths library, for every box of every scan).
+    let distance = (cx * cx + cy * cy).sqrt();
     // A box around the sensor, or a fan that is not spread: every beam (NaNs included).
     let apart = distance > radius * (1.0 + 1e-9) + 1e-9;
     let spread = fan.step > 1e-9 && fan.count >= 2;

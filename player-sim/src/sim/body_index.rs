@@ -30,6 +30,9 @@ pub struct BodyIndex {
     members: Vec<u32>,
     /// The largest bounding radius of any robot's body.
     max_radius: f64,
+    /// Each robot's `(sin, cos)` of its heading and of its body's (its heading turned by its
+    /// `origin`): taken once per index, not by every scan that sees the robot.
+    trig: Vec<[(f64, f64); 2]>,
 }
 
 impl BodyIndex {
@@ -79,7 +82,21 @@ impl BodyIndex {
         } else {
             (1, 1)
         };
+        let trig = robots
+            .iter()
+            .zip(&world.robots)
+            .map(|(state, spec)| {
+                let heading = state.pose.a.sin_cos();
+                let body = if spec.origin.a == 0.0 {
+                    heading
+                } else {
+                    body_at(state.pose, spec.origin).a.sin_cos()
+                };
+                [heading, body]
+            })
+            .collect();
         let mut index = BodyIndex {
+            trig,
             poses: robots.iter().map(|r| r.pose).collect(),
             origin: (x0, y0),
             cell,
@@ -103,6 +120,11 @@ impl BodyIndex {
             next[k] += 1;
         }
         index
+    }
+
+    /// Robot `i`'s `(sin, cos)` of its heading, then of its body's.
+    pub fn trig(&self, i: usize) -> [(f64, f64); 2] {
+        self.trig[i]
     }
 
     /// Was the index built from robots standing where these stand?

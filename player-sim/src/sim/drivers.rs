@@ -8,8 +8,9 @@ use std::fmt::Debug;
 
 use super::Simulation;
 
-/// What runs with every step of a [`Simulation`], beside its robots.
-pub trait Drivers: Any + Debug + Send {
+/// What runs with every step of a [`Simulation`], beside its robots. `Sync`: a step's scans
+/// read the simulation, drivers included, from several threads.
+pub trait Drivers: Any + Debug + Send + Sync {
     /// Before the robots move: may change their commands.
     fn before_motion(&mut self, sim: &mut Simulation);
     /// Once the robots moved.

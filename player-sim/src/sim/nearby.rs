@@ -7,9 +7,9 @@
 
 use super::Simulation;
 use super::geometry::slab_hit;
-use super::sensors::{body_at, on_robot};
+use super::sensors::body_at;
 use super::shapes::ray_into_polygons;
-use crate::world::{Polygon, ShapeSlice, slice_at};
+use crate::world::{Polygon, Pose, ShapeSlice, slice_at};
 
 /// A solid box prepared for many rays: its frame's sine and cosine computed once.
 #[derive(Debug, Clone, Copy)]
@@ -75,7 +75,8 @@ impl<'a> NearbyBoxes<'a> {
         // The robots in the cells within reach, not every robot: in increasing order, as
         // every robot was asked before, so that ties between boxes go the same way.
         let mut near = Vec::new();
-        sim.body_index().near(x, y, reach, &mut near);
+        let index = sim.body_index();
+        index.near(x, y, reach, &mut near);
         // At most every robot asked and every obstacle: one allocation, not a doubling series.
         let mut boxes = Vec::with_capacity(near.len() + sim.world.obstacles.len());
         let robots = near
@@ -86,6 +87,7 @@ impl<'a> NearbyBoxes<'a> {
                 let body = body_at(state.pose, spec.origin);
                 (
                     body,
+                    Some(index.trig(i)[1]),
                     spec.size,
                     spec.color,
                     spec.ranger_return,
@@ -101,16 +103,16 @@ impl<'a> NearbyBoxes<'a> {
             .map(|(_, o)| {
                 let body = body_at(o.pose, o.origin);
                 let shape = (&o.shape[..], &o.shape_slices[..]);
-                (body, o.size, o.color, o.ranger_return, shape)
+                (body, None, o.size, o.color, o.ranger_return, shape)
             });
         boxes.extend(robots.chain(obstacles).filter_map(
-            |(pose, size, color, ranger_return, (shape, slices))| {
+            |(pose, trig, size, color, ranger_return, (shape, slices))| {
                 // Squares, not `hypot`: every sensor asks this of the robots around it.
                 let radius = (size[0] * size[0] + size[1] * size[1]).sqrt() / 2.0;
                 let (ex, ey) = (pose.x - x, pose.y - y);
                 let within = reach + radius;
                 (within >= 0.0 && ex * ex + ey * ey <= within * within).then(|| {
-                    let (sin, cos) = pose.a.sin_cos();
+                    let (sin, cos) = trig.unwrap_or_else(|| pose.a.sin_cos());
                     SolidBox {
                         x: pose.x,
                         y: pose.y,
@@ -164,16 +166,31 @@ impl<'a> NearbyBoxes<'a> {
         reach: f64,
     ) -> Self {
         let mut near = Vec::new();
-        sim.body_index().near(x, y, reach, &mut near);
+        let index = sim.body_index();
+        index.near(x, y, reach, &mut near);
         for i in near.into_iter().filter(|&i| Some(i) != except) {
             let (state, spec) = (&sim.robots[i], &sim.world.robots[i]);
+            let [(s, c), _] = index.trig(i);
             for body in &spec.mounted_bodies {
-                let pose = on_robot(state.pose, body.pose);
-                let radius = body.size[0].hypot(body.size[1]) / 2.0;
-                if (pose.x - x).hypot(pose.y - y) > reach + radius {
+                // `on_robot`, with the robot's sine and cosine taken once for the step.
+                let p = state.pose;
+                let pose = Pose {
+                    x: p.x + c * body.pose.x - s * body.pose.y,
+                    y: p.y + s * body.pose.x + c * body.pose.y,
+                    a: p.a + body.pose.a,
+                };
+                // Squares, not `hypot`: every scan asks this of the robots around it.
+                let radius =
+                    (body.size[0] * body.size[0] + body.size[1] * body.size[1]).sqrt() / 2.0;
+                let (ex, ey, within) = (pose.x - x, pose.y - y, reach + radius);
+                if !(within >= 0.0 && ex * ex + ey * ey <= within * within) {
                     continue;
                 }
-                let (sin, cos) = pose.a.sin_cos();
+                let (sin, cos) = if body.pose.a == 0.0 {
+                    (s, c)
+                } else {
+                    pose.a.sin_cos()
+                };
                 self.boxes.push(SolidBox {
                     x: pose.x,
                     y: pose.y,

@@ -1,11 +1,10 @@
 //! Sensors by ray casting: a ranger's beams against the floorplan, the boxes and the other
 //! robots; fiducial markers within range, field of view and line of sight.
 
-use super::beams::{BeamBoxes, Fan};
-use super::nearby::NearbyBoxes;
-use super::wall_beams::WallBeams;
+use super::beams::Fan;
+use super::scan_caster::{Hit, caster};
 use super::{GroundBox, Simulation, wrap};
-use crate::world::{FiducialSpec, OccupancyGrid, Pose, RangerSpec, slice_at};
+use crate::world::{FiducialSpec, Pose, RangerSpec, slice_at};
 
 /// `pose` (on the robot) composed with the robot's pose.
 pub fn on_robot(robot: Pose, local: Pose) -> Pose {
@@ -27,52 +26,18 @@ pub fn body_at(pose: Pose, origin: Pose) -> Pose {
     }
 }
 
-/// What a beam hit: its distance, and the `ranger_return` of the thing hit.
-type Hit = (f64, f64);
-
-/// The walls a sensor at `(x, y)` reaching `max` sees: none when its rays pass through them
-/// (negative `ranger_return`) or when no wall lies within its reach, so that its beams skip
-/// the grid traversal (most sensors of a swarm in a large hall).
 /// Do the floorplan's walls stand as high as a beam at `z`?
-fn walls_reach(sim: &Simulation, z: f64) -> bool {
+pub(super) fn walls_reach(sim: &Simulation, z: f64) -> bool {
     (0.0..=sim.world.floor_height).contains(&z)
-}
-
-fn walls_seen(sim: &Simulation, x: f64, y: f64, max: f64) -> Option<&OccupancyGrid> {
-    let grid = sim.world.floor.as_ref()?;
-    (sim.world.floor_ranger_return >= 0.0 && grid.walls_within(x, y, max)).then_some(grid)
-}
-
-/// The nearest thing along a ray a ranger sees, up to `max`: the floorplan by grid traversal
-/// (`walls`, see [`walls_seen`]) and the boxes near the sensor in the ray's direction
-/// (`ahead`), except those with a negative `ranger_return`.
-fn cast(
-    sim: &Simulation,
-    walls: Option<&OccupancyGrid>,
-    boxes: &NearbyBoxes,
-    ahead: &[u32],
-    (x, y): (f64, f64),
-    angle: f64,
-    max: f64,
-) -> Option<Hit> {
-    // One sine and cosine per beam, for the walls and the boxes alike.
-    let (dy, dx) = angle.sin_cos();
-    let floor = walls
-        .and_then(|grid| grid.raycast_along(x, y, dx, dy, max))
-        .map(|(d, _)| (d, sim.world.floor_ranger_return));
-    let limit = floor.map_or(max, |(d, _)| d);
-    let thing = boxes
-        .nearest_among(ahead, (x, y), (dx, dy), limit, |b| b.ranger_return >= 0.0)
-        .map(|(d, b)| (d, b.ranger_return));
-    thing.or(floor)
 }
 
 /// Distance to the floorplan's walls along a ray, up to `max`.
 fn floor_distance(sim: &Simulation, x: f64, y: f64, angle: f64, max: f64) -> Option<f64> {
-    sim.world
-        .floor
-        .as_ref()
-        .and_then(|g| g.raycast(x, y, angle, max))
+    let (dy, dx) = angle.sin_cos();
+    match sim.wall_raster() {
+        Some(raster) => raster.cast(x, y, dx, dy, max),
+        None => sim.world.floor.as_ref()?.raycast(x, y, angle, max),
+    }
 }
 
 /// The same distance by testing every box: the unpruned reference the pruned cast is tested
@@ -152,23 +117,7 @@ pub struct RangerReturns {
 /// [`ranger_scan`] with the intensities.
 pub fn ranger_returns(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> RangerReturns {
     scan_with(sim, robot, ranger, |origin, max, fan, z| {
-        let at = (origin.x, origin.y);
-        let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, max)
-            .with_mounted(sim, Some(robot), at, max)
-            .reaching(z);
-        let walls = walls_seen(sim, at.0, at.1, max).filter(|_| walls_reach(sim, z));
-        let wall_beams = walls.map(|grid| WallBeams::new(grid, at.0, at.1, max, fan));
-        let by_beam = BeamBoxes::new(&boxes, at.0, at.1, fan);
-        move |beam, angle| {
-            let ahead = by_beam.of(beam);
-            // Only the beams that may meet a wall walk the grid.
-            let walls = walls.filter(|_| wall_beams.as_ref().is_some_and(|w| w.may_meet(beam)));
-            // Nothing in this beam's direction: its maximum, without a sine or cosine.
-            if walls.is_none() && ahead.is_empty() {
-                return None;
-            }
-            cast(sim, walls, &boxes, ahead, at, angle, max)
-        }
+        caster(sim, robot, origin, max, fan, z)
     })
 }
 

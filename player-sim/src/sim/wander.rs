@@ -3,7 +3,8 @@
 //! from the nearer side, keeping that turn for a random 10 to 19 updates. Stage draws the
 //! duration from `random()`; here it is a pure function of the seed, the step and the robot.
 
-use super::{Command, Simulation, ranger_scan};
+use super::{Command, Simulation};
+use crate::world::Controller;
 
 /// Forward speed while the way is clear, m/s (Stage's).
 const CRUISE_SPEED: f64 = 0.4;
@@ -30,9 +31,26 @@ pub struct WanderState {
 }
 
 impl Simulation {
-    /// Robot `robot`'s next command from its ranger `ranger`, as Stage's wander decides it.
-    pub(super) fn wander(&mut self, robot: usize, ranger: usize) {
-        let scan = ranger_scan(self, robot, &self.world.robots[robot].rangers[ranger]);
+    /// Every wandering robot's next command, each from its ranger's scan of the world as the
+    /// step found it (the scans cast on the simulation's threads).
+    pub(super) fn wander_all(&mut self) {
+        let wanderers: Vec<(usize, usize)> = (0..self.robots.len())
+            .filter_map(|i| match self.world.robots[i].controller {
+                Some(Controller::Wander { ranger }) => Some((i, ranger)),
+                _ => None,
+            })
+            .collect();
+        if wanderers.is_empty() {
+            return;
+        }
+        let scans = self.scans_of(&wanderers);
+        for (&(robot, _), scan) in wanderers.iter().zip(&scans) {
+            self.wander(robot, scan);
+        }
+    }
+
+    /// Robot `robot`'s next command from its ranger's `scan`, as Stage's wander decides it.
+    fn wander(&mut self, robot: usize, scan: &[f64]) {
         let n = scan.len();
         if n == 0 {
             return;

@@ -1,0 +1,130 @@
+//! How a ranger's scan casts its beams: the walls first, every beam, and then only the boxes
+//! (robots, obstacles, bodies mounted on robots) within the farthest wall any beam met. In a
+//! cave most beams meet a wall a few metres away, so a scan asks the robots within those few
+//! metres instead of every robot within the sensor's 8 m — behind every wall a beam met, no box
+//! can be nearer than that wall. Readings are what casting walls and boxes together gave.
+//!
+//! A beam turned by angular noise is not the fan's beam whose wall was cast: it is cast alone,
+//! against the boxes within the sensor's whole reach (listed only when such a beam comes).
+
+use std::cell::OnceCell;
+
+use super::Simulation;
+use super::beams::{BeamBoxes, Fan};
+use super::directions::Directions;
+use super::nearby::NearbyBoxes;
+use super::sensors::walls_reach;
+use super::wall_beams::WallBeams;
+use super::wall_raster::WallRaster;
+use crate::world::{OccupancyGrid, Pose};
+
+/// What a beam hit: its distance, and the `ranger_return` of the thing hit.
+pub(super) type Hit = (f64, f64);
+
+/// What a ranger's rays meet of the floorplan: Stage's raster of its walls (the world's
+/// `resolution`), or, for a world too large for one, the floorplan's own grid.
+#[derive(Clone, Copy)]
+pub(super) enum Walls<'a> {
+    Raster(&'a WallRaster),
+    Grid(&'a OccupancyGrid),
+}
+
+impl Walls<'_> {
+    pub(super) fn cast(self, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<f64> {
+        match self {
+            Walls::Raster(raster) => raster.cast(x, y, dx, dy, max),
+            Walls::Grid(grid) => grid.raycast_along(x, y, dx, dy, max).map(|(d, _)| d),
+        }
+    }
+}
+
+/// The walls a sensor at `(x, y)` reaching `max` sees: none when its rays pass through them
+/// (negative `ranger_return`), or on the floorplan's grid when no wall cell lies within its
+/// reach (the raster's walk needs no such test: it crosses open space in jumps).
+fn walls_seen(sim: &Simulation, x: f64, y: f64, max: f64) -> Option<Walls<'_>> {
+    if sim.world.floor_ranger_return < 0.0 {
+        return None;
+    }
+    if let Some(raster) = sim.wall_raster() {
+        return Some(Walls::Raster(raster));
+    }
+    let grid = sim.world.floor.as_ref()?;
+    grid.walls_within(x, y, max).then_some(Walls::Grid(grid))
+}
+
+/// The boxes a sensor at `at` sees within `reach` at height `z`, and each beam's share of them.
+fn boxes_within<'a>(
+    sim: &'a Simulation,
+    robot: usize,
+    at: (f64, f64),
+    reach: f64,
+    fan: Fan,
+    z: f64,
+) -> (NearbyBoxes<'a>, BeamBoxes) {
+    let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, reach)
+        .with_mounted(sim, Some(robot), at, reach)
+        .reaching(z);
+    let by_beam = BeamBoxes::new(&boxes, at.0, at.1, fan);
+    (boxes, by_beam)
+}
+
+/// The caster of robot `robot`'s sensor at `origin` reaching `max`, with beams `fan` at height
+/// `z`: given a beam's number and direction, what it hits.
+pub(super) fn caster(
+    sim: &Simulation,
+    robot: usize,
+    origin: Pose,
+    max: f64,
+    fan: Fan,
+    z: f64,
+) -> impl Fn(usize, f64) -> Option<Hit> + '_ {
+    let at = (origin.x, origin.y);
+    let walls = walls_seen(sim, at.0, at.1, max).filter(|_| walls_reach(sim, z));
+    // On the floorplan's own grid, only the beams that may meet a wall walk it.
+    let wall_beams = match walls {
+        Some(Walls::Grid(grid)) => Some(WallBeams::new(grid, at.0, at.1, max, fan)),
+        _ => None,
+    };
+    let directions = Directions::of(fan);
+    let wall_of = move |beam: usize, (dx, dy): (f64, f64)| {
+        walls
+            .filter(|_| wall_beams.as_ref().is_none_or(|w| w.may_meet(beam)))
+            .and_then(|walls| walls.cast(at.0, at.1, dx, dy, max))
+    };
+    let fan_walls: Vec<Option<f64>> = (0..fan.count)
+        .map(|beam| wall_of(beam, directions.of_beam(beam, fan_angle(fan, beam))))
+        .collect();
+    // The farthest any beam of the fan reaches: its wall, or its range where it meets none.
+    let reach = fan_walls
+        .iter()
+        .try_fold(0.0f64, |far, wall| wall.map(|d| far.max(d)))
+        .map_or(max, |far| far.min(max));
+    let (boxes, by_beam) = boxes_within(sim, robot, at, reach, fan, z);
+    let everything = OnceCell::new();
+    let floor_return = sim.world.floor_ranger_return;
+    move |beam, angle| {
+        let direction = directions.of_beam(beam, angle);
+        let nominal = angle == fan_angle(fan, beam);
+        let (wall, boxes, ahead) = if nominal {
+            (fan_walls[beam], &boxes, by_beam.of(beam))
+        } else {
+            let (all, by_beam) =
+                everything.get_or_init(|| boxes_within(sim, robot, at, max, fan, z));
+            (wall_of(beam, direction), all, by_beam.of(beam))
+        };
+        // Nothing in this beam's direction: its maximum.
+        if wall.is_none() && ahead.is_empty() {
+            return None;
+        }
+        let limit = wall.unwrap_or(max);
+        let thing = boxes
+            .nearest_among(ahead, at, direction, limit, |b| b.ranger_return >= 0.0)
+            .map(|(d, b)| (d, b.ranger_return));
+        thing.or(wall.map(|d| (d, floor_return)))
+    }
+}
+
+/// The direction of the fan's beam `i`, as the scan computes it.
+fn fan_angle(fan: Fan, i: usize) -> f64 {
+    fan.first + i as f64 * fan.step
+}

@@ -1,0 +1,267 @@
+//! The floorplan's walls as Stage's rangers see them: a raster of square cells of the world's
+//! `resolution` (2 cm unless set), not the bitmap's own pixels. Stage turns a bitmap into
+//! polygons around its dark pixels, scales them over the floorplan, and marks every cell an
+//! outline passes through, its corners floored to whole cells; its rays then walk those cells.
+//! A wall region therefore reaches, in Stage, every cell its closed outline touches: up to a
+//! cell more than the bitmap's pixels on the north and east sides, and a diagonal corner or a
+//! one-pixel wall is where its cells are, not where its pixels are. Rays cast against this
+//! raster meet walls where Stage's meet them, within its resolution.
+//!
+//! Each cell also holds its clearance (how many cells away, in rows or columns, the nearest
+//! wall cell is), so that a ray crosses open space in a few jumps instead of cell by cell: the
+//! cost of a beam grows with the walls it passes near, not with its length in 2 cm cells.
+
+use crate::world::{World, floor_i64};
+
+/// The most cells a raster may have (64 Mi, 64 MiB): a finer or larger world keeps the
+/// floorplan's own grid for its rays.
+const MAX_CELLS: usize = 64 << 20;
+
+/// Clearance is counted up to this many cells (a jump of about 5 m at 2 cm).
+const MAX_CLEARANCE: u8 = 255;
+
+/// The walls on Stage's raster, with each cell's clearance.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WallRaster {
+    /// Metres per cell, and cells per metre (Stage multiplies by the latter).
+    pub(super) resolution: f64,
+    pub(super) per_metre: f64,
+    /// Global cell (`floor(x * per_metre)`) of the raster's first column and row.
+    first: (i64, i64),
+    width: usize,
+    height: usize,
+    /// Row-major from the south: 0 on a wall cell, else the distance in cells (the larger of
+    /// the column and row differences) to the nearest wall cell, at most [`MAX_CLEARANCE`].
+    clearance: Vec<u8>,
+}
+
+impl WallRaster {
+    /// The raster of `world`'s floorplan: its bitmap's wall pixels and its drawn walls (blocks,
+    /// `boundary 1`); `None` without walls, or when the raster would be too large.
+    pub fn of(world: &World) -> Option<WallRaster> {
+        let per_metre = 1.0 / world.resolution;
+        if !(per_metre.is_finite() && per_metre > 0.0) {
+            return None;
+        }
+        let mut marks: Vec<(i64, i64, i64, i64)> = Vec::new();
+        let cell = |v: f64| floor_i64(v * per_metre);
+        if let (Some(grid), Some(_)) = (&world.floor, &world.floorplan) {
+            let wall = |column: usize, row: usize| {
+                grid.occupied_at(
+                    grid.origin.0 + (column as f64 + 0.5) * grid.cell.0,
+                    grid.origin.1 + (row as f64 + 0.5) * grid.cell.1,
+                )
+            };
+            // Each run of wall pixels in a row as one closed rectangle.
+            for row in 0..grid.height {
+                let mut column = 0;
+                while column < grid.width {
+                    if !wall(column, row) {
+                        column += 1;
+                        continue;
+                    }
+                    let start = column;
+                    while column < grid.width && wall(column, row) {
+                        column += 1;
+                    }
+                    let x0 = grid.origin.0 + start as f64 * grid.cell.0;
+                    let x1 = grid.origin.0 + column as f64 * grid.cell.0;
+                    let y0 = grid.origin.1 + row as f64 * grid.cell.1;
+                    let y1 = grid.origin.1 + (row + 1) as f64 * grid.cell.1;
+                    marks.push((cell(x0), cell(y0), cell(x1), cell(y1)));
+                }
+            }
+        }
+        let mut lines = Vec::new();
+        for polygon in &world.floor_blocks {
+            for (k, a) in polygon.iter().enumerate() {
+                let b = polygon[(k + 1) % polygon.len()];
+                lines.push(((cell(a[0]), cell(a[1])), (cell(b[0]), cell(b[1]))));
+            }
+        }
+        let ends = marks
+            .iter()
+            .flat_map(|&(x0, y0, x1, y1)| [(x0, y0), (x1, y1)])
+            .chain(lines.iter().flat_map(|&(a, b)| [a, b]));
+        let (mut low, mut high) = ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN));
+        for (x, y) in ends {
+            low = (low.0.min(x), low.1.min(y));
+            high = (high.0.max(x), high.1.max(y));
+        }
+        if low.0 > high.0 {
+            return None;
+        }
+        // A free cell all round, so that a cell outside the raster is never beside a wall.
+        let first = (low.0 - 1, low.1 - 1);
+        let (w, h) = (high.0 - low.0 + 3, high.1 - low.1 + 3);
+        if w <= 0 || h <= 0 || (w as u128) * (h as u128) > MAX_CELLS as u128 {
+            return None;
+        }
+        let mut raster = WallRaster {
+            resolution: world.resolution,
+            per_metre,
+            first,
+            width: w as usize,
+            height: h as usize,
+            clearance: vec![MAX_CLEARANCE; (w * h) as usize],
+        };
+        for (x0, y0, x1, y1) in marks {
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    raster.mark(x, y);
+                }
+            }
+        }
+        for (a, b) in lines {
+            raster.mark_line(a, b);
+        }
+        raster.count_clearance();
+        Some(raster)
+    }
+
+    fn mark(&mut self, x: i64, y: i64) {
+        let (c, r) = ((x - self.first.0) as usize, (y - self.first.1) as usize);
+        self.clearance[r * self.width + c] = 0;
+    }
+
+    /// Every cell of a 4-connected line from cell `a` to cell `b`: each step moves one column or
+    /// one row, whichever keeps the cells nearer the straight line (ties: a row).
+    fn mark_line(&mut self, a: (i64, i64), b: (i64, i64)) {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let (sx, sy) = (dx.signum(), dy.signum());
+        let (ax, ay) = (dx.abs(), dy.abs());
+        let (mut x, mut y) = a;
+        // Twice the signed distance from the line, scaled: which step stays nearer.
+        let mut error = ay - ax;
+        self.mark(x, y);
+        for _ in 0..ax + ay {
+            if error < 0 {
+                x += sx;
+                error += 2 * ay;
+            } else {
+                y += sy;
+                error -= 2 * ax;
+            }
+            self.mark(x, y);
+        }
+    }
+
+    /// Each cell's distance in cells to the nearest wall cell (the larger of the column and
+    /// row differences): two passes over the raster, each taking the smaller of a cell and its
+    /// already-passed neighbours' plus one.
+    fn count_clearance(&mut self) {
+        let (w, h) = (self.width, self.height);
+        let c = &mut self.clearance;
+        let near = |v: u8| v.saturating_add(1);
+        for r in 0..h {
+            for x in 0..w {
+                let k = r * w + x;
+                let mut v = c[k];
+                if x > 0 {
+                    v = v.min(near(c[k - 1]));
+                }
+                if r > 0 {
+                    v = v.min(near(c[k - w]));
+                    if x > 0 {
+                        v = v.min(near(c[k - w - 1]));
+                    }
+                    if x + 1 < w {
+                        v = v.min(near(c[k - w + 1]));
+                    }
+                }
+                c[k] = v;
+            }
+        }
+        for r in (0..h).rev() {
+            for x in (0..w).rev() {
+                let k = r * w + x;
+                let mut v = c[k];
+                if x + 1 < w {
+                    v = v.min(near(c[k + 1]));
+                }
+                if r + 1 < h {
+                    v = v.min(near(c[k + w]));
+                    if x + 1 < w {
+                        v = v.min(near(c[k + w + 1]));
+                    }
+                    if x > 0 {
+                        v = v.min(near(c[k + w - 1]));
+                    }
+                }
+                c[k] = v;
+            }
+        }
+    }
+
+    /// Clearance of global cell `(x, y)`: 0 on a wall; outside the raster, how far it lies
+    /// outside (no wall is nearer).
+    #[inline]
+    pub(super) fn clearance(&self, x: i64, y: i64) -> u32 {
+        let (c, r) = (x - self.first.0, y - self.first.1);
+        if c >= 0 && r >= 0 && (c as usize) < self.width && (r as usize) < self.height {
+            return u32::from(self.clearance[r as usize * self.width + c as usize]);
+        }
+        let outside = |v: i64, n: usize| {
+            if v < 0 { -v } else { (v - n as i64 + 1).max(0) }
+        };
+        let far = outside(c, self.width).max(outside(r, self.height));
+        far.clamp(1, i64::from(MAX_CLEARANCE)) as u32
+    }
+
+    /// Is global cell `(x, y)` a wall?
+    pub fn is_wall(&self, x: i64, y: i64) -> bool {
+        self.clearance(x, y) == 0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn raster_of(cells: &[(i64, i64)]) -> WallRaster {
+        let (x0, y0) = (-10, -10);
+        let mut r = WallRaster {
+            resolution: 0.02,
+            per_metre: 50.0,
+            first: (x0, y0),
+            width: 40,
+            height: 30,
+            clearance: vec![MAX_CLEARANCE; 1200],
+        };
+        for &(x, y) in cells {
+            r.mark(x, y);
+        }
+        r.count_clearance();
+        r
+    }
+
+    #[test]
+    fn clearance_is_the_distance_to_the_nearest_wall_cell() {
+        let walls = [(0, 0), (5, -3), (12, 12), (-8, 15)];
+        let r = raster_of(&walls);
+        for y in -10..20 {
+            for x in -10..30 {
+                let want = walls
+                    .iter()
+                    .map(|&(a, b)| (a - x).abs().max((b - y).abs()))
+                    .min()
+                    .unwrap();
+                assert_eq!(i64::from(r.clearance(x, y)), want, "({x}, {y})");
+            }
+        }
+        // Outside: at least a cell, growing with the distance.
+        assert_eq!(r.clearance(-40, 0), 30);
+    }
+
+    #[test]
+    fn a_line_is_four_connected_and_ends_at_both_ends() {
+        let mut r = raster_of(&[]);
+        r.mark_line((-5, -5), (7, 2));
+        let walls: Vec<(i64, i64)> = (-10..30)
+            .flat_map(|x| (-10..20).map(move |y| (x, y)))
+            .filter(|&(x, y)| r.clearance[((y + 10) * 40 + x + 10) as usize] == 0)
+            .collect();
+        assert_eq!(walls.len(), 12 + 7 + 1);
+        assert!(walls.contains(&(-5, -5)) && walls.contains(&(7, 2)));
+    }
+}
