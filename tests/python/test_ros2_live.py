@@ -31,23 +31,9 @@ def player_ros2() -> pathlib.Path:
 
 def peer(mode, world, player_sim, player_ros2):
     """What the Cyclone DDS peer saw, in a network namespace of its own."""
-    done = subprocess.run(
-        [
-            "unshare",
-            "-n",
-            sys.executable,
-            ROOT / "tests" / "python" / "ros2_peer.py",
-            mode,
-            player_sim,
-            player_ros2,
-            ROOT / "stage-worlds" / world,
-        ],
-        capture_output=True,
-        text=True,
-        timeout=180,
+    return in_a_namespace(
+        "ros2_peer.py", mode, player_sim, player_ros2, ROOT / "stage-worlds" / world
     )
-    assert done.returncode == 0, done.stderr[-3000:] + done.stdout[-2000:]
-    return json.loads(done.stdout.strip().splitlines()[-1])
 
 
 needs_a_namespace = pytest.mark.skipif(

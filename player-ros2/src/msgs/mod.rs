@@ -5,6 +5,7 @@
 mod builtin;
 mod geometry;
 mod nav;
+mod octets;
 mod sensor;
 
 pub use builtin::{Clock, Header, Time};

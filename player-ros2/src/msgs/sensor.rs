@@ -73,6 +73,7 @@ pub struct Image {
     pub is_bigendian: u8,
     /// Bytes per row.
     pub step: u32,
+    #[serde(with = "super::octets")]
     pub data: Vec<u8>,
 }
 
@@ -90,6 +91,7 @@ pub struct CompressedImage {
     pub header: Header,
     /// `jpeg` or `png`.
     pub format: String,
+    #[serde(with = "super::octets")]
     pub data: Vec<u8>,
 }
 
@@ -166,6 +168,7 @@ pub struct PointCloud2 {
     pub is_bigendian: bool,
     pub point_step: u32,
     pub row_step: u32,
+    #[serde(with = "super::octets")]
     pub data: Vec<u8>,
     pub is_dense: bool,
 }
