@@ -25,6 +25,7 @@ use player_proto::client::{Client, ClientOptions};
 use player_proto::interfaces::laser::Laser;
 use player_proto::message::Body;
 use player_proto::wire::{DevAddr, Interface};
+use player_ros2::convert::MAPPED;
 use player_ros2::msgs::{LaserScan, Time};
 use ros2_client::qos::{Durability, History, Reliability};
 use ros2_client::{
@@ -211,8 +212,13 @@ fn player_clients(n: u16, news: &Arc<News>) -> Result<Vec<Client>> {
                 ..ClientOptions::default()
             };
             let client = Client::connect("127.0.0.1", port, options)?;
-            client.subscribe(client.addr(Interface::LASER, 0))?;
-            client.subscribe(client.addr(Interface::POSITION2D, 0))?;
+            // What the bridge subscribes to: every device ROS 2 has a counterpart for (a
+            // swarm robot's laser, its base, and the ranger its laser is made from).
+            for device in client.devices() {
+                if MAPPED.contains(&device.addr.interf) {
+                    client.subscribe(device.addr)?;
+                }
+            }
             Ok(client)
         })
         .collect()
