@@ -152,12 +152,18 @@ function worldTransform() {
   ctx.setTransform(view.zoom, 0, 0, -view.zoom, canvas.width / 2 - view.x * view.zoom, canvas.height / 2 + view.y * view.zoom);
 }
 
-function draw() {
+// The robots' data comes at about 10 Hz: drawing more often than this redraws the same
+// poses, and at a thousand robots costs the watching machine more than the relay.
+const DRAW_EVERY_MS = 50;
+let drawnAt = -Infinity;
+
+function draw(now) {
   requestAnimationFrame(draw);
   const ratio = window.devicePixelRatio || 1;
   const w = Math.round(canvas.clientWidth * ratio), h = Math.round(canvas.clientHeight * ratio);
   if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; dirty = true; }
-  if (!dirty) return;
+  if (!dirty || now - drawnAt < DRAW_EVERY_MS) return;
+  drawnAt = now;
   dirty = false;
   if (!view.userMoved) frame();
   ctx.setTransform(1, 0, 0, 1, 0, 0);

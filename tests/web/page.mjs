@@ -10,8 +10,8 @@
 //   node page.mjs link    URL ROBOT SECONDS           ROBOT's link states as the page showed them
 //   node page.mjs find    URL TEXT                    the summary and rows listed, before and after typing TEXT in Find
 //   node page.mjs watch   URL SECONDS                 once every robot has a pose prints WATCHING, then after
-//                                                     SECONDS the rows' rates: position2d Hz (min, median), how
-//                                                     many devices are shown, and the robots with a scan drawn
+//                                                     SECONDS the listed rows' position2d Hz (min, median), their
+//                                                     devices shown and not, and the robots with a scan drawn
 import { chromium } from "playwright-core";
 
 const CHROMIUM = process.env.CHROMIUM || "/usr/bin/chromium";
@@ -49,20 +49,23 @@ async function settle(page) {
 async function watch(page, seconds) {
   await page.waitForFunction(() => {
     const w = window.playerWeb;
-    if (!w || w.robots.size === 0 || w.rows.length === 0) return false;
+    if (!w || w.robots.size === 0 || !document.querySelector("#rows tbody tr")) return false;
     for (const [name] of w.robots) if (!w.screenOf(name, 0)) return false;
     return true;
   }, null, { timeout: 60000, polling: 500 });
   console.log("WATCHING");
   await page.waitForTimeout(Number(seconds) * 1000);
+  // The rows as the page lists them (its first 60), read from what it shows.
   return await page.evaluate(() => {
     const w = window.playerWeb;
-    const hz = [], shown = [];
-    for (const row of w.rows) {
-      for (const d of row.devices) {
-        if (d.device.startsWith("position2d:")) hz.push(d.hz);
-        if (d.shown) shown.push(d.device);
-      }
+    const hz = [];
+    let shown = 0, unshown = 0;
+    for (const span of document.querySelectorAll("#rows tbody tr span.device")) {
+      const text = span.textContent;
+      const rate = /^position2d:\d+ ([0-9.]+) Hz/.exec(text);
+      if (rate) hz.push(Number(rate[1]));
+      if (text.includes("not shown")) unshown += 1;
+      else shown += 1;
     }
     hz.sort((a, b) => a - b);
     let scans = 0;
@@ -72,9 +75,10 @@ async function watch(page, seconds) {
     }
     return {
       robots: w.robots.size,
-      rows: w.rows.length,
+      listed: document.querySelectorAll("#rows tbody tr").length,
       poseHz: { min: hz[0] ?? 0, median: hz[Math.floor(hz.length / 2)] ?? 0 },
-      shown: shown.length,
+      shown,
+      unshown,
       scans,
     };
   });
