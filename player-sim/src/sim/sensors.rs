@@ -168,6 +168,9 @@ fn scan_with<F: Fn(usize, f64) -> Option<Hit>>(
             count: n,
         };
         let caster = prepare(origin, sensor.max_range, fan, sensor.z);
+        // No noise of the sensor's own nor of the run's: every reading is the range itself,
+        // without a draw per beam.
+        let quiet = sensor.noise.is_none() && sim.noise.range_sd <= 0.0;
         for i in 0..n {
             let draw = [sim.steps, robot as u64, place, index as u64, i as u64];
             let turn = sim.noise.beam_turn(&sensor.noise, step, &draw);
@@ -175,6 +178,7 @@ fn scan_with<F: Fn(usize, f64) -> Option<Hit>>(
             let (reading, intensity) = match caster(i, angle) {
                 // A beam that hits nothing reads the maximum, as a real one does: no noise.
                 None => (sensor.max_range, 0.0),
+                Some((range, intensity)) if quiet => (range, intensity),
                 Some((range, intensity)) => (
                     sim.noise.reading(
                         range,
