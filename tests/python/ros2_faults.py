@@ -27,17 +27,15 @@ import signal
 import subprocess
 import sys
 import time
-from dataclasses import dataclass
 
 from cyclonedds.core import Policy, Qos
 from cyclonedds.domain import DomainParticipant
-from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.types import array, sequence, uint8
 from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
 from cyclonedds.util import duration
 
+from ros2_graph import Graph
 from ros2_peer import (
     RELIABLE,
     LaserScan,
@@ -50,36 +48,7 @@ from ros2_peer import (
 )
 
 
-@dataclass
-class Gid(IdlStruct, typename="rmw_dds_common::msg::dds_::Gid_"):
-    """Humble's 24 bytes (Iron and later: 16), as ros2-client's `humble` feature writes it."""
-
-    data: array[uint8, 24]
-
-
-@dataclass
-class NodeEntitiesInfo(IdlStruct, typename="rmw_dds_common::msg::dds_::NodeEntitiesInfo_"):
-    node_namespace: str
-    node_name: str
-    reader_gid_seq: sequence[Gid]
-    writer_gid_seq: sequence[Gid]
-
-
-@dataclass
-class ParticipantEntitiesInfo(
-    IdlStruct, typename="rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_"
-):
-    gid: Gid
-    node_entities_info_seq: sequence[NodeEntitiesInfo]
-
-
 BEST_EFFORT = Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(5))
-DISCOVERY = Qos(
-    Policy.Reliability.Reliable(duration(seconds=1)),
-    Policy.Durability.TransientLocal,
-    Policy.History.KeepLast(1),
-)
-
 
 def teleop(name):
     """Drives robot `name` forward at 0.5 m/s, 10 Hz, until killed."""
@@ -88,24 +57,6 @@ def teleop(name):
     while True:
         writer.write(Twist(linear=Vector3(x=0.5)))
         time.sleep(0.1)
-
-
-class Graph:
-    """The nodes ROS 2's graph says there are, from ros_discovery_info: each participant's
-    newest list, kept by participant."""
-
-    def __init__(self, participant):
-        topic = Topic(participant, "ros_discovery_info", ParticipantEntitiesInfo)
-        self.reader = DataReader(participant, topic, qos=DISCOVERY)
-        self.lists = {}
-
-    def nodes(self):
-        for info in self.reader.take(100):
-            self.lists[bytes(info.gid.data)] = {
-                f"{n.node_namespace.rstrip('/')}/{n.node_name}"
-                for n in info.node_entities_info_seq
-            }
-        return set().union(*self.lists.values()) if self.lists else set()
 
 
 def start_sim(player_sim, world, port):

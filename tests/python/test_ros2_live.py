@@ -145,3 +145,28 @@ def test_faults_a_quiet_domain_a_dead_teleop_a_robot_gone_and_back(
     assert "b: lost its Player server (the server closed the connection)" in log, log
     assert "b: back in ROS 2 as /b/player" in log, log
     assert "a: no cmd_vel for half a second: stopping" in log, log
+
+
+@pytest.fixture(scope="session")
+def player_ros2_jazzy(player_ros2) -> pathlib.Path:
+    """player-ros2 built with the `jazzy` feature (ROS 2's graph with Iron's 16-byte ids),
+    copied aside; the plain build is put back for the other tests."""
+    build = ["cargo", "build", "-q", "-p", "player-ros2", "--bin", "player-ros2"]
+    subprocess.run([*build, "--features", "jazzy"], cwd=ROOT, check=True)
+    jazzy = ROOT / "target" / "debug" / "player-ros2-jazzy"
+    shutil.copy2(player_ros2, jazzy)
+    subprocess.run(build, cwd=ROOT, check=True)
+    return jazzy
+
+
+@needs_a_namespace
+def test_ros2_node_list_finds_the_robot_in_humbles_graph_and_with_jazzy_in_jazzys(
+    player_sim, player_ros2, player_ros2_jazzy
+):
+    world = ROOT / "stage-worlds" / "simple.world"
+    for program, gid_bytes in [(player_ros2, 24), (player_ros2_jazzy, 16)]:
+        seen = in_a_namespace("ros2_graph.py", str(gid_bytes), player_sim, program, world)
+        assert seen["nodes"] == ["/a/player"], (program.name, gid_bytes, seen)
+    # Read with the other ROS 2's ids, a graph names nothing: the build decides who sees it.
+    seen = in_a_namespace("ros2_graph.py", "16", player_sim, player_ros2, world, "5")
+    assert seen["nodes"] == [], seen
