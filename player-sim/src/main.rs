@@ -51,8 +51,9 @@ struct Cli {
     #[arg(long)]
     port_base: Option<u16>,
 
-    /// Simulated seconds per real second (0: as fast as possible); by default 1, and 0 in
-    /// lockstep, where the clients set the pace.
+    /// Simulated seconds per real second (0: as fast as possible); by default the world's
+    /// `speedup` (Stage's, 0 or less as fast as possible), else 1, and 0 in lockstep, where the
+    /// clients set the pace.
     #[arg(long)]
     speedup: Option<f64>,
 
@@ -114,6 +115,18 @@ fn main() -> ExitCode {
     }
 }
 
+/// Simulated seconds per real second: `--speedup` when given; in lockstep as fast as the
+/// clients answer; else the world's own `speedup` (Stage honours it only in its window: here it
+/// holds headless too, a Stage `speedup` of 0 or -1 being as fast as possible), else real time.
+fn pace(given: Option<f64>, lockstep: bool, world: Option<f64>) -> f64 {
+    match (given, lockstep, world) {
+        (Some(speedup), _, _) => speedup,
+        (None, true, _) => 0.0,
+        (None, false, Some(speedup)) if speedup.is_finite() => speedup.max(0.0),
+        (None, false, _) => 1.0,
+    }
+}
+
 fn run(cli: Cli) -> Result<()> {
     if let Some(path) = &cli.replay {
         return replay(path, &cli);
@@ -121,11 +134,12 @@ fn run(cli: Cli) -> Result<()> {
     let Some(world_path) = &cli.world else {
         anyhow::bail!("name a world file, or a recording with --replay");
     };
-    let speedup = cli.speedup.unwrap_or(if cli.lockstep { 0.0 } else { 1.0 });
-    anyhow::ensure!(
-        speedup >= 0.0 && speedup.is_finite(),
-        "--speedup must be 0 or more"
-    );
+    if let Some(speedup) = cli.speedup {
+        anyhow::ensure!(
+            speedup >= 0.0 && speedup.is_finite(),
+            "--speedup must be 0 or more"
+        );
+    }
     anyhow::ensure!(
         cli.range_noise >= 0.0 && cli.range_noise.is_finite(),
         "--range-noise must be 0 or more metres"
@@ -135,6 +149,7 @@ fn run(cli: Cli) -> Result<()> {
         "--patience must be 0 (for ever) or more seconds"
     );
     let world = World::load(world_path)?;
+    let speedup = pace(cli.speedup, cli.lockstep, world.speedup);
     let max_steps = match cli.until {
         Some(seconds) => {
             anyhow::ensure!(
@@ -283,5 +298,18 @@ mod tests {
         );
         assert_eq!(super::port_ranges(&[6665]), "6665");
         assert_eq!(super::port_ranges(&[65534, 65535]), "65534–65535");
+    }
+
+    #[test]
+    fn the_world_sets_the_pace_unless_told() {
+        use super::pace;
+        // Stage's simple.world says `speedup 0`; some worlds -1 (both: as fast as possible).
+        assert_eq!(pace(None, false, Some(0.0)), 0.0);
+        assert_eq!(pace(None, false, Some(-1.0)), 0.0);
+        assert_eq!(pace(None, false, Some(4.0)), 4.0);
+        assert_eq!(pace(None, false, None), 1.0);
+        assert_eq!(pace(Some(2.0), false, Some(0.0)), 2.0);
+        assert_eq!(pace(None, true, Some(4.0)), 0.0);
+        assert_eq!(pace(Some(3.0), true, None), 3.0);
     }
 }

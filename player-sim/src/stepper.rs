@@ -2,8 +2,8 @@
 //! or in lockstep when its clients have answered, then each subscribed device's data published
 //! — and, when the simulation records itself, every device's data recorded.
 
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use player_proto::capture::Direction;

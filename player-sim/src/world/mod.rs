@@ -208,6 +208,8 @@ pub struct World {
     /// Metres per cell of the grid block floorplans are drawn into (the world's `resolution`,
     /// 0.02 as in Stage unless set).
     pub resolution: f64,
+    /// The world's `speedup`, if it sets one (0 or less: as fast as possible).
+    pub speedup: Option<f64>,
     /// The floorplan's wall height (its size's z) and colour, for the camera.
     pub floor_height: f64,
     pub floor_color: [u8; 3],
@@ -311,8 +313,12 @@ impl World {
                     &p.pos,
                 );
             }
-            // Real-time pacing is the server's choice (--speedup); these change nothing here.
-            "paused" | "speedup" | "quit_time" | "threads" => {}
+            // Simulated seconds per real second, 0 or less as fast as possible: what player-sim
+            // runs at headless unless --speedup says otherwise (Stage honours it only in its
+            // window).
+            "speedup" => self.speedup = Some(number(p)?),
+            // Pacing is the server's; these change nothing here.
+            "paused" | "quit_time" | "threads" => {}
             other => self.ignore(&format!("world property {other}"), &p.pos),
         }
         Ok(())
