@@ -12,7 +12,7 @@
 //! that west and south of the origin a ray meets a wall one cell before the cell the wall was
 //! marked in. Matching that keeps readings there within a cell of Stage's instead of two.
 
-use super::wall_raster::WallRaster;
+use super::wall_raster::{WallRaster, quadrant};
 use crate::world::floor_i64;
 
 /// The cell Stage's ray looks into for a point in floored cell `k` (see the module's note).
@@ -42,6 +42,7 @@ impl WallRaster {
         // to y, as a tie goes in Stage.
         let x_longer = dx.abs() > dy.abs() + 1e-12;
         let longer = if x_longer { dx.abs() } else { dy.abs() };
+        let q = quadrant(dx, dy);
         let x_axis = Axis::new(gx, dx);
         let y_axis = Axis::new(gy, dy);
         // Along the ray, in cells: where the walk (re)starts.
@@ -54,7 +55,7 @@ impl WallRaster {
             // Whether the ray entered its cell across a face of the longer axis.
             let mut across_longer = false;
             loop {
-                let clear = self.clearance(looked_into(kx), looked_into(ky));
+                let clear = self.ahead(looked_into(kx), looked_into(ky), q);
                 if clear == 0 {
                     // Stage measures a ray in whole cells along its longer axis: through a
                     // face across that axis, the first whole step past it.
@@ -66,8 +67,8 @@ impl WallRaster {
                     return (cells <= reach).then_some(cells / self.per_metre);
                 }
                 if clear >= JUMP_FROM {
-                    // Every cell whose looked-into cell is within `clear - 1` of this one's is
-                    // free: jump to just before the ray leaves them along either axis.
+                    // Every cell whose looked-into cell is within `clear - 1` of this one's the
+                    // way the ray heads is free: jump to just before the ray leaves them.
                     let d = i64::from(clear) - 1;
                     let free = x_axis.free(kx, d, entered).min(y_axis.free(ky, d, entered));
                     from = entered + free - 1e-9;

@@ -33,6 +33,17 @@ pub struct WallRaster {
     /// Row-major from the south: 0 on a wall cell, else the distance in cells (the larger of
     /// the column and row differences) to the nearest wall cell, at most [`MAX_CLEARANCE`].
     clearance: Vec<u8>,
+    /// For a ray heading into each quarter of directions (east-north, west-north, east-south,
+    /// west-south: [`quadrant`]), the side of the largest square of free cells with this cell
+    /// at its corner and the rest of it that way, at most [`MAX_CLEARANCE`]: a ray moving away
+    /// from a wall beside or behind it jumps as far as the walls ahead allow.
+    ahead: [Vec<u8>; 4],
+}
+
+/// Which quarter of directions `(dx, dy)` heads into: an index into [`WallRaster`]'s squares.
+#[inline]
+pub(super) fn quadrant(dx: f64, dy: f64) -> usize {
+    usize::from(dx < 0.0) | usize::from(dy < 0.0) << 1
 }
 
 impl WallRaster {
@@ -104,6 +115,7 @@ impl WallRaster {
             width: w as usize,
             height: h as usize,
             clearance: vec![MAX_CLEARANCE; (w * h) as usize],
+            ahead: Default::default(),
         };
         for (x0, y0, x1, y1) in marks {
             for y in y0..=y1 {
@@ -191,6 +203,52 @@ impl WallRaster {
                 c[k] = v;
             }
         }
+        self.ahead = std::array::from_fn(|q| self.squares(q & 1 == 1, q & 2 == 2));
+    }
+
+    /// The free squares reaching west (else east) and south (else north) of each cell: a free
+    /// cell's square is one more than the smallest of its three neighbours' that way (beyond
+    /// the raster no wall stands).
+    fn squares(&self, west: bool, south: bool) -> Vec<u8> {
+        let (w, h) = (self.width, self.height);
+        let mut out = vec![0u8; w * h];
+        let columns: Vec<usize> = if west {
+            (0..w).collect()
+        } else {
+            (0..w).rev().collect()
+        };
+        let rows: Vec<usize> = if south {
+            (0..h).collect()
+        } else {
+            (0..h).rev().collect()
+        };
+        for &r in &rows {
+            let next_row = if south {
+                r.checked_sub(1)
+            } else {
+                Some(r + 1).filter(|&n| n < h)
+            };
+            for &x in &columns {
+                let k = r * w + x;
+                if self.clearance[k] == 0 {
+                    continue;
+                }
+                let next_x = if west {
+                    x.checked_sub(1)
+                } else {
+                    Some(x + 1).filter(|&n| n < w)
+                };
+                let at = |c: Option<usize>, row: Option<usize>| match (c, row) {
+                    (Some(c), Some(row)) => out[row * w + c],
+                    _ => MAX_CLEARANCE,
+                };
+                let smallest = at(next_x, Some(r))
+                    .min(at(Some(x), next_row))
+                    .min(at(next_x, next_row));
+                out[k] = smallest.saturating_add(1);
+            }
+        }
+        out
     }
 
     /// Clearance of global cell `(x, y)`: 0 on a wall; outside the raster, how far it lies
@@ -206,6 +264,17 @@ impl WallRaster {
         };
         let far = outside(c, self.width).max(outside(r, self.height));
         far.clamp(1, i64::from(MAX_CLEARANCE)) as u32
+    }
+
+    /// The free square of global cell `(x, y)` for a ray heading into quarter `q` (see
+    /// [`WallRaster::ahead`]): 0 on a wall; outside the raster, its clearance.
+    #[inline]
+    pub(super) fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
+        let (c, r) = (x - self.first.0, y - self.first.1);
+        if c >= 0 && r >= 0 && (c as usize) < self.width && (r as usize) < self.height {
+            return u32::from(self.ahead[q][r as usize * self.width + c as usize]);
+        }
+        self.clearance(x, y)
     }
 
     /// Is global cell `(x, y)` a wall?
@@ -227,6 +296,7 @@ mod tests {
             width: 40,
             height: 30,
             clearance: vec![MAX_CLEARANCE; 1200],
+            ahead: Default::default(),
         };
         for &(x, y) in cells {
             r.mark(x, y);
