@@ -117,17 +117,25 @@ fn phase(
         ];
         viewers.push(("Foxglove", Viewer::start("foxglove_client.mjs", &args)?));
     }
-    for (_, viewer) in &viewers {
-        viewer.watching(VIEWER_READY)?;
+    // A viewer that never shows everything (the relay before watching could not list a
+    // thousand robots on a loaded machine) is said in the row; the relay is measured anyway.
+    let mut seen = Vec::new();
+    let mut watching = Vec::new();
+    for (what, viewer) in viewers {
+        match viewer.watching(VIEWER_READY) {
+            Ok(()) => watching.push((what, viewer)),
+            Err(e) => seen.push(format!("{what}: did not show every robot ({e})")),
+        }
     }
     std::thread::sleep(Duration::from_secs(1));
     let before = relay.sample()?;
     std::thread::sleep(Duration::from_secs_f64(args.seconds));
     let after = relay.sample()?;
-    let mut seen = Vec::new();
-    for (what, viewer) in viewers {
-        let saw = viewer.finish(Duration::from_secs_f64(args.seconds + 30.0))?;
-        seen.push(format!("{what}: {saw}"));
+    for (what, viewer) in watching {
+        match viewer.finish(Duration::from_secs_f64(args.seconds + 30.0)) {
+            Ok(saw) => seen.push(format!("{what}: {saw}")),
+            Err(e) => seen.push(format!("{what}: {e}")),
+        }
     }
     Ok(Phase {
         name,
