@@ -3,14 +3,15 @@
 //! configurations (in replies, or in data), a map's info and its tiles one reply at a time —
 //! remembered, so that echoes can be placed and a map put together when it is whole.
 
-use std::collections::HashMap;
+use std::collections::{BTreeSet, HashMap};
 
 use player_proto::interfaces::common::Pose3d;
 use player_proto::interfaces::map::Map;
+use player_proto::interfaces::player::Player;
 use player_proto::interfaces::ranger::{Ranger, RangerConfig, RangerGeometry};
 use player_proto::interfaces::sonar::Sonar;
 use player_proto::message::{Body, Message};
-use player_proto::wire::MsgType;
+use player_proto::wire::{Interface, MsgType};
 
 use crate::convert::{MAP_FRAME, convert, map_topic};
 use crate::map::MapTiles;
@@ -27,6 +28,10 @@ pub struct Converter {
     sonars: HashMap<u16, Vec<Pose3d>>,
     rangers: HashMap<u16, RangerState>,
     maps: HashMap<u16, MapTiles>,
+    /// The robot's bases (position2d indices): several robots on one port number their devices
+    /// alike, and a device of index `i` belongs to base `i` where there is one (pv3d binds them
+    /// so); where there is none (one robot's second ranger) it is base 0's.
+    bases: BTreeSet<u16>,
 }
 
 impl Converter {
@@ -40,6 +45,21 @@ impl Converter {
 
     pub fn namespace(&self) -> &str {
         &self.ns
+    }
+
+    /// position2d `index` is one of the robot's bases.
+    pub fn base(&mut self, index: u16) {
+        self.bases.insert(index);
+    }
+
+    /// The frame a device of `index` is placed in: its base's.
+    pub fn base_frame(&self, index: u16) -> String {
+        let base = if self.bases.contains(&index) {
+            index
+        } else {
+            0
+        };
+        frame(&self.ns, "base_link", base)
     }
 
     /// Sonar `index`'s transducers, on the robot.
@@ -62,14 +82,25 @@ impl Converter {
         let header = &message.header;
         let index = header.addr.index;
         let stamp = Time::from_seconds(header.timestamp);
+        if header.addr.interf == Interface::POSITION2D {
+            self.base(index);
+        }
         match (&message.body, header.msg_type) {
+            (Body::Player(Player::DevList(list)), MsgType::Ack) => {
+                for addr in &list.devices {
+                    if addr.interf == Interface::POSITION2D {
+                        self.base(addr.index);
+                    }
+                }
+                Vec::new()
+            }
             (Body::Sonar(Sonar::Geometry(g) | Sonar::GeometryData(g)), _) => {
                 self.sonar_geometry(index, &g.poses);
                 Vec::new()
             }
             (Body::Sonar(Sonar::Ranges(data)), MsgType::Data) => {
                 let poses = self.sonars.get(&index).map_or(&[][..], |p| &p[..]);
-                let at = Header::new(stamp, frame(&self.ns, "base_link", 0));
+                let at = Header::new(stamp, self.base_frame(index));
                 crate::ranges::sonar(at, poses, &data.ranges)
                     .map(|cloud| {
                         let topic = topic(&self.ns, "sonar", index);
@@ -118,7 +149,7 @@ impl Converter {
 
     fn ranger_ranges(&self, index: u16, stamp: Time, ranges: &[f64]) -> Vec<Converted> {
         let state = self.rangers.get(&index).cloned().unwrap_or_default();
-        let at = Header::new(stamp, frame(&self.ns, "base_link", 0));
+        let at = Header::new(stamp, self.base_frame(index));
         match crate::ranges::ranger(at, &state, ranges) {
             Some(cloud) => vec![Converted::new(
                 topic(&self.ns, "range", index),
@@ -185,6 +216,39 @@ mod tests {
             (cloud.width, cloud.header.frame_id.as_str()),
             (2, "r0/base_link")
         );
+        // Sonar 1: one robot's second sonar while the port has one base, the second robot's
+        // once it has position2d:1.
+        let on_second = |m: &Message| {
+            let mut m = m.clone();
+            m.header.addr.index = 1;
+            m
+        };
+        assert!(r0.convert(&on_second(&geometry)).is_empty());
+        let frame_of = |r0: &mut Converter| {
+            let out = r0.convert(&on_second(&ranges));
+            assert_eq!(out[0].topic, "/r0/sonar_1");
+            let RosOut::PointCloud2(cloud) = &out[0].message else {
+                panic!("a cloud");
+            };
+            cloud.header.frame_id.clone()
+        };
+        assert_eq!(frame_of(&mut r0), "r0/base_link");
+        // The server's device list names position2d:1 (a recording has it before any data).
+        let devices = player_proto::interfaces::player::DevList {
+            devices: vec![addr(Interface::POSITION2D), {
+                let mut second = addr(Interface::POSITION2D);
+                second.index = 1;
+                second
+            }],
+        };
+        let list = Message::new(
+            addr(Interface::PLAYER),
+            MsgType::Ack,
+            player_proto::interfaces::player::REQ_DEVLIST,
+            Body::Player(Player::DevList(devices)),
+        );
+        assert!(r0.convert(&list).is_empty());
+        assert_eq!(frame_of(&mut r0), "r0/base_link_1");
     }
 
     #[test]

@@ -23,6 +23,8 @@ use crate::names::frame;
 /// What the robot said of itself.
 #[derive(Debug, Default)]
 pub struct Described {
+    /// position2d indices: the robots' bases on this port.
+    bases: Vec<u16>,
     lasers: Vec<(u16, Pose3d)>,
     sonars: Vec<(u16, Vec<Pose3d>)>,
     ranger_geometries: Vec<(u16, RangerGeometry)>,
@@ -40,6 +42,7 @@ pub fn describe(robot: &RobotId, client: &Client) -> Described {
         let addr = device.addr;
         let index = addr.index;
         match addr.interf {
+            Interface::POSITION2D => said.bases.push(index),
             Interface::LASER => match client.fetch(addr, Laser::REQ_GET_GEOM) {
                 Ok(g) => said.lasers.push((index, g.pose)),
                 Err(e) => missing(addr, "geometry", &e),
@@ -72,7 +75,9 @@ impl Described {
     /// Gives `node` what the robot said: geometries to its conversion, its lasers' places on
     /// `/tf_static`, its maps on `/map`.
     pub fn publish(self, robot: &RobotId, node: &mut RobotNode) {
-        let ns = node.namespace().to_string();
+        for index in &self.bases {
+            node.converter().base(*index);
+        }
         for (index, poses) in &self.sonars {
             node.converter().sonar_geometry(*index, poses);
         }
@@ -89,12 +94,13 @@ impl Described {
                 Err(e) => tracing::warn!("{robot}: {e}"),
             }
         }
+        let converter = node.converter().clone();
         let transforms: Vec<_> = self
             .lasers
             .iter()
             .map(|(index, pose)| TransformStamped {
-                header: Header::new(Time::default(), frame(&ns, "base_link", 0)),
-                child_frame_id: frame(&ns, "laser", *index),
+                header: Header::new(Time::default(), converter.base_frame(*index)),
+                child_frame_id: frame(converter.namespace(), "laser", *index),
                 transform: Transform {
                     translation: Vector3 {
                         x: pose.px,
