@@ -42,7 +42,8 @@ pub fn run(args: Args) -> Result<()> {
     if args.mcap || crate::mcap_file::named_mcap(&args.out) {
         return crate::mcap_file::export(reader, out, &args.file, &args.out);
     }
-    let stats = playerlog::export(reader, out)?;
+    let stats = playerlog::export(reader, out)
+        .with_context(|| format!("exporting {}", args.file.display()))?;
     eprintln!("wrote {} lines to {}", stats.lines, args.out.display());
     for ((interf, msg_type, subtype), count) in &stats.skipped {
         eprintln!(

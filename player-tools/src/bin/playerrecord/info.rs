@@ -45,6 +45,6 @@ pub fn run(args: Args) -> Result<()> {
             writeln!(out, "stops early (everything before is above): {e}")?;
             Ok(())
         }
-        Some(e) => bail!("read up to the damage only: {e}"),
+        Some(e) => bail!("{}: read up to the damage only: {e}", args.file.display()),
     }
 }
