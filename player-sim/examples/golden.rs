@@ -206,6 +206,24 @@ fn true_pose3d(client: &Client, robot: &str) -> Result<([f64; 3], f64)> {
 }
 
 /// The newest odometry's server time, waiting up to 10 s for one.
+/// The robot's true pose and the simulated time, `[t, x, y, a]`, sampled again and again for
+/// `span` simulated seconds (or `limit` wall seconds): one sample per simulated time.
+fn true_poses(client: &Client, robot: &str, span: f64, limit: u64) -> Result<Vec<[f64; 4]>> {
+    let mut samples: Vec<[f64; 4]> = Vec::new();
+    let deadline = Instant::now() + Duration::from_secs(limit);
+    while Instant::now() < deadline {
+        let (pose, time) = true_pose3d(client, robot)?;
+        if samples.last().is_some_and(|s| time <= s[0]) {
+            continue;
+        }
+        samples.push([time, pose[0], pose[1], pose[2]]);
+        if time >= samples[0][0] + span {
+            break;
+        }
+    }
+    Ok(samples)
+}
+
 fn odometry_time(client: &Client) -> Result<f64> {
     wait(|| client.position2d(0).state().map(|(_, s)| s.server_time))
 }
@@ -286,18 +304,7 @@ fn drive(port: u16, robot: &str, start: Pose, (vx, va): (f64, f64), steps: u32) 
     // The true pose and simulated time while the command holds, asked again and again: Player
     // answers a request only every few steps, so a test drives from one sample to another
     // (steps apart by their simulated times) instead of from the command's first step.
-    let mut samples: Vec<[f64; 4]> = Vec::new();
-    let deadline = Instant::now() + Duration::from_secs(30);
-    while Instant::now() < deadline {
-        let (pose, time) = true_pose3d(&client, robot)?;
-        if samples.last().is_some_and(|s| time <= s[0]) {
-            continue;
-        }
-        samples.push([time, pose[0], pose[1], pose[2]]);
-        if time >= samples[0][0] + f64::from(steps) * dt {
-            break;
-        }
-    }
+    let samples = true_poses(&client, robot, f64::from(steps) * dt, 30)?;
     base.set_velocity(0.0, 0.0, 0.0);
     let line = serde_json::json!({
         "start": [start.x, start.y, start.a],
@@ -350,18 +357,7 @@ fn goto(port: u16, robot: &str, index: u16, goal: Pose, steps: u32) -> Result<()
         (t > first).then_some(t - first)
     })?;
     base.go_to(Pose2d::new(goal.x, goal.y, goal.a));
-    let mut samples: Vec<[f64; 4]> = Vec::new();
-    let deadline = Instant::now() + Duration::from_secs(60);
-    while Instant::now() < deadline {
-        let (pose, time) = true_pose3d(&client, robot)?;
-        if samples.last().is_some_and(|s| time <= s[0]) {
-            continue;
-        }
-        samples.push([time, pose[0], pose[1], pose[2]]);
-        if time >= samples[0][0] + f64::from(steps) * dt {
-            break;
-        }
-    }
+    let samples = true_poses(&client, robot, f64::from(steps) * dt, 60)?;
     base.set_velocity(0.0, 0.0, 0.0);
     let line = serde_json::json!({
         "goal": [goal.x, goal.y, goal.a],

@@ -244,16 +244,7 @@ impl Drop for Hold<'_> {
 mod tests {
     use super::*;
     use crate::sim::Simulation;
-
-    /// A small deterministic generator (xorshift), for arrangements without a dependency.
-    fn randoms(mut state: u64) -> impl FnMut() -> f64 {
-        move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
+    use crate::sim::test_randoms::randoms;
 
     #[test]
     fn a_query_holds_every_robot_within_reach_in_order() {

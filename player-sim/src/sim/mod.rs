@@ -20,6 +20,8 @@ mod raster_walk;
 mod scan_caster;
 mod sensors;
 mod shapes;
+#[cfg(test)]
+mod test_randoms;
 mod walking;
 mod wall_beams;
 mod wall_raster;

@@ -158,17 +158,8 @@ impl Axis {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sim::test_randoms::randoms;
     use crate::world::OccupancyGrid;
-
-    /// A small deterministic generator (xorshift).
-    fn randoms(mut state: u64) -> impl FnMut() -> f64 {
-        move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
 
     /// The first wall cell along the ray by marching in steps of a thousandth of a cell.
     fn marched(r: &WallRaster, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<f64> {

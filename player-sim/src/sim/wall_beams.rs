@@ -68,19 +68,10 @@ fn beams_into(fan: Fan, x: f64, y: f64, rect: &WallRect) -> [(usize, usize); 2] 
 
 #[cfg(test)]
 mod tests {
+    use crate::sim::test_randoms::randoms;
     use std::f64::consts::PI;
 
     use super::*;
-
-    /// A small deterministic generator (xorshift).
-    fn randoms(mut state: u64) -> impl FnMut() -> f64 {
-        move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
 
     #[test]
     fn a_beam_left_out_meets_no_wall() {
