@@ -103,7 +103,12 @@ fn a_query_without_target_or_name_says_so() {
 #[test]
 fn a_missing_point_names_the_attribute() {
     let q = Query::parse(r#"<query to="z" name="which zone"><point x="1"/></query>"#).unwrap();
-    assert!(q.point().unwrap_err().contains("no y attribute"));
+    assert!(
+        q.point()
+            .unwrap_err()
+            .to_string()
+            .contains("no y attribute")
+    );
 }
 
 #[test]

@@ -7,7 +7,7 @@ use std::process::Stdio;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-use player_proto::recording::RecorderStats;
+use player_proto::recording::{RecorderError, RecorderStats};
 use player_sim::serve::{LockstepOptions, Running, ServeOptions, serve};
 use player_sim::served::{Source, devices_beside};
 use player_sim::sim::Simulation;
@@ -101,7 +101,8 @@ pub struct Outcome {
     pub wall: Duration,
     /// Whether the program ever commanded a device.
     pub commanded: bool,
-    pub recording: Result<RecorderStats, String>,
+    /// Shared, so that an outcome can be cloned with its error.
+    pub recording: Result<RecorderStats, std::sync::Arc<RecorderError>>,
     /// Said about the sandbox, when it is weaker than asked.
     pub sandbox_note: Option<String>,
 }
@@ -212,7 +213,7 @@ pub fn run(
     let commanded = running.lockstep.as_ref().is_some_and(|l| l.ever_driven());
     running.stop();
     drop(running);
-    let recording = recorder.finish().map_err(|e| e.to_string());
+    let recording = recorder.finish().map_err(std::sync::Arc::new);
     let _ = std::fs::remove_dir_all(&work);
     let trace = trace.lock().unwrap_or_else(|e| e.into_inner()).clone();
     Ok(Outcome {

@@ -4,6 +4,7 @@
 
 use bytes::Bytes;
 
+use crate::view_disagreement::ViewDisagreement;
 use crate::wire::{DevAddr, Header, Interface, MsgType};
 
 /// The header and body a fuzz input stands for: interface (2 bytes, modulo 70, so that every
@@ -27,6 +28,6 @@ pub fn message_parts(data: &[u8]) -> Option<(Header, Bytes)> {
 
 /// Whether reading `body` in place ([`crate::wire::xdr_view`]) agrees with decoding it: the
 /// same value, or the same error at the same byte. A description of the difference if not.
-pub fn view_agrees(header: &Header, body: &Bytes) -> Result<(), String> {
+pub fn view_agrees(header: &Header, body: &Bytes) -> Result<(), ViewDisagreement> {
     crate::message::Body::view_agrees(header, body)
 }

@@ -32,6 +32,8 @@ pub mod robot_id;
 pub mod server;
 pub mod summary;
 pub mod transport;
+#[doc(hidden)]
+pub mod view_disagreement;
 pub mod wire;
 
 #[cfg(test)]

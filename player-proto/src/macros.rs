@@ -223,7 +223,7 @@ macro_rules! interface_messages {
             fn view_agrees(
                 header: &$crate::wire::Header,
                 body: &::bytes::Bytes,
-            ) -> Result<(), String> {
+            ) -> Result<(), $crate::view_disagreement::ViewDisagreement> {
                 use $crate::wire::{Xdr, XdrView};
                 let class = header.msg_type.class();
                 let error = |e| $crate::message::DecodeError::from_xdr(*header, body, e).to_string();
@@ -242,7 +242,10 @@ macro_rules! interface_messages {
                             .map_err(error);
                         return match decoded == viewed {
                             true => Ok(()),
-                            false => Err(format!("decoded {decoded:?}, viewed {viewed:?}")),
+                            false => Err($crate::view_disagreement::ViewDisagreement {
+                                decoded: format!("{decoded:?}"),
+                                viewed: format!("{viewed:?}"),
+                            }),
                         };
                     }
                 )*

@@ -6,6 +6,7 @@ use std::fmt;
 use bytes::{Buf, BufMut, Bytes, BytesMut};
 
 use crate::interfaces;
+use crate::view_disagreement::ViewDisagreement;
 use crate::wire::xdr::{XdrError, XdrFault};
 use crate::wire::{DevAddr, HEADER_LEN, Header, Interface, MessageClass, MsgType};
 
@@ -51,7 +52,7 @@ macro_rules! bodies {
             /// (compared by its encoding, so NaNs compare) or the same error. For the tests and
             /// the `message_body` fuzz target (through [`crate::fuzz_input`]).
             #[doc(hidden)]
-            pub fn view_agrees(header: &Header, body: &Bytes) -> Result<(), String> {
+            pub fn view_agrees(header: &Header, body: &Bytes) -> Result<(), ViewDisagreement> {
                 let interf = header.addr.interf;
                 if header.msg_type.class() == MessageClass::Request && header.subtype >= 247 {
                     return interfaces::universal::Universal::view_agrees(header, body);
@@ -362,7 +363,7 @@ pub trait MessageSet: Sized {
     /// Whether viewing `body` in place agrees with decoding it (see [`crate::wire::xdr_view`]);
     /// for the tests and the fuzz target.
     #[doc(hidden)]
-    fn view_agrees(header: &Header, body: &Bytes) -> Result<(), String>;
+    fn view_agrees(header: &Header, body: &Bytes) -> Result<(), ViewDisagreement>;
 
     /// The class this body belongs to.
     fn class(&self) -> MessageClass;

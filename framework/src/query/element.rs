@@ -1,6 +1,8 @@
 //! The XML a query or a reply carries: a plain element tree, owned, with no positions (a
 //! query may be built in code as often as parsed).
 
+use super::argument_error::ArgumentError;
+
 /// Elements inside elements, at most, in any XML the viewer reads (compositions, queries,
 /// replies). Real ones are a few deep; every level is a call in whatever walks the tree
 /// (includes, printing, even dropping it), so a file of nothing but `<a><a><a>…` would end
@@ -68,14 +70,19 @@ impl XmlElement {
 
     /// A numeric attribute, with an error naming it and the element when it is missing or
     /// not a number.
-    pub fn number(&self, name: &str) -> Result<f64, String> {
-        let text = self
-            .attr(name)
-            .ok_or_else(|| format!("<{}> has no {name} attribute", self.name))?;
+    pub fn number(&self, name: &str) -> Result<f64, ArgumentError> {
+        let text = self.attr(name).ok_or_else(|| ArgumentError::Missing {
+            element: self.name.clone(),
+            attribute: name.to_string(),
+        })?;
         text.trim()
             .parse::<f64>()
             .ok()
             .filter(|v| v.is_finite())
-            .ok_or_else(|| format!("{name}={text:?} of <{}> is not a number", self.name))
+            .ok_or_else(|| ArgumentError::NotANumber {
+                element: self.name.clone(),
+                attribute: name.to_string(),
+                text: text.to_string(),
+            })
     }
 }

@@ -22,14 +22,16 @@
 //! A component answers by overriding [`Plugin::answer`](crate::plugin::Plugin::answer);
 //! `None` means "not mine", so the query goes on to the next addressee.
 
+mod argument_error;
 mod element;
 mod route;
 mod wire;
 mod world;
 
+pub use argument_error::ArgumentError;
 pub use element::{MAX_ELEMENT_DEPTH, XmlElement};
 pub use route::{Addressee, route};
-pub use wire::XmlError;
+pub use wire::{NotAQuery, XmlError};
 pub use world::{WORLD, answer_world};
 
 /// Who a query is for.
@@ -122,7 +124,7 @@ impl Query {
     }
 
     /// The point argument: `<point x=".." y=".."/>` in the body, or `x`/`y` on the query.
-    pub fn point(&self) -> Result<(f64, f64), String> {
+    pub fn point(&self) -> Result<(f64, f64), ArgumentError> {
         let from = self.body.child("point").unwrap_or(&self.body);
         Ok((from.number("x")?, from.number("y")?))
     }

@@ -15,6 +15,18 @@ pub struct XmlError {
     pub message: String,
 }
 
+/// An element that cannot be a query, and why.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum NotAQuery {
+    #[error("expected <query>, found <{0}>")]
+    Element(String),
+    #[error("<query> has no to attribute (a plugin id, a library name, or *)")]
+    NoTarget,
+    #[error("<query> has no name attribute and no text saying what is asked")]
+    NoName,
+}
+
 /// The line and column (both from 1) of a byte offset in `text`.
 fn line_column(text: &str, offset: usize) -> (usize, usize) {
     let before = &text[..text.floor_char_boundary(offset.min(text.len()))];
@@ -176,28 +188,28 @@ impl Query {
     /// Reads `<query to=".." name="..">body</query>`; without `name`, the text is the name
     /// (`<query to="robot1">stop</query>`).
     pub fn parse(text: &str) -> Result<Query, XmlError> {
-        Query::from_element(parse_element(text)?).map_err(|message| XmlError {
+        Query::from_element(parse_element(text)?).map_err(|e| XmlError {
             line: 1,
             column: 1,
-            message,
+            message: e.to_string(),
         })
     }
 
     /// A query from an already parsed `<query>` element (a composition's, a script's).
-    pub fn from_element(mut element: XmlElement) -> Result<Query, String> {
+    pub fn from_element(mut element: XmlElement) -> Result<Query, NotAQuery> {
         if element.name != "query" {
-            return Err(format!("expected <query>, found <{}>", element.name));
+            return Err(NotAQuery::Element(element.name));
         }
         let to = element
             .attr("to")
             .map(Target::parse)
-            .ok_or("<query> has no to attribute (a plugin id, a library name, or *)")?;
+            .ok_or(NotAQuery::NoTarget)?;
         let name = match element.attr("name") {
             Some(name) => name.to_string(),
             None => std::mem::take(&mut element.text),
         };
         if name.trim().is_empty() {
-            return Err("<query> has no name attribute and no text saying what is asked".into());
+            return Err(NotAQuery::NoName);
         }
         element.attributes.retain(|(k, _)| k != "to" && k != "name");
         Ok(Query {

@@ -104,14 +104,21 @@ fn read_kernel(
     Ok(kernel)
 }
 
-fn read_source(path: &std::path::Path) -> Result<String, String> {
-    let size = std::fs::metadata(path).map_err(|e| e.to_string())?.len();
+/// Why a kernel's source file is not read.
+#[derive(Debug, thiserror::Error)]
+enum SourceError {
+    #[error(transparent)]
+    Io(#[from] std::io::Error),
+    #[error("{0} bytes, above the {MAX_KERNEL_SOURCE_BYTES}-byte limit for a kernel")]
+    TooLarge(u64),
+}
+
+fn read_source(path: &std::path::Path) -> Result<String, SourceError> {
+    let size = std::fs::metadata(path)?.len();
     if size > MAX_KERNEL_SOURCE_BYTES {
-        return Err(format!(
-            "{size} bytes, above the {MAX_KERNEL_SOURCE_BYTES}-byte limit for a kernel"
-        ));
+        return Err(SourceError::TooLarge(size));
     }
-    std::fs::read_to_string(path).map_err(|e| e.to_string())
+    Ok(std::fs::read_to_string(path)?)
 }
 
 #[cfg(test)]

@@ -5,24 +5,26 @@ use glam::{Vec2, Vec3};
 
 use super::{Geometry, MeshVertex, Rgba};
 
+/// Why a wall's or zone's corners cannot be read.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum CornersError {
+    #[error("corners must be numbers, x y x y …; found {0:?}")]
+    NotNumbers(String),
+    #[error("needs three corners or more as x y pairs; found {0} numbers")]
+    TooFew(usize),
+}
+
 /// Reads corners written as `x y  x y  x y …` (spaces or commas): three or more.
-pub fn parse_corners(text: &str) -> Result<Vec<Vec2>, String> {
+pub fn parse_corners(text: &str) -> Result<Vec<Vec2>, CornersError> {
     let numbers: Vec<f32> = text
         .split(|c: char| c.is_whitespace() || c == ',')
         .filter(|t| !t.is_empty())
         .map(|t| t.parse::<f32>().ok().filter(|v| v.is_finite()))
         .collect::<Option<_>>()
-        .ok_or_else(|| {
-            format!(
-                "corners must be numbers, x y x y …; found {:?}",
-                text.trim()
-            )
-        })?;
+        .ok_or_else(|| CornersError::NotNumbers(text.trim().to_string()))?;
     if !numbers.len().is_multiple_of(2) || numbers.len() < 6 {
-        return Err(format!(
-            "needs three corners or more as x y pairs; found {} numbers",
-            numbers.len()
-        ));
+        return Err(CornersError::TooFew(numbers.len()));
     }
     Ok(numbers
         .chunks(2)

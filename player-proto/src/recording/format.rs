@@ -11,6 +11,8 @@ use bytes::Bytes;
 use crate::capture::Direction;
 use crate::wire::{BANNER_LEN, HEADER_LEN, Header};
 
+use super::record_error::RecordError;
+
 /// The first 8 bytes of every recording. The high first byte catches a file mangled by a 7-bit
 /// or text-mode transfer, as PNG's signature does; the rest names the format to a person.
 pub const MAGIC: [u8; 8] = *b"\x89PLAYREC";
@@ -140,53 +142,48 @@ impl Record {
 
     /// Parses a payload whose checksum held. `Err` says what is wrong, for the reader to
     /// place at an offset.
-    pub fn parse(payload: Bytes) -> Result<Record, String> {
+    pub fn parse(payload: Bytes) -> Result<Record, RecordError> {
         if payload.len() < FIXED_LEN {
-            return Err(format!(
-                "payload of {} bytes is shorter than the {FIXED_LEN}-byte fixed part",
-                payload.len()
-            ));
+            return Err(RecordError::Short {
+                len: payload.len(),
+                fixed: FIXED_LEN,
+            });
         }
         let word = |i: usize| u32::from_be_bytes(payload[i..i + 4].try_into().expect("4 bytes"));
         let connection = word(4);
         let time_ns = u64::from_be_bytes(payload[8..16].try_into().expect("8 bytes"));
         let data = payload.slice(FIXED_LEN..);
-        let text = |what: &str| {
-            String::from_utf8(data.to_vec()).map_err(|_| format!("{what} is not UTF-8"))
+        let text = |bytes: &[u8], what: &'static str| {
+            String::from_utf8(bytes.to_vec()).map_err(|_| RecordError::NotUtf8(what))
         };
         let event = match payload[0] {
             kind::CONNECTION => {
                 if data.len() < 2 {
-                    return Err("connection record without a port".into());
+                    return Err(RecordError::NoPort);
                 }
                 let port = u16::from_be_bytes([data[0], data[1]]);
-                let host = String::from_utf8(data[2..].to_vec())
-                    .map_err(|_| "connection host is not UTF-8".to_string())?;
+                let host = text(&data[2..], "connection host")?;
                 Event::Connection { host, port }
             }
             kind::OPENED => Event::Opened {
                 banner: data[..]
                     .try_into()
-                    .map_err(|_| format!("banner of {} bytes, not {BANNER_LEN}", data.len()))?,
+                    .map_err(|_| RecordError::Banner { len: data.len() })?,
             },
             kind::MESSAGE => {
                 let direction = match payload[1] {
                     FROM_SERVER => Direction::ServerToClient,
                     TO_SERVER => Direction::ClientToServer,
-                    other => return Err(format!("unknown direction {other}")),
+                    other => return Err(RecordError::UnknownDirection(other)),
                 };
-                let header = match Header::decode_slice(&data) {
-                    None => return Err(format!("message of {} bytes has no header", data.len())),
-                    Some(Err(e)) => return Err(format!("bad message header: {e}")),
-                    Some(Ok(h)) => h,
-                };
+                let header = Header::decode_slice(&data)
+                    .ok_or(RecordError::NoHeader { len: data.len() })??;
                 let body = data.slice(HEADER_LEN..);
                 if body.len() != header.size as usize {
-                    return Err(format!(
-                        "message header announces {} body bytes, the record holds {}",
-                        header.size,
-                        body.len()
-                    ));
+                    return Err(RecordError::BodySize {
+                        announced: header.size,
+                        held: body.len(),
+                    });
                 }
                 Event::Message {
                     direction,
@@ -195,9 +192,9 @@ impl Record {
                 }
             }
             kind::CLOSED => Event::Closed {
-                why: text("close reason")?,
+                why: text(&data, "close reason")?,
             },
-            other => return Err(format!("unknown record kind {other}")),
+            other => return Err(RecordError::UnknownKind(other)),
         };
         Ok(Record {
             time_ns,

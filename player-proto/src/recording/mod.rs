@@ -1,7 +1,8 @@
 //! Recordings: every message of every connection of a client, losslessly, with its receive
 //! time, in an append-only file that survives a crash (`docs/RECORDING-FORMAT.md`).
 //!
-//! * [`format`] — the file header, the record framing, the record kinds.
+//! * [`format`] — the file header, the record framing, the record kinds; [`record_error`] why
+//!   a payload is not a record.
 //! * [`writer`] / [`reader`] — appending records; reading them back without trusting the file.
 //! * [`from_capture`] — a capture of real Player traffic (`captures/`) as records.
 //! * [`index`] — one pass for what a replay or a summary needs (devices, replies, seeking).
@@ -28,6 +29,7 @@ pub mod from_capture;
 pub mod index;
 pub mod playerlog;
 pub mod reader;
+pub mod record_error;
 pub mod recorder;
 pub mod sink;
 pub mod source;
@@ -36,6 +38,7 @@ pub mod writer;
 pub use format::{Event, Record};
 pub use index::RecordingIndex;
 pub use reader::{ReadError, RecordingReader};
+pub use record_error::RecordError;
 pub use recorder::{ConnectionOpener, Recorder, RecorderError, RecorderStats};
 pub use sink::RecordSink;
 pub use source::{PrecFile, RecordSource, RecordStream, SourceError};

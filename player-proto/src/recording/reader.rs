@@ -45,7 +45,7 @@ pub enum ReadError {
     BadRecord {
         offset: u64,
         records: u64,
-        reason: String,
+        reason: super::RecordError,
     },
 }
 

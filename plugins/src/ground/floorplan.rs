@@ -7,6 +7,14 @@ use glam::Vec3;
 
 use framework::scene::{Geometry, Rgba};
 
+/// A floorplan bitmap that cannot be read, and which.
+#[derive(Debug, thiserror::Error)]
+#[error("cannot read floorplan {}: {source}", path.display())]
+pub struct FloorplanError {
+    pub path: std::path::PathBuf,
+    pub source: image::ImageError,
+}
+
 /// Where a bitmap lies: its size in metres and the position of its centre.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Placement {
@@ -21,9 +29,12 @@ pub fn walls_from_bitmap(
     placement: Placement,
     color: Rgba,
     geometry: &mut Geometry,
-) -> Result<usize, String> {
+) -> Result<usize, FloorplanError> {
     let image = image::open(path)
-        .map_err(|e| format!("cannot read floorplan {}: {e}", path.display()))?
+        .map_err(|source| FloorplanError {
+            path: path.to_path_buf(),
+            source,
+        })?
         .to_luma_alpha8();
     let (w, h) = image.dimensions();
     let (cell_x, cell_y) = (placement.size.0 / w as f32, placement.size.1 / h as f32);

@@ -10,7 +10,7 @@
 
 mod floorplan;
 
-pub use floorplan::{Placement, walls_from_bitmap};
+pub use floorplan::{FloorplanError, Placement, walls_from_bitmap};
 
 use glam::Vec3;
 
@@ -80,17 +80,17 @@ impl Ground {
                 wall_height: config.number("wallHeight", 0.5, 0.0..=100.0)? as f32,
             };
             let wall_color = config.color("wallColor", Rgba::rgb(150, 150, 158))?;
-            walls_from_bitmap(&path, placement, wall_color, &mut object.geometry).map_err(
-                |message| ConfigValueError {
+            walls_from_bitmap(&path, placement, wall_color, &mut object.geometry).map_err(|e| {
+                ConfigValueError {
                     origin: config
                         .param("bitmap")
                         .map(|p| p.origin.clone())
                         .unwrap_or_default(),
                     library: config.library.clone(),
                     param: "bitmap".into(),
-                    message,
-                },
-            )?;
+                    message: e.to_string(),
+                }
+            })?;
         }
         // Walls drawn with Stage blocks: each <wall> a polygon, stood up to wallHeight.
         let walls: Vec<&Param> = config.params.iter().filter(|p| p.name == "wall").collect();
@@ -104,7 +104,7 @@ impl Ground {
                     param: "wall".into(),
                     message,
                 };
-                let corners = parse_corners(&wall.text).map_err(bad)?;
+                let corners = parse_corners(&wall.text).map_err(|e| bad(e.to_string()))?;
                 // A wall may be an obstacle of its own height and colour (a crate, a landmark).
                 let height = match wall.attr("height") {
                     Some(h) => h

@@ -74,7 +74,11 @@ impl Position2dPlugin {
 
     /// The object `object="name"` names, or the nearest one carrying `tag="…"`; never the
     /// robot itself.
-    fn object_named_by(&self, query: &Query, ctx: &PluginContext<'_>) -> Result<ObjectRef, String> {
+    fn object_named_by(
+        &self,
+        query: &Query,
+        ctx: &PluginContext<'_>,
+    ) -> Result<ObjectRef, NotInScene> {
         let robot = Vec2::new(self.pose.0, self.pose.1);
         let wanted = |o: &framework::scene::Object3D| match query.argument("object") {
             Some(name) => o.name == name.trim(),
@@ -89,11 +93,10 @@ impl Position2dPlugin {
                 d(a).total_cmp(&d(b))
             })
             .ok_or_else(|| match query.argument("object") {
-                Some(name) => format!("nothing called {:?} in the scene", name.trim()),
-                None => format!(
-                    "nothing tagged {:?} in the scene",
-                    query.argument("tag").unwrap_or_default().trim()
-                ),
+                Some(name) => NotInScene::Named(name.trim().to_string()),
+                None => {
+                    NotInScene::Tagged(query.argument("tag").unwrap_or_default().trim().to_string())
+                }
             })
     }
 
@@ -127,4 +130,13 @@ fn names_object(query: &Query) -> bool {
     ["object", "tag"]
         .iter()
         .any(|a| query.argument(a).is_some_and(|v| !v.trim().is_empty()))
+}
+
+/// Why a query's object is not there to go to or follow.
+#[derive(Debug, thiserror::Error)]
+enum NotInScene {
+    #[error("nothing called {0:?} in the scene")]
+    Named(String),
+    #[error("nothing tagged {0:?} in the scene")]
+    Tagged(String),
 }

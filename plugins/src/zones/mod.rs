@@ -127,7 +127,7 @@ fn read_zone(config: &PluginConfig, param: &Param) -> Result<Zone, ConfigValueEr
                 "needs a name attribute, e.g. <zone name=\"dock\">".into(),
             )
         })?;
-    let corners = parse_corners(&param.text).map_err(|message| error(config, param, message))?;
+    let corners = parse_corners(&param.text).map_err(|e| error(config, param, e.to_string()))?;
     Ok(Zone {
         name: name.to_string(),
         corners,

@@ -29,7 +29,7 @@ pub enum ExecuteError {
     #[error(transparent)]
     Query(#[from] QueryError),
     #[error("the zones manager's answer to \"where is\" {0:?} has no point: {1}")]
-    BadAnswer(String, String),
+    BadAnswer(String, framework::query::ArgumentError),
 }
 
 /// What the executor needs from the viewer: its robots, and its post office.

@@ -142,7 +142,7 @@ pub fn parse_reaction(element: &Element) -> Result<Reaction, ConfigError> {
     for child in element.elements() {
         actions.push(match child.name.as_str() {
             "query" => ReactionAction::Query(
-                Query::from_element(plain_element(child)).map_err(|m| at(child, m))?,
+                Query::from_element(plain_element(child)).map_err(|e| at(child, e.to_string()))?,
             ),
             "say" if !child.text().is_empty() => ReactionAction::Say(child.text()),
             "say" => return Err(at(child, "<say> needs a sentence".into())),
