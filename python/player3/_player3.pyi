@@ -26,9 +26,11 @@ def connect(
     port: Optional[int] = None,
     timeout: float = 5.0,
     read_only: bool = False,
+    name: Optional[str] = None,
 ) -> Robot:
     """Connects to the Player server at host:port (default: $PLAYER_HOST and $PLAYER_PORT,
-    else localhost:6665); `read_only` observes only."""
+    else localhost:6665); `read_only` observes only; `name` names the robot as the relay's
+    fronts do (else it goes by host:port)."""
 
 def simulate(
     world: Union[str, PathLike[str]],
@@ -65,8 +67,10 @@ class World:
     def __exit__(self, *exc: object) -> bool: ...
 
 class Robot:
-    """A connection to one Player server; a context manager."""
+    """A connection to one Player server; a context manager. str() is its name, else
+    host:port, as the relay's fronts and logs say it."""
     address: str
+    name: Optional[str]
     connected: bool
     def devices(self) -> List[Device]: ...
     def wait_connected(self, timeout: float = 10.0) -> None:

@@ -3,6 +3,7 @@
 
 use std::sync::{Arc, Mutex};
 
+use player_proto::RobotId;
 use player_proto::wire::Interface;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -40,14 +41,17 @@ impl Device {
 /// `read_only=True` observes: commands and configuration requests raise `PermissionError`.
 /// Without a host or port, `PLAYER_HOST` and `PLAYER_PORT` from the environment are used
 /// (a grader sets them for the program it runs), else localhost and 6665.
+/// `name` names the robot as the relay's fronts and logs name it (`"r0"`; letters, digits,
+/// `_`, `-`, `.`); without one it goes by `host:port`.
 #[pyfunction]
-#[pyo3(signature = (host = None, port = None, timeout = 5.0, read_only = false))]
+#[pyo3(signature = (host = None, port = None, timeout = 5.0, read_only = false, name = None))]
 pub fn connect(
     py: Python<'_>,
     host: Option<String>,
     port: Option<i64>,
     timeout: f64,
     read_only: bool,
+    name: Option<String>,
 ) -> PyResult<Robot> {
     let host = match host {
         Some(host) => host,
@@ -67,6 +71,7 @@ pub fn connect(
         .ok()
         .filter(|&p| p != 0)
         .ok_or_else(|| PyValueError::new_err(format!("port must be 1 to 65535, got {port}")))?;
+    let id = robot_id(host, port, name)?;
     let limit = timeout_arg(timeout, &format!("connecting to {host}:{port}"))?;
     if limit.is_zero() {
         return Err(PyValueError::new_err(format!(
@@ -74,19 +79,34 @@ pub fn connect(
         )));
     }
     let link = Link::connect(py, host, port, limit, read_only)?;
-    Ok(Robot::new(link))
+    Ok(Robot::new(id, link))
+}
+
+/// The robot at `host:port`, named `name` where given: a name the fronts could not carry is
+/// a `ValueError` naming it.
+pub fn robot_id(host: &str, port: u16, name: Option<String>) -> PyResult<RobotId> {
+    let id = RobotId::new(host, port);
+    match name {
+        None => Ok(id),
+        Some(name) => id
+            .named(name)
+            .map_err(|e| PyValueError::new_err(e.to_string())),
+    }
 }
 
 /// A connection to one Player server (one robot). Use it in a `with` block, or call
 /// `close()`. Device objects come from methods named after their interface.
 #[pyclass(frozen, module = "player3")]
 pub struct Robot {
+    /// Who it is, as every front and log says it.
+    id: RobotId,
     link: Mutex<Option<Arc<Link>>>,
 }
 
 impl Robot {
-    pub fn new(link: Arc<Link>) -> Robot {
+    pub fn new(id: RobotId, link: Arc<Link>) -> Robot {
         Robot {
+            id,
             link: Mutex::new(Some(link)),
         }
     }
@@ -125,6 +145,17 @@ impl Robot {
     #[getter]
     fn address(&self) -> PyResult<String> {
         Ok(self.link()?.place.clone())
+    }
+
+    /// The robot's name (the world's, or the one given to `connect`), else `None`.
+    #[getter]
+    fn name(&self) -> Option<String> {
+        self.id.name().map(str::to_string)
+    }
+
+    /// The robot as the relay's fronts and logs say it: its name, else `host:port`.
+    fn __str__(&self) -> String {
+        self.id.to_string()
     }
 
     /// Whether the connection is up now (it comes back by itself after a server restart).
@@ -270,10 +301,14 @@ impl Robot {
     }
 
     fn __repr__(&self) -> String {
+        // A named robot says where it is served too; an unnamed one is its address.
+        let who = match self.id.name() {
+            Some(name) => format!("{name} at {}", self.id.server()),
+            None => self.id.server(),
+        };
         match self.link() {
             Ok(link) => format!(
-                "<Robot {} ({}, {} devices)>",
-                link.place,
+                "<Robot {who} ({}, {} devices)>",
                 if link.is_connected() {
                     "connected"
                 } else {
@@ -281,7 +316,7 @@ impl Robot {
                 },
                 link.client.devices().len()
             ),
-            Err(_) => "<Robot (closed)>".into(),
+            Err(_) => format!("<Robot {who} (closed)>"),
         }
     }
 

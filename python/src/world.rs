@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
+use player_proto::RobotId;
 use player_sim::serve::{LockstepOptions, Running, ServeOptions, serve};
 use player_sim::served::{Source, devices_beside};
 use player_sim::sim::Simulation;
@@ -176,13 +177,28 @@ impl World {
         timeout: f64,
         read_only: bool,
     ) -> PyResult<Robot> {
-        let port = match which {
-            Some(which) => self.port_of(&which)?,
-            None => self.port_of(&0i64.into_pyobject(py)?.into_any())?,
+        let which = match which {
+            Some(which) => which,
+            None => 0i64.into_pyobject(py)?.into_any(),
         };
+        let port = self.port_of(&which)?;
+        // Asked by name, it is that robot; by index, the port's first (its only, mostly).
+        let name = match which.extract::<String>() {
+            Ok(name) => Some(name),
+            Err(_) => self
+                .robots
+                .iter()
+                .find(|(p, _)| *p == port)
+                .and_then(|(_, names)| names.first().cloned()),
+        };
+        // A model's name the fronts could not carry (a space in it) leaves the robot unnamed.
+        let unnamed = RobotId::new("127.0.0.1", port);
+        let id = name
+            .and_then(|n| unnamed.clone().named(n).ok())
+            .unwrap_or(unnamed);
         let limit = timeout_arg(timeout, "connecting to the simulated world")?;
         let link = Link::connect(py, "127.0.0.1", port, limit, read_only)?;
-        Ok(Robot::new(link))
+        Ok(Robot::new(id, link))
     }
 
     /// The names of the robots (those with a `position2d`), in port order.

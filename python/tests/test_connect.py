@@ -43,6 +43,21 @@ def test_robots_are_named_or_counted(simple):
         simple.robot(1.5)
 
 
+def test_a_robot_goes_by_its_name_as_the_fronts_say_it(simple):
+    port = simple.ports[0]
+    with simple.robot("r0") as by_name, simple.robot(0) as by_index:
+        assert by_name.name == by_index.name == "r0"
+        assert str(by_name) == "r0"
+        assert repr(by_name).startswith(f"<Robot r0 at 127.0.0.1:{port} (connected")
+    with player3.connect("127.0.0.1", port, timeout=2.0) as unnamed:
+        assert unnamed.name is None
+        assert str(unnamed) == f"127.0.0.1:{port}"
+    with player3.connect("127.0.0.1", port, timeout=2.0, name="scout-1") as named:
+        assert (named.name, str(named)) == ("scout-1", "scout-1")
+    with pytest.raises(ValueError, match="bad robot name"):
+        player3.connect("127.0.0.1", port, name="two words")
+
+
 def test_several_robots_read_from_several_threads_at_once():
     with player3.simulate(WORLDS / "multirobot.world", speedup=5.0) as world:
         robots = [world.robot(i) for i in range(len(world.ports))]
