@@ -16,14 +16,20 @@
 //! that arrives, its messages, its leaving, and when to stop. A new front is a crate that
 //! implements it (and, over WebSockets, starts from [`socket`] and [`outbox`]).
 //!
+//! A front runs on a [`FrontRuntime`] ([`runtime`]): its own, or one it is handed (the
+//! relay hands one to all its fronts; pv3d and Python may hand theirs); stopping a front on a
+//! handed runtime ends its tasks and closes its listener, and leaves the runtime running.
+//!
 //! A front costs what is watched ([`watch`]): it holds a [`Look`] at each device a viewer
 //! looks at, and the relay subscribes upstream only to what some front or observer looks at.
 
 pub mod front;
 pub mod outbox;
+pub mod runtime;
 pub mod socket;
 pub mod watch;
 
 pub use front::Front;
+pub use runtime::{FrontRuntime, Stopping};
 pub use socket::{CloseCode, STALLED_AFTER, SendError};
 pub use watch::{Device, Look, Upstream, Watch, Watching};

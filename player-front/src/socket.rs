@@ -30,6 +30,8 @@ pub type Out = SplitSink<WebSocket, Message>;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum CloseCode {
+    /// 1001: the server stops (the front was stopped or dropped).
+    GoingAway,
     /// 1002: the viewer broke the protocol.
     Protocol,
     /// 1008: the viewer broke the server's rules (it stopped reading).
@@ -41,6 +43,7 @@ pub enum CloseCode {
 impl CloseCode {
     pub fn code(self) -> u16 {
         match self {
+            CloseCode::GoingAway => 1001,
             CloseCode::Protocol => 1002,
             CloseCode::Policy => 1008,
             CloseCode::TooBig => 1009,

@@ -10,6 +10,7 @@ use axum::extract::{ConnectInfo, State};
 use axum::http::header;
 use axum::response::{IntoResponse, Response};
 use axum::routing::get;
+use player_front::Stopping;
 
 use crate::control::Control;
 use crate::hub::Hub;
@@ -32,10 +33,12 @@ const STYLE: &str = include_str!("../assets/style.css");
 struct Shared {
     hub: Arc<Hub>,
     control: Arc<Control>,
+    stopping: Stopping,
 }
 
-/// The routes: `/` (the page), `/app.js`, `/world.js`, `/style.css`, `/ws` (the live socket).
-pub fn router(hub: Arc<Hub>, control: Arc<Control>) -> Router {
+/// The routes: `/` (the page), `/app.js`, `/world.js`, `/style.css`, `/ws` (the live socket);
+/// the sockets end on `stopping` (the front stopped).
+pub fn router(hub: Arc<Hub>, control: Arc<Control>, stopping: Stopping) -> Router {
     Router::new()
         .route(
             "/",
@@ -59,7 +62,11 @@ pub fn router(hub: Arc<Hub>, control: Arc<Control>) -> Router {
             "/favicon.ico",
             get(|| async { axum::http::StatusCode::NO_CONTENT }),
         )
-        .with_state(Shared { hub, control })
+        .with_state(Shared {
+            hub,
+            control,
+            stopping,
+        })
 }
 
 fn asset(kind: &'static str, text: &'static str) -> Response {
@@ -86,5 +93,7 @@ async fn upgrade(
         .read_buffer_size(4 * 1024)
         .write_buffer_size(WRITE_BUFFER)
         .max_write_buffer_size(MAX_WRITE_BUFFER)
-        .on_upgrade(move |socket| serve_page(socket, from, shared.hub, shared.control))
+        .on_upgrade(move |socket| {
+            serve_page(socket, from, shared.hub, shared.control, shared.stopping)
+        })
 }

@@ -32,7 +32,9 @@ use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 use std::time::Duration;
 
-use player_front::{Front, Watch, Watching};
+use tokio::runtime::Handle;
+
+use player_front::{Front, FrontRuntime, Watch, Watching};
 use player_proto::RobotId;
 use player_proto::client::{Client, ConnectionTap, RobotTap, Tap, unnamed};
 use player_proto::server::Commanders;
@@ -56,35 +58,51 @@ pub enum WebError {
     Runtime(std::io::Error),
 }
 
-/// The web page, served on its own runtime until dropped.
+/// The web page, served on its own runtime or a handed one until stopped or dropped.
 pub struct WebFront {
     hub: Arc<Hub>,
     control: Arc<Control>,
     port: u16,
-    runtime: Option<tokio::runtime::Runtime>,
+    runtime: FrontRuntime,
 }
 
 impl WebFront {
-    /// Listens on `bind:port` (0: any free port) and serves the page; robots appear as the
-    /// relay's clients reach them through [`WebFront::tap`].
+    /// Listens on `bind:port` (0: any free port) and serves the page on a runtime of its own;
+    /// robots appear as the relay's clients reach them through [`WebFront::tap`].
     pub fn start(bind: IpAddr, port: u16, rule: Commanders) -> Result<WebFront, WebError> {
-        let runtime = tokio::runtime::Builder::new_multi_thread()
-            .worker_threads(2)
-            .thread_name("web-page")
-            .enable_all()
-            .build()
-            .map_err(WebError::Runtime)?;
+        let runtime = FrontRuntime::own("web-page", 2).map_err(WebError::Runtime)?;
+        WebFront::serve(runtime, bind, port, rule)
+    }
+
+    /// As [`WebFront::start`], on the runtime of `handle` (the relay's for all its fronts,
+    /// or an embedding program's): dropping the front closes its pages and its listener and
+    /// leaves that runtime running.
+    pub fn start_on(
+        handle: Handle,
+        bind: IpAddr,
+        port: u16,
+        rule: Commanders,
+    ) -> Result<WebFront, WebError> {
+        WebFront::serve(FrontRuntime::on(handle), bind, port, rule)
+    }
+
+    fn serve(
+        runtime: FrontRuntime,
+        bind: IpAddr,
+        port: u16,
+        rule: Commanders,
+    ) -> Result<WebFront, WebError> {
         let addr = SocketAddr::new(bind, port);
         let listener = player_front::socket::listen(addr, PAGE_SEND_BUFFER)
             .and_then(|std| {
-                let _entered = runtime.enter();
+                let _entered = runtime.handle().enter();
                 tokio::net::TcpListener::from_std(std)
             })
             .map_err(|source| WebError::Bind { addr, source })?;
         let port = listener.local_addr().map_or(port, |a| a.port());
         let hub = Arc::new(Hub::default());
         let control = Arc::new(Control::new(rule));
-        let app = http::router(hub.clone(), control.clone())
+        let app = http::router(hub.clone(), control.clone(), runtime.stopping())
             .into_make_service_with_connect_info::<SocketAddr>();
         // Small frames (poses, commands) go out at once rather than waiting for company.
         let listener = axum::serve::ListenerExt::tap_io(listener, |tcp| {
@@ -109,8 +127,13 @@ impl WebFront {
             hub,
             control,
             port,
-            runtime: Some(runtime),
+            runtime,
         })
+    }
+
+    /// Tasks of the page running now (its listener, its status rows; pages are not counted).
+    pub fn tasks(&self) -> usize {
+        self.runtime.tasks()
     }
 
     /// The port the page is served on.
@@ -168,17 +191,14 @@ impl Front for WebFront {
         self.hub.watch(robot, watch);
         Watching::AsLooked
     }
+
+    /// Pages closed (1001), the listener closed; the runtime, if handed, runs on.
+    fn stop(&self) {
+        self.runtime.stop();
+    }
 }
 
 /// Kernel send buffer per page: a few frames of a few robots. A page that stops reading
 /// fills it in a moment and is closed (see [`player_front::STALLED_AFTER`]) instead of
 /// holding megabytes of stale frames.
 pub const PAGE_SEND_BUFFER: usize = 64 * 1024;
-
-impl Drop for WebFront {
-    fn drop(&mut self) {
-        if let Some(runtime) = self.runtime.take() {
-            runtime.shutdown_background();
-        }
-    }
-}

@@ -10,6 +10,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use axum::extract::ws::{Message, WebSocket};
 use futures_util::StreamExt;
+use player_front::Stopping;
 use player_front::socket::{CloseCode, Out, SendError, close, send_within};
 use tokio::sync::broadcast::error::{RecvError, TryRecvError};
 
@@ -24,7 +25,13 @@ const BATCH: usize = 64;
 static NEXT_PAGE: AtomicU64 = AtomicU64::new(1);
 
 /// Serves one page until it or the server goes.
-pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, control: Arc<Control>) {
+pub async fn serve_page(
+    socket: WebSocket,
+    from: SocketAddr,
+    hub: Arc<Hub>,
+    control: Arc<Control>,
+    mut stopping: Stopping,
+) {
     let page = peer(NEXT_PAGE.fetch_add(1, Ordering::Relaxed), from.ip());
     // From now until the page goes, by whatever way, the relay subscribes to what it shows.
     let _open = Open::new(&hub, page.id);
@@ -91,6 +98,11 @@ pub async fn serve_page(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, cont
                 }
                 _ = dead_man.tick() => {
                     control.stop_stale(page, &mut driven, false);
+                }
+                // The front stopped; on a handed runtime nothing else would end this task.
+                _ = stopping.wait() => {
+                    close(&mut out, CloseCode::GoingAway, "the server stops").await;
+                    break 'serve "the server stops".to_string();
                 }
             }
         }

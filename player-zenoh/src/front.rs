@@ -8,11 +8,12 @@ use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
-use player_front::{Front, Watch, Watching};
+use player_front::{Front, FrontRuntime, Watch, Watching};
 use player_proto::RobotId;
 use player_proto::capture::Direction;
 use player_proto::client::{Client, ConnectionTap, RobotTap, Tap, TapEvent, unnamed};
 use player_proto::wire::MsgType;
+use tokio::runtime::Handle;
 use zenoh::Session;
 use zenoh::Wait;
 use zenoh::pubsub::Subscriber;
@@ -26,19 +27,34 @@ use crate::shared::{FrontConfig, FrontShared};
 /// A running front; stops publishing, and withdraws its robots, when dropped.
 pub struct ZenohFront {
     shared: Arc<FrontShared>,
-    runtime: Option<tokio::runtime::Runtime>,
+    runtime: FrontRuntime,
     _commands: Subscriber<()>,
     _queryables: Vec<Queryable<()>>,
 }
 
 impl ZenohFront {
-    /// Starts publishing on `session`; robots appear as the relay's taps report them.
+    /// Starts publishing on `session`, on a runtime of its own; robots appear as the relay's
+    /// taps report them.
     pub fn start(session: Session, config: FrontConfig) -> Result<ZenohFront, ZenohError> {
-        let runtime = tokio::runtime::Builder::new_multi_thread()
-            .worker_threads(1)
-            .thread_name("zenoh-front")
-            .enable_all()
-            .build()?;
+        let runtime = FrontRuntime::own("zenoh-front", 1)?;
+        ZenohFront::publish(runtime, session, config)
+    }
+
+    /// As [`ZenohFront::start`], on the runtime of `handle` (the relay's for all its fronts):
+    /// dropping the front ends its publisher and leaves that runtime running.
+    pub fn start_on(
+        handle: Handle,
+        session: Session,
+        config: FrontConfig,
+    ) -> Result<ZenohFront, ZenohError> {
+        ZenohFront::publish(FrontRuntime::on(handle), session, config)
+    }
+
+    fn publish(
+        runtime: FrontRuntime,
+        session: Session,
+        config: FrontConfig,
+    ) -> Result<ZenohFront, ZenohError> {
         let shared = Arc::new(FrontShared {
             queue: EventQueue::new(config.queue),
             config,
@@ -59,7 +75,7 @@ impl ZenohFront {
             "publishing the relay's robots in Zenoh");
         Ok(ZenohFront {
             shared,
-            runtime: Some(runtime),
+            runtime,
             _commands: commands,
             _queryables: queryables,
         })
@@ -186,9 +202,7 @@ impl Front for ZenohFront {
 
 impl Drop for ZenohFront {
     fn drop(&mut self) {
-        if let Some(runtime) = self.runtime.take() {
-            runtime.shutdown_background();
-        }
+        self.runtime.stop();
         let tokens: Vec<_> = self
             .shared
             .robots()

@@ -24,7 +24,7 @@ use crate::keys::{Leaf, RobotKey};
 use crate::queue::FrontEvent;
 use crate::shared::FrontShared;
 
-/// Runs until the front's runtime stops.
+/// Runs until the front stops (its task aborted, or its runtime shut down).
 pub(crate) async fn run(shared: Arc<FrontShared>) {
     let mut publishers: HashMap<String, Publisher<'static>> = HashMap::new();
     loop {

@@ -20,7 +20,8 @@
 //!   (`player_front::outbox`) with Foxglove's bounds;
 //! * [`session`] — a viewer's socket: bursts out, requests in;
 //! * [`refusal`] — why a request is refused, as the error status says it;
-//! * [`server`] — the listener and the upgrade;
+//! * [`server`] — the listener and the upgrade, on the server's runtime: its own, or one it
+//!   was handed ([`FoxgloveLive::start_on`]);
 //! * [`wire`] — the protocol's messages.
 
 mod channels;
@@ -35,7 +36,9 @@ use std::net::{IpAddr, SocketAddr};
 use std::sync::Arc;
 use std::time::{SystemTime, UNIX_EPOCH};
 
-use player_front::{Front, Watch, Watching};
+use tokio::runtime::Handle;
+
+use player_front::{Front, FrontRuntime, Watch, Watching};
 use player_proto::RobotId;
 use player_proto::client::{ConnectionTap, RobotTap, Tap, unnamed};
 
@@ -54,30 +57,42 @@ pub enum LiveError {
     },
 }
 
-/// A running Foxglove WebSocket server, on its own runtime; stops when dropped.
+/// A running Foxglove WebSocket server, on its own runtime or a handed one; stops when
+/// dropped.
 pub struct FoxgloveLive {
     hub: Arc<Hub>,
     port: u16,
-    runtime: Option<tokio::runtime::Runtime>,
+    runtime: FrontRuntime,
 }
 
 impl FoxgloveLive {
-    /// Starts serving on `address:port` (0: any free port, see [`FoxgloveLive::port`]).
+    /// Starts serving on `address:port` (0: any free port, see [`FoxgloveLive::port`]), on a
+    /// runtime of its own.
     pub fn start(address: IpAddr, port: u16) -> Result<FoxgloveLive, LiveError> {
+        let runtime = FrontRuntime::own("foxglove-ws", 2).map_err(|source| LiveError::Start {
+            address,
+            port,
+            source,
+        })?;
+        FoxgloveLive::serve(runtime, address, port)
+    }
+
+    /// As [`FoxgloveLive::start`], on the runtime of `handle` (the relay's for all its fronts,
+    /// or an embedding program's): dropping the server closes its viewers and its listener and
+    /// leaves that runtime running.
+    pub fn start_on(handle: Handle, address: IpAddr, port: u16) -> Result<FoxgloveLive, LiveError> {
+        FoxgloveLive::serve(FrontRuntime::on(handle), address, port)
+    }
+
+    fn serve(runtime: FrontRuntime, address: IpAddr, port: u16) -> Result<FoxgloveLive, LiveError> {
         let error = |source| LiveError::Start {
             address,
             port,
             source,
         };
-        let runtime = tokio::runtime::Builder::new_multi_thread()
-            .worker_threads(2)
-            .thread_name("foxglove-ws")
-            .enable_all()
-            .build()
-            .map_err(error)?;
         let listener = server::listen(SocketAddr::new(address, port))
             .and_then(|std| {
-                let _entered = runtime.enter();
+                let _entered = runtime.handle().enter();
                 tokio::net::TcpListener::from_std(std)
             })
             .map_err(error)?;
@@ -87,13 +102,19 @@ impl FoxgloveLive {
             .duration_since(UNIX_EPOCH)
             .map_or(0, |d| d.as_nanos())
             .to_string();
-        runtime.spawn(server::serve(listener, hub.clone(), session_id));
+        runtime.spawn(server::serve(
+            listener,
+            hub.clone(),
+            session_id,
+            runtime.stopping(),
+        ));
         tracing::info!(port, "serving Foxglove WebSocket");
-        Ok(FoxgloveLive {
-            hub,
-            port,
-            runtime: Some(runtime),
-        })
+        Ok(FoxgloveLive { hub, port, runtime })
+    }
+
+    /// Tasks of the server running now (its listener; viewers are not counted).
+    pub fn tasks(&self) -> usize {
+        self.runtime.tasks()
     }
 
     /// The port viewers connect to.
@@ -151,16 +172,16 @@ impl Front for FoxgloveLive {
         Watching::AsLooked
     }
 
+    /// Viewers closed, the listener closed; the runtime, if handed, runs on.
     fn stop(&self) {
         self.hub.close_all();
+        self.runtime.stop();
     }
 }
 
 impl Drop for FoxgloveLive {
+    /// The viewers are told before the runtime (dropped next) stops their sessions.
     fn drop(&mut self) {
         self.hub.close_all();
-        if let Some(runtime) = self.runtime.take() {
-            runtime.shutdown_background();
-        }
     }
 }

@@ -9,6 +9,7 @@ use axum::extract::ws::WebSocketUpgrade;
 use axum::extract::{ConnectInfo, State};
 use axum::http::StatusCode;
 use axum::response::{IntoResponse, Response};
+use player_front::Stopping;
 
 use super::hub::Hub;
 use super::session::serve_viewer;
@@ -29,13 +30,24 @@ pub const VIEWER_SEND_BUFFER: usize = 256 * 1024;
 struct Shared {
     hub: Arc<Hub>,
     session_id: String,
+    stopping: Stopping,
 }
 
-/// Serves viewers on `listener` until the runtime stops.
-pub async fn serve(listener: tokio::net::TcpListener, hub: Arc<Hub>, session_id: String) {
+/// Serves viewers on `listener` until this task is aborted (the server stops); each viewer
+/// until it goes or `stopping` says the server stops.
+pub async fn serve(
+    listener: tokio::net::TcpListener,
+    hub: Arc<Hub>,
+    session_id: String,
+    stopping: Stopping,
+) {
     let app = Router::new()
         .fallback(upgrade)
-        .with_state(Shared { hub, session_id })
+        .with_state(Shared {
+            hub,
+            session_id,
+            stopping,
+        })
         .into_make_service_with_connect_info::<SocketAddr>();
     // Small messages (poses) go out at once rather than waiting for company.
     let listener = axum::serve::ListenerExt::tap_io(listener, |tcp| {
@@ -69,7 +81,9 @@ async fn upgrade(
         );
         return (StatusCode::BAD_REQUEST, why).into_response();
     }
-    upgrade.on_upgrade(move |socket| serve_viewer(socket, from, shared.hub, shared.session_id))
+    upgrade.on_upgrade(move |socket| {
+        serve_viewer(socket, from, shared.hub, shared.session_id, shared.stopping)
+    })
 }
 
 /// A listener whose connections start with a small kernel send buffer

@@ -9,6 +9,7 @@ use std::sync::Arc;
 
 use axum::extract::ws::{Message, WebSocket};
 use futures_util::StreamExt;
+use player_front::Stopping;
 use player_front::socket::{CloseCode, Out, SendError, close, send_within};
 
 use super::hub::{Hub, ViewerId};
@@ -17,7 +18,13 @@ use super::refusal::Refusal;
 use super::wire::{self, Level, Request};
 
 /// Serves one viewer until it or the server goes.
-pub async fn serve_viewer(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, session_id: String) {
+pub async fn serve_viewer(
+    socket: WebSocket,
+    from: SocketAddr,
+    hub: Arc<Hub>,
+    session_id: String,
+    mut stopping: Stopping,
+) {
     let outbox = Arc::new(viewer_outbox());
     outbox.push_control(wire::server_info("player-relay", &session_id));
     let viewer = hub.join(outbox.clone());
@@ -48,6 +55,11 @@ pub async fn serve_viewer(socket: WebSocket, from: SocketAddr, hub: Arc<Hub>, se
                     break why;
                 }
             },
+            // The server stopped; on a handed runtime nothing else would end this task.
+            _ = stopping.wait() => {
+                close(&mut out, CloseCode::GoingAway, "the server stops").await;
+                break "the server stops".to_string();
+            }
         }
     };
     hub.leave(viewer);

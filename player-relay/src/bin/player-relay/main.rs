@@ -8,7 +8,7 @@ use std::process::ExitCode;
 use std::sync::Arc;
 use std::time::Duration;
 
-use anyhow::{Result, bail};
+use anyhow::{Context, Result, bail};
 use clap::Parser;
 use player_foxglove::live::FoxgloveLive;
 use player_front::Front;
@@ -179,11 +179,17 @@ fn run(cli: Cli) -> Result<()> {
             route.listen_port
         );
     }
+    // One runtime for every front (the page, Foxglove, Zenoh), not one each.
+    let runtime = fronts_runtime()?;
     let mut fronts: Vec<Arc<dyn Front>> = Vec::new();
     // Held by the relay too, which stops them once its robots have stopped.
     let foxglove = match cli.foxglove {
         Some(port) => {
-            let live = Arc::new(FoxgloveLive::start(cli.bind, port)?);
+            let live = Arc::new(FoxgloveLive::start_on(
+                runtime.handle().clone(),
+                cli.bind,
+                port,
+            )?);
             eprintln!("Foxglove WebSocket → ws://{}:{}", cli.bind, live.port());
             fronts.push(live.clone());
             Some(live)
@@ -192,7 +198,12 @@ fn run(cli: Cli) -> Result<()> {
     };
     let web = match cli.web {
         Some(port) => {
-            let web = Arc::new(player_web::WebFront::start(cli.bind, port, commanders)?);
+            let web = Arc::new(player_web::WebFront::start_on(
+                runtime.handle().clone(),
+                cli.bind,
+                port,
+                commanders,
+            )?);
             if let Some(demo) = &demo {
                 web.set_walls(&player_relay::world::walls(&demo.world));
             }
@@ -202,7 +213,7 @@ fn run(cli: Cli) -> Result<()> {
         }
         None => None,
     };
-    let zenoh = cli.zenoh.start(cli.bind, commanders)?;
+    let zenoh = cli.zenoh.start(runtime.handle(), cli.bind, commanders)?;
     if let Some(front) = &zenoh.front {
         fronts.push(front.clone());
     }
@@ -255,11 +266,25 @@ fn run(cli: Cli) -> Result<()> {
             std::thread::park();
         },
     }
-    // The relay stops its robots, then its fronts; the simulation goes last.
+    // The relay stops its robots, then its fronts, then their runtime; the simulation goes
+    // last.
     drop(relay);
     drop((zenoh, web, foxglove));
+    runtime.shutdown_background();
     drop(demo);
     Ok(())
+}
+
+/// The runtime the fronts share: a few workers (the viewers' sockets, the conversions are
+/// done on the robots' threads), its threads named `fronts` as top shows them.
+fn fronts_runtime() -> Result<tokio::runtime::Runtime> {
+    let workers = std::thread::available_parallelism().map_or(2, |n| n.get().clamp(2, 4));
+    tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(workers)
+        .thread_name("fronts")
+        .enable_all()
+        .build()
+        .context("cannot start the fronts' runtime")
 }
 
 /// `HOST:PORT`, or `NAME (HOST:PORT)` for a named robot.

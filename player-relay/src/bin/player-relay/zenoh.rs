@@ -10,6 +10,7 @@ use anyhow::{Context, Result};
 use clap::Args;
 use player_proto::server::Commanders;
 use player_zenoh::{FromZenoh, FromZenohConfig, FrontConfig, Mode, ZenohFront, ZenohOptions};
+use tokio::runtime::Handle;
 
 #[derive(Args, Debug)]
 pub struct ZenohArgs {
@@ -73,8 +74,8 @@ impl ZenohArgs {
         self.zenoh && self.zenoh_controller.is_some()
     }
 
-    /// Opens the session and starts what was asked.
-    pub fn start(&self, bind: IpAddr, commanders: Commanders) -> Result<Zenoh> {
+    /// Opens the session and starts what was asked; the front on `runtime`, the fronts' one.
+    pub fn start(&self, runtime: &Handle, bind: IpAddr, commanders: Commanders) -> Result<Zenoh> {
         if !self.wanted() {
             return Ok(Zenoh::default());
         }
@@ -101,7 +102,11 @@ impl ZenohArgs {
                 controller: self.zenoh_controller.clone(),
                 ..FrontConfig::new(site)
             };
-            zenoh.front = Some(Arc::new(ZenohFront::start(session.clone(), config)?));
+            zenoh.front = Some(Arc::new(ZenohFront::start_on(
+                runtime.clone(),
+                session.clone(),
+                config,
+            )?));
             eprintln!("Zenoh: publishing the robots under player/{site}/");
         }
         if self.from_zenoh {
