@@ -26,6 +26,7 @@
 //! WebSocket protocol to Foxglove Studio and Lichtblick, fed by Player client taps.
 
 pub mod camera;
+pub mod device_topics;
 pub mod frames;
 #[cfg(feature = "live")]
 pub mod live;
@@ -49,6 +50,7 @@ use player_proto::interfaces::{
 use player_proto::message::{Body, Message};
 use player_proto::wire::{Header, Interface, MsgType};
 
+pub use device_topics::device_topics;
 pub use message::{FoxgloveMessage, MESSAGE_ENCODING, Output};
 
 use frames::{WORLD, device_frame, pose2d, pose3d, timestamp, transform};

@@ -9,7 +9,7 @@
 use std::io::{BufRead, BufReader, Read};
 use std::net::{IpAddr, Ipv4Addr};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -25,15 +25,11 @@ use player_relay::{Relay, RelayConfig, Route};
 use player_sim::serve::{Running, ServeOptions};
 use serde_json::Value;
 
+mod foxglove_node;
+use foxglove_node::{live_url, node, repo_root, run_node};
+
 /// Long enough for anything on a loaded machine; only reached when something is broken.
 const PATIENCE: Duration = Duration::from_secs(60);
-
-fn repo_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("player-relay lies in the checkout")
-        .to_path_buf()
-}
 
 /// Serves a Stage world as `player-sim WORLD` would (its .cfg files), on free ports.
 fn serve_world(world: &str) -> Running {
@@ -73,39 +69,6 @@ fn relay_with_front(port: u16, topic: &str) -> (Relay, Arc<FoxgloveLive>) {
         std::thread::sleep(Duration::from_millis(20));
     }
     (relay, live)
-}
-
-/// `node tests/web/foxglove_client.mjs ARGS…`; fails (never skips) when Node or the pinned
-/// clients are missing.
-fn node(args: &[&str]) -> Command {
-    let web = repo_root().join("tests/web");
-    assert!(
-        web.join("node_modules/@foxglove/ws-protocol").is_dir()
-            && web.join("node_modules/protobufjs").is_dir(),
-        "tests/web/node_modules is missing or stale: run scripts/setup.sh \
-         (or npm ci --prefix tests/web)"
-    );
-    let mut command = Command::new("node");
-    command
-        .current_dir(&web)
-        .arg("foxglove_client.mjs")
-        .args(args);
-    command
-}
-
-/// Runs the script to its end and parses what it printed.
-fn run_node(args: &[&str]) -> Value {
-    let output = node(args)
-        .output()
-        .expect("node runs (install Node.js 20 or later: scripts/setup.sh)");
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    assert!(
-        output.status.success(),
-        "foxglove_client.mjs {args:?} failed: {}\n{stdout}\n{}",
-        output.status,
-        String::from_utf8_lossy(&output.stderr)
-    );
-    serde_json::from_str(stdout.trim()).expect("the script prints JSON")
 }
 
 /// Every laser scan a direct client of the robot got, by timestamp (ns): what player-sim
@@ -377,10 +340,6 @@ fn viewers_that_stop_reading_hold_a_bounded_backlog() {
         last.saturating_sub(earlier) < 4 * 1024,
         "still growing with {VIEWERS} stalled viewers: {samples:?} KiB"
     );
-}
-
-fn live_url(live: &FoxgloveLive) -> String {
-    format!("ws://127.0.0.1:{}", live.port())
 }
 
 /// This process's resident memory (the server, relay and simulation), KiB.

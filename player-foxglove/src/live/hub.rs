@@ -11,8 +11,9 @@
 //! sources), and a viewer's subscription holds a [`Look`] at each, through the robot's
 //! [`Watch`]; the relay subscribes upstream to a device while some look is held. Data of a
 //! device that has its channels and no viewer on them is not converted at all. A device's
-//! channels are made from its first data (the relay's survey holds every device until its
-//! first data came, then lets go of what nobody looks at).
+//! channels are made from the robot's device list ([`crate::device_topics`]), before it sent
+//! anything: a viewer may subscribe to a laser that sends only once someone does. What only
+//! its first data tells (a camera's image schema) makes its channel then.
 
 use std::collections::{BTreeSet, HashMap, HashSet};
 use std::sync::{Arc, Mutex, MutexGuard};
@@ -23,14 +24,16 @@ use foxglove::messages::log::Level;
 use player_front::{Device, Look, Watch};
 use player_proto::capture::Direction;
 use player_proto::client::TapEvent;
-use player_proto::wire::{Header, MsgType};
+use player_proto::interfaces::player::{self, Player};
+use player_proto::message::{Body, Message};
+use player_proto::wire::{Header, Interface, MsgType};
 
 use super::channels::Channels;
 use super::outbox::{Data, Outbox};
 use super::refusal::Refusal;
 use super::wire::{ChannelId, SubscriptionId};
 use crate::frames::timestamp;
-use crate::{Converter, Output, log};
+use crate::{Converter, Output, device_topics, log};
 
 /// A connected viewer, numbered from 1.
 pub type ViewerId = u64;
@@ -111,6 +114,9 @@ impl Hub {
     }
 
     fn frame(&self, robot: &str, converter: &Mutex<Converter>, header: &Header, body: &Bytes) {
+        if is_device_list(header) {
+            self.advertise_devices(robot, header, body);
+        }
         let source = (header.msg_type == MsgType::Data)
             .then(|| (robot.to_string(), (header.addr.interf, header.addr.index)));
         if let Some(source) = &source {
@@ -133,6 +139,30 @@ impl Hub {
         let mut state = self.lock();
         for output in outputs {
             state.publish(output, log_time, source.as_ref());
+        }
+    }
+
+    /// The channels of every device `robot`'s server lists (its answer to the device list
+    /// request, which every connection asks first), advertised before any data: a viewer
+    /// subscribes to a device that sends nothing until someone does.
+    fn advertise_devices(&self, robot: &str, header: &Header, body: &Bytes) {
+        let devices = match Message::decode(*header, body.clone()) {
+            Ok(Message {
+                body: Body::Player(Player::DevList(list)),
+                ..
+            }) => list.devices,
+            Ok(_) => return,
+            Err(e) => {
+                tracing::debug!("{robot}: device list not read: {e}");
+                return;
+            }
+        };
+        let mut state = self.lock();
+        for addr in devices {
+            let source = (robot.to_string(), (addr.interf, addr.index));
+            for output in device_topics(robot, addr.interf, addr.index) {
+                state.advertise(&output, &source);
+            }
         }
     }
 
@@ -258,22 +288,40 @@ impl Hub {
 }
 
 impl State {
-    /// Encodes `output` once and queues it to the channel's subscribers; `source` is the
-    /// device whose data made it, if data did.
-    fn publish(&mut self, output: Output, log_time: u64, source: Option<&Source>) {
-        let (channel, advertise) = self.channels.channel_of(&output);
-        if let Some(source) = source {
-            self.known.insert(source.clone());
-            self.sources
-                .entry(channel)
-                .or_default()
-                .insert(source.clone());
-        }
+    /// Makes `output`'s channel (advertised to every viewer if new) as one carrying the data
+    /// of `source`.
+    fn advertise(&mut self, output: &Output, source: &Source) -> ChannelId {
+        let (channel, advertise) = self.channels.channel_of(output);
+        self.sources
+            .entry(channel)
+            .or_default()
+            .insert(source.clone());
         if let Some(advertise) = advertise {
             for viewer in self.viewers.values() {
                 viewer.outbox.push_control(advertise.clone());
             }
         }
+        channel
+    }
+
+    /// Encodes `output` once and queues it to the channel's subscribers; `source` is the
+    /// device whose data made it, if data did.
+    fn publish(&mut self, output: Output, log_time: u64, source: Option<&Source>) {
+        let channel = match source {
+            Some(source) => {
+                self.known.insert(source.clone());
+                self.advertise(&output, source)
+            }
+            None => {
+                let (channel, advertise) = self.channels.channel_of(&output);
+                if let Some(advertise) = advertise {
+                    for viewer in self.viewers.values() {
+                        viewer.outbox.push_control(advertise.clone());
+                    }
+                }
+                channel
+            }
+        };
         let subscribed = self
             .subscribers
             .get(&channel)
@@ -308,6 +356,13 @@ impl State {
             }
         }
     }
+}
+
+/// Whether `header` is a server's answer to the device list request.
+fn is_device_list(header: &Header) -> bool {
+    header.msg_type == MsgType::Ack
+        && header.addr.interf == Interface::PLAYER
+        && header.subtype == player::REQ_DEVLIST
 }
 
 fn system_timestamp(time: SystemTime) -> foxglove::messages::Timestamp {
