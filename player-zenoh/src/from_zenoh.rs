@@ -3,7 +3,8 @@
 //! playerv, a script — reaches a robot on another network as if it were next door. When a
 //! robot's token goes (its relay lost it, or the link to its site broke), its server stops and
 //! its clients see the robot go; when the token comes back the robot is served again on the
-//! same port, so clients that reconnect find it where it was.
+//! same port, so clients that reconnect find it where it was. A robot costs its site only
+//! what local clients look at ([`crate::feeds`]).
 
 use std::collections::{BTreeMap, HashSet};
 use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, channel};
@@ -113,6 +114,17 @@ impl FromZenoh {
             .iter()
             .map(|(robot, remote)| (robot.clone(), remote.server.port(0)))
             .collect()
+    }
+
+    /// Devices whose data is subscribed to in Zenoh now (a local client looks at each), over
+    /// every robot served.
+    pub fn data_subscriptions(&self) -> usize {
+        let state = self.shared.lock();
+        state
+            .serving
+            .values()
+            .map(|remote| remote.feeds.subscriptions())
+            .sum()
     }
 
     /// Waits until `n` robots at least are served, at most `timeout`; returns them.

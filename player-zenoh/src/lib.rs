@@ -10,7 +10,8 @@
 //!   every message of every relayed robot, raw Player bytes (40-byte header + XDR body) so any
 //!   Player decoder reads them, and answers for the robot's devices from what it saw;
 //! * [`FromZenoh`] finds robots by their liveliness tokens and serves each as an ordinary
-//!   Player server on a local port.
+//!   Player server on a local port, subscribed in Zenoh to a device's data only while a
+//!   local client is subscribed to it (so the robot's relay subscribes upstream to that alone).
 //!
 //! ## Key space
 //!
@@ -38,6 +39,7 @@ mod bridge_config;
 pub mod cache;
 pub mod commands;
 mod error;
+mod feeds;
 mod from_zenoh;
 mod front;
 pub mod keys;

@@ -1,6 +1,7 @@
 //! One robot found in Zenoh, served as an ordinary Player server: its devices from the
-//! robot's `devices` queryable, its data from the `…/data` keys (published with the robot's
-//! own timestamps), `GET` requests answered from the `replies` queryable, and commands and
+//! robot's `devices` queryable, a device's data from its `…/data` key while a local client is
+//! subscribed to it (published with the robot's own timestamps; the robot's relay subscribes
+//! upstream only to what some Zenoh subscriber matches), `GET` requests answered from the `replies` queryable, and commands and
 //! other requests sent back on `…/cmd`, stamped with the bridge's identity — whether they
 //! act is the robot side's decision (see [`crate::commands`]).
 
@@ -11,10 +12,9 @@ use bytes::Bytes;
 use player_proto::interfaces::player::Player;
 use player_proto::message::{Body, Message};
 use player_proto::server::{Device, ReplaceRule, Reply, Server, ServerConfig};
-use player_proto::wire::{DevAddr, HEADER_LEN, Header, Interface, MsgType};
+use player_proto::wire::{HEADER_LEN, Header, Interface, MsgType};
 use zenoh::Session;
 use zenoh::Wait;
-use zenoh::pubsub::Subscriber;
 use zenoh::qos::CongestionControl;
 use zenoh::query::ConsolidationMode;
 
@@ -22,6 +22,7 @@ use crate::bridge_config::FromZenohConfig;
 use crate::cache::CachedReply;
 use crate::commands::decode_raw;
 use crate::error::ZenohError;
+use crate::feeds::Feeds;
 use crate::keys::{Leaf, RobotKey};
 use crate::stamp::Stamp;
 
@@ -31,12 +32,14 @@ const QUERY_WAIT: Duration = Duration::from_secs(3);
 /// A robot being served; stops serving when dropped.
 pub(crate) struct Remote {
     pub server: Arc<Server>,
-    _data: Subscriber<()>,
+    pub feeds: Feeds,
 }
 
 impl Drop for Remote {
     fn drop(&mut self) {
         self.server.shutdown();
+        // Its clients went without unsubscribing: their Zenoh subscriptions go here.
+        self.feeds.stop();
     }
 }
 
@@ -95,6 +98,7 @@ pub(crate) fn serve(
     server_config.send_buffer = config.send_buffer;
     server_config.thread_name = "from-zenoh".into();
     let number = server_config.robot(port);
+    let feeds = Feeds::default();
     for addr in list {
         let driver = drivers
             .iter()
@@ -109,38 +113,13 @@ pub(crate) fn serve(
             driver,
             identity: config.identity.clone(),
             replies: Arc::default(),
+            feeds: feeds.clone(),
         };
         server_config.device(number, addr, device);
     }
     let server = Arc::new(Server::start(server_config)?);
-    let publisher = server.publisher();
-    let local = u32::from(server.port(0));
-    let data = session
-        .declare_subscriber(format!("{robot}/*/*/{}", Leaf::Data))
-        .callback(move |sample| {
-            let raw = sample.payload().to_bytes();
-            let Some(Ok(header)) = Header::decode_slice(&raw) else {
-                return;
-            };
-            let body = &raw[HEADER_LEN..];
-            let body = if body.is_empty() {
-                Body::Empty
-            } else {
-                // Passed on as it came: the local server re-sends the bytes untouched.
-                Body::Unknown(Bytes::copy_from_slice(body))
-            };
-            let addr = DevAddr {
-                host: 0,
-                robot: local,
-                ..header.addr
-            };
-            publisher.publish(addr, header.subtype, body, header.timestamp);
-        })
-        .wait()?;
-    Ok(Remote {
-        server,
-        _data: data,
-    })
+    feeds.serve_on(server.publisher(), server.port(0));
+    Ok(Remote { server, feeds })
 }
 
 /// A device of a robot found in Zenoh.
@@ -153,6 +132,8 @@ struct RemoteDevice {
     identity: String,
     /// The robot side's cached replies, fetched when first asked for.
     replies: Arc<Mutex<Vec<CachedReply>>>,
+    /// The robot's data subscriptions in Zenoh, one per device a local client looks at.
+    feeds: Feeds,
 }
 
 impl RemoteDevice {
@@ -207,6 +188,27 @@ impl RemoteDevice {
 impl Device for RemoteDevice {
     fn driver_name(&self) -> &str {
         &self.driver
+    }
+
+    /// The first local subscriber subscribes to the device's data in Zenoh.
+    fn on_subscribe(&mut self) -> bool {
+        let key = self.key(Leaf::Data);
+        match self
+            .feeds
+            .subscribed(&self.session, (self.interf, self.index), key)
+        {
+            Ok(()) => true,
+            Err(e) => {
+                // Refused, as a Player driver that cannot start: no data would come.
+                tracing::warn!(robot = %self.robot, "cannot subscribe to its data in Zenoh: {e}");
+                false
+            }
+        }
+    }
+
+    /// The last local subscriber gone, the Zenoh subscription goes too.
+    fn on_unsubscribe(&mut self) {
+        self.feeds.unsubscribed((self.interf, self.index));
     }
 
     fn on_command(&mut self, command: &Message) {
