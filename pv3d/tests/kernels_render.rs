@@ -8,6 +8,7 @@ use std::sync::Arc;
 use eframe::glow::{self, HasContext};
 use framework::scene::{FilterChain, GlslKernel, Kernel, PixelFormat, Pixels};
 use pv3d::headless::HeadlessGl;
+use pv3d::render::gl_error::GlError;
 use pv3d::render::kernels::{KernelError, KernelRunner, reference};
 use pv3d::render::texture::{self, GpuTexture};
 
@@ -190,9 +191,14 @@ fn a_glsl_kernel_runs_with_its_parameters_and_a_broken_one_is_named() {
     })]);
     let source = texture::upload(&gl.gl, &pixels).unwrap();
     let err = runner.run(&gl.gl, &source, &broken).unwrap_err();
-    let KernelError::Compile { kernel, log } = &err else {
+    let KernelError::Compile {
+        kernel,
+        source: GlError::Compile { stage, log },
+    } = &err
+    else {
         panic!("{err}");
     };
+    assert_eq!(*stage, "fragment shader");
     assert_eq!(kernel, "configs/kernels/broken.glsl");
     // The driver's log counts lines from the kernel's own first line: the error is on line 2.
     assert!(log.contains(":2("), "{log}");

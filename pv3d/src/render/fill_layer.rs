@@ -11,6 +11,7 @@
 
 use eframe::glow::{self, HasContext};
 
+use super::gl_error::GlError;
 use super::gl_renderer::RendererError;
 use super::gl_state::SavedState;
 use super::shader::{glsl_header, link_program};
@@ -54,9 +55,9 @@ impl FillLayer {
             .map_err(RendererError)?;
             Ok(FillLayer {
                 program,
-                vao: gl.create_vertex_array().map_err(RendererError)?,
-                framebuffer: gl.create_framebuffer().map_err(RendererError)?,
-                texture: gl.create_texture().map_err(RendererError)?,
+                vao: gl.create_vertex_array().map_err(GlError::from)?,
+                framebuffer: gl.create_framebuffer().map_err(GlError::from)?,
+                texture: gl.create_texture().map_err(GlError::from)?,
                 size: (0, 0),
             })
         }

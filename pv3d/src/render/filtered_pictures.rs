@@ -4,13 +4,27 @@
 //! filtered once: a frame that has not changed is not filtered again.
 
 use eframe::glow::{self, HasContext};
-use framework::scene::{FilteredPicture, PixelFormat, Pixels};
+use framework::scene::{FilteredPicture, ImageError, PixelFormat, Pixels};
 
-use super::kernels::KernelRunner;
-use super::texture::{self, GpuTexture};
+use super::gl_error::GlError;
+use super::kernels::{KernelError, KernelRunner};
+use super::texture::{self, GpuTexture, TextureError};
 
 /// RGBA: what a filtered picture is read back as.
 const BYTES_PER_PIXEL: usize = 4;
+
+/// Why a window's picture was not filtered: which step failed.
+#[derive(Debug, thiserror::Error)]
+enum FilterError {
+    #[error(transparent)]
+    Gl(#[from] GlError),
+    #[error("uploading the picture: {0}")]
+    Upload(#[from] TextureError),
+    #[error(transparent)]
+    Kernel(#[from] KernelError),
+    #[error("reading the filtered picture back: {0}")]
+    ReadBack(#[from] ImageError),
+}
 
 /// The kernel runner for window pictures, and which pictures it has filtered.
 #[derive(Default)]
@@ -43,12 +57,16 @@ impl PictureFilters {
         }
     }
 
-    fn filter(&mut self, gl: &glow::Context, request: &FilteredPicture) -> Result<Pixels, String> {
+    fn filter(
+        &mut self,
+        gl: &glow::Context,
+        request: &FilteredPicture,
+    ) -> Result<Pixels, FilterError> {
         let runner = match &mut self.runner {
             Some(runner) => runner,
             None => self.runner.insert(KernelRunner::new(gl)?),
         };
-        let source = texture::upload(gl, &request.pixels).map_err(|e| e.to_string())?;
+        let source = texture::upload(gl, &request.pixels)?;
         let result = runner.run(gl, &source, &request.filters);
         let pixels = match result {
             Ok(Some(filtered)) => {
@@ -58,7 +76,7 @@ impl PictureFilters {
                 read
             }
             Ok(None) => read_back(gl, &source),
-            Err(e) => Err(e.to_string()),
+            Err(e) => Err(e.into()),
         };
         // SAFETY: as above.
         unsafe { gl.delete_texture(source.texture) };
@@ -74,14 +92,14 @@ impl PictureFilters {
 }
 
 /// The texture's pixels, RGBA, rows bottom-up, read through a temporary framebuffer.
-fn read_back(gl: &glow::Context, texture: &GpuTexture) -> Result<Pixels, String> {
+fn read_back(gl: &glow::Context, texture: &GpuTexture) -> Result<Pixels, FilterError> {
     let (w, h) = (texture.width, texture.height);
     let mut bytes = vec![0u8; w as usize * h as usize * BYTES_PER_PIXEL];
     // SAFETY: the texture belongs to this current context; `bytes` holds exactly its pixels;
     // the caller's read framebuffer is put back.
     unsafe {
         let saved = gl.get_parameter_framebuffer(glow::READ_FRAMEBUFFER_BINDING);
-        let framebuffer = gl.create_framebuffer()?;
+        let framebuffer = gl.create_framebuffer().map_err(GlError::from)?;
         gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(framebuffer));
         gl.framebuffer_texture_2d(
             glow::READ_FRAMEBUFFER,
@@ -103,5 +121,5 @@ fn read_back(gl: &glow::Context, texture: &GpuTexture) -> Result<Pixels, String>
         gl.bind_framebuffer(glow::READ_FRAMEBUFFER, saved);
         gl.delete_framebuffer(framebuffer);
     }
-    Pixels::new(w, h, PixelFormat::Rgba8, bytes).map_err(|e| e.to_string())
+    Ok(Pixels::new(w, h, PixelFormat::Rgba8, bytes)?)
 }

@@ -10,6 +10,7 @@ use glam::{Mat4, Vec3};
 use super::batch::{GpuMeshVertex, GpuVertex, SceneBatch};
 use super::billboard::BillboardAxes;
 use super::fill_layer::FillLayer;
+use super::gl_error::GlError;
 use super::image_quads::ImageRenderer;
 use super::shader::{glsl_header, link_program};
 
@@ -94,7 +95,7 @@ struct Buffer {
 /// Why the renderer could not be created.
 #[derive(Debug, thiserror::Error)]
 #[error("OpenGL setup failed: {0}")]
-pub struct RendererError(pub String);
+pub struct RendererError(#[from] pub GlError);
 
 /// Draws a [`SceneBatch`] with glow.
 pub struct SceneRenderer {
@@ -356,8 +357,8 @@ unsafe fn program(
 unsafe fn new_buffer(gl: &glow::Context) -> Result<Buffer, RendererError> {
     // SAFETY: the caller holds a current context.
     unsafe {
-        let vao = gl.create_vertex_array().map_err(RendererError)?;
-        let vbo = gl.create_buffer().map_err(RendererError)?;
+        let vao = gl.create_vertex_array().map_err(GlError::from)?;
+        let vbo = gl.create_buffer().map_err(GlError::from)?;
         gl.bind_vertex_array(Some(vao));
         gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
         Ok(Buffer { vao, vbo, count: 0 })

@@ -7,6 +7,7 @@
 
 use eframe::glow::{self, HasContext};
 
+use super::gl_error::GlError;
 use super::gl_state::SavedState;
 use super::shader::{glsl_header, link_program};
 use super::texture::{GpuTexture, level_count, set_sampling};
@@ -45,7 +46,7 @@ pub struct GridMipmaps {
 }
 
 impl GridMipmaps {
-    pub fn new(gl: &glow::Context) -> Result<GridMipmaps, String> {
+    pub fn new(gl: &glow::Context) -> Result<GridMipmaps, GlError> {
         let header = glsl_header(gl);
         // SAFETY: object creation on the current context.
         unsafe {

@@ -11,6 +11,7 @@ use framework::scene::{FilterChain, Pixels, Sampling};
 
 use super::batch::BatchedImage;
 use super::billboard::BillboardAxes;
+use super::gl_error::GlError;
 use super::grid_mipmaps::GridMipmaps;
 use super::kernels::KernelRunner;
 use super::shader::{glsl_header, link_program};
@@ -88,7 +89,7 @@ pub struct ImageRenderer {
 }
 
 impl ImageRenderer {
-    pub fn new(gl: &glow::Context) -> Result<ImageRenderer, String> {
+    pub fn new(gl: &glow::Context) -> Result<ImageRenderer, GlError> {
         let header = glsl_header(gl);
         // SAFETY: object creation on the current context; the layout matches ImageVertex.
         unsafe {

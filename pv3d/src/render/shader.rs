@@ -3,6 +3,8 @@
 
 use eframe::glow::{self, HasContext};
 
+use super::gl_error::GlError;
+
 /// The first lines of every shader: GLSL 330 core on desktop GL (Mesa's llvmpipe included),
 /// 300 es on GLES.
 pub fn glsl_header(gl: &glow::Context) -> &'static str {
@@ -22,7 +24,7 @@ pub unsafe fn link_program(
     gl: &glow::Context,
     vertex: &str,
     fragment: &str,
-) -> Result<glow::Program, String> {
+) -> Result<glow::Program, GlError> {
     // SAFETY: the caller holds a current context; every object made here is deleted on error.
     unsafe {
         let program = gl.create_program()?;
@@ -41,7 +43,10 @@ pub unsafe fn link_program(
                     gl.delete_shader(s);
                 }
                 gl.delete_program(program);
-                return Err(format!("{stage}: {}", log.trim()));
+                return Err(GlError::Compile {
+                    stage,
+                    log: log.trim().to_string(),
+                });
             }
             gl.attach_shader(program, shader);
             shaders.push(shader);
@@ -55,7 +60,7 @@ pub unsafe fn link_program(
         if !linked {
             let log = gl.get_program_info_log(program);
             gl.delete_program(program);
-            return Err(format!("link: {}", log.trim()));
+            return Err(GlError::Link(log.trim().to_string()));
         }
         Ok(program)
     }

@@ -12,6 +12,7 @@ use glam::camera::rh::{proj::opengl, view::look_at_mat4};
 use glam::{Affine3A, Mat4};
 
 use super::batch::BatchedView;
+use super::gl_error::GlError;
 use super::gl_renderer::{RendererError, SceneRenderer};
 
 /// RGBA, one byte a channel: what a read-back pixel takes.
@@ -183,10 +184,10 @@ unsafe fn create_target(
 ) -> Result<Target, RendererError> {
     // SAFETY: the caller holds a current context; sizes were validated as 1..=MAX_IMAGE_SIDE.
     unsafe {
-        let framebuffer = gl.create_framebuffer().map_err(RendererError)?;
+        let framebuffer = gl.create_framebuffer().map_err(GlError::from)?;
         gl.bind_framebuffer(glow::FRAMEBUFFER, Some(framebuffer));
         let storage = |format: u32, attachment: u32| -> Result<_, RendererError> {
-            let buffer = gl.create_renderbuffer().map_err(RendererError)?;
+            let buffer = gl.create_renderbuffer().map_err(GlError::from)?;
             gl.bind_renderbuffer(glow::RENDERBUFFER, Some(buffer));
             gl.renderbuffer_storage(glow::RENDERBUFFER, format, width as i32, height as i32);
             gl.framebuffer_renderbuffer(
@@ -205,9 +206,12 @@ unsafe fn create_target(
             gl.delete_framebuffer(framebuffer);
             gl.delete_renderbuffer(color);
             gl.delete_renderbuffer(depth);
-            return Err(RendererError(format!(
-                "virtual camera target {width}×{height} incomplete (status 0x{status:x})"
-            )));
+            return Err(RendererError(GlError::Incomplete {
+                what: "virtual camera target",
+                width,
+                height,
+                status,
+            }));
         }
         Ok(Target {
             width,

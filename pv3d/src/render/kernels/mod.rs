@@ -16,20 +16,21 @@ use framework::scene::Kernel;
 
 pub use runner::KernelRunner;
 
+use super::gl_error::GlError;
 use super::texture::TextureError;
 
 /// Why a chain could not run.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum KernelError {
-    #[error("kernel {kernel} does not compile: {log}")]
-    Compile { kernel: String, log: String },
+    #[error("kernel {kernel} does not compile: {source}")]
+    Compile { kernel: String, source: GlError },
     #[error("kernel {kernel}: {source}")]
     Texture {
         kernel: String,
         source: TextureError,
     },
-    #[error("kernel {kernel}: {message}")]
-    Gl { kernel: String, message: String },
+    #[error("kernel {kernel}: {source}")]
+    Gl { kernel: String, source: GlError },
 }
 
 /// Which shader a pass runs.

@@ -9,6 +9,7 @@ use eframe::glow::{self, HasContext};
 use framework::scene::FilterChain;
 
 use super::{KernelError, Pass, ShaderKey, Uniform, kernel_source, passes_of, sources};
+use crate::render::gl_error::GlError;
 use crate::render::gl_state::SavedState;
 use crate::render::shader::{glsl_header, link_program};
 use crate::render::texture::{GpuTexture, render_target};
@@ -23,7 +24,7 @@ pub struct KernelRunner {
 }
 
 impl KernelRunner {
-    pub fn new(gl: &glow::Context) -> Result<KernelRunner, String> {
+    pub fn new(gl: &glow::Context) -> Result<KernelRunner, GlError> {
         // SAFETY: plain object creation on the current context.
         unsafe {
             Ok(KernelRunner {
@@ -65,10 +66,10 @@ impl KernelRunner {
         let vertex = format!("{}{}", self.header, sources::PASS_VERTEX);
         let fragment = sources::fragment(self.header, &kernel_source(&pass.shader));
         // SAFETY: the context is current.
-        let program = unsafe { link_program(gl, &vertex, &fragment) }.map_err(|log| {
+        let program = unsafe { link_program(gl, &vertex, &fragment) }.map_err(|source| {
             KernelError::Compile {
                 kernel: pass.kernel.clone(),
-                log,
+                source,
             }
         })?;
         self.programs.insert(pass.shader.clone(), program);
@@ -122,7 +123,12 @@ impl KernelRunner {
                     if status != glow::FRAMEBUFFER_COMPLETE {
                         return Err(KernelError::Gl {
                             kernel: pass.kernel.clone(),
-                            message: format!("framebuffer incomplete (status 0x{status:x})"),
+                            source: GlError::Incomplete {
+                                what: "framebuffer",
+                                width: target.width,
+                                height: target.height,
+                                status,
+                            },
                         });
                     }
                     gl.use_program(Some(program));
