@@ -39,14 +39,15 @@ impl Walls<'_> {
 }
 
 /// The walls a sensor at `(x, y)` reaching `max` sees: none when its rays pass through them
-/// (negative `ranger_return`), or on the floorplan's grid when no wall cell lies within its
-/// reach (the raster's walk needs no such test: it crosses open space in jumps).
+/// (negative `ranger_return`) or when no wall cell lies within its reach (on the raster, asked
+/// once for the scan instead of by every beam's walk: `sim/wall_free.rs`; on the floorplan's
+/// own grid, by its wall rectangles).
 fn walls_seen(sim: &Simulation, x: f64, y: f64, max: f64) -> Option<Walls<'_>> {
     if sim.world.floor_ranger_return < 0.0 {
         return None;
     }
     if let Some(raster) = sim.wall_raster() {
-        return Some(Walls::Raster(raster));
+        return (!raster.free_within(x, y, max)).then_some(Walls::Raster(raster));
     }
     let grid = sim.world.floor.as_ref()?;
     grid.walls_within(x, y, max).then_some(Walls::Grid(grid))
