@@ -6,13 +6,15 @@
 //! `.prec`. `docs/RECORDING-FORMAT.md` ("MCAP") describes the layout; [`layout`] implements it.
 //!
 //! * [`McapRecordWriter`] — records into an MCAP file, with what Foxglove shows of them
-//!   ([`foxglove_channels`], through `player_foxglove`).
+//!   (`foxglove_channels`, through `player_foxglove`: the `foxglove` feature, on by default;
+//!   reading needs no Foxglove schemas).
 //! * [`McapRecords`] — records out of one, trusting nothing.
 //! * [`prec_to_mcap`] / [`mcap_to_prec`] — whole files, streaming, in bounded memory.
 //! * [`recorder`] — a recorder writing MCAP directly when the file is named `*.mcap`.
 //! * [`McapFile`] — an MCAP file as a recording source, read from its start or from a seek
 //!   point through its chunk index, by a replay or a summary: no conversion first.
 
+#[cfg(feature = "foxglove")]
 pub mod foxglove_channels;
 pub mod layout;
 pub mod reader;

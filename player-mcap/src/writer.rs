@@ -1,5 +1,6 @@
 //! Writing a recording's records into an MCAP file, losslessly (see [`crate::layout`]), with
-//! Foxglove's well-known schemas beside them when asked ([`crate::foxglove_channels`]).
+//! Foxglove's well-known schemas beside them when asked (`crate::foxglove_channels`, with the
+//! `foxglove` feature).
 
 use std::collections::HashMap;
 use std::io::{Seek, Write};
@@ -7,6 +8,7 @@ use std::io::{Seek, Write};
 use mcap::records::MessageHeader;
 use player_proto::recording::{Event, Record};
 
+#[cfg(feature = "foxglove")]
 use crate::foxglove_channels::FoxgloveChannels;
 use crate::layout::{FILE_METADATA, Stream, session_json};
 
@@ -26,7 +28,9 @@ pub enum McapWriteError {
 /// How the file is written.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct McapOptions {
-    /// Also write what Foxglove shows of the messages, in its well-known schemas.
+    /// Also write what Foxglove shows of the messages, in its well-known schemas (the
+    /// `foxglove` feature).
+    #[cfg(feature = "foxglove")]
     pub foxglove: bool,
     /// Uncompressed bytes per chunk: what a crash can lose while recording directly.
     pub chunk_size: u64,
@@ -35,6 +39,7 @@ pub struct McapOptions {
 impl Default for McapOptions {
     fn default() -> Self {
         McapOptions {
+            #[cfg(feature = "foxglove")]
             foxglove: true,
             chunk_size: mcap::WriteOptions::DEFAULT_CHUNK_SIZE,
         }
@@ -48,6 +53,7 @@ pub struct McapRecordWriter<W: Write + Seek> {
     schemas: HashMap<Stream, u16>,
     /// Host and port of each connection, from its `connection` record.
     hosts: HashMap<u32, (String, u16)>,
+    #[cfg(feature = "foxglove")]
     foxglove: Option<FoxgloveChannels>,
     records: u64,
 }
@@ -72,6 +78,7 @@ impl<W: Write + Seek> McapRecordWriter<W> {
             channels: HashMap::new(),
             schemas: HashMap::new(),
             hosts: HashMap::new(),
+            #[cfg(feature = "foxglove")]
             foxglove: options.foxglove.then(FoxgloveChannels::default),
             records: 0,
         })
@@ -104,6 +111,7 @@ impl<W: Write + Seek> McapRecordWriter<W> {
         };
         written.map_err(|source| self.failed(source))?;
         self.records += 1;
+        #[cfg(feature = "foxglove")]
         if let Some(foxglove) = &mut self.foxglove {
             let records = self.records;
             foxglove
@@ -118,9 +126,12 @@ impl<W: Write + Seek> McapRecordWriter<W> {
         self.records
     }
 
-    /// Foxglove messages written so far.
+    /// Foxglove messages written so far (none without the `foxglove` feature).
     pub fn foxglove_messages(&self) -> u64 {
-        self.foxglove.as_ref().map_or(0, |f| f.written)
+        #[cfg(feature = "foxglove")]
+        return self.foxglove.as_ref().map_or(0, |f| f.written);
+        #[cfg(not(feature = "foxglove"))]
+        0
     }
 
     /// Writes what is buffered: every record so far is in the file after this.
