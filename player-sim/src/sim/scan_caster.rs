@@ -15,6 +15,7 @@ use super::directions::Directions;
 use super::nearby::NearbyBoxes;
 use super::sensors::walls_reach;
 use super::wall_beams::WallBeams;
+use super::wall_free::beams_meeting;
 use super::wall_raster::WallRaster;
 use crate::world::{OccupancyGrid, Pose};
 
@@ -38,19 +39,35 @@ impl Walls<'_> {
     }
 }
 
-/// The walls a sensor at `(x, y)` reaching `max` sees: none when its rays pass through them
-/// (negative `ranger_return`) or when no wall cell lies within its reach (on the raster, asked
-/// once for the scan instead of by every beam's walk: `sim/wall_free.rs`; on the floorplan's
-/// own grid, by its wall rectangles).
-fn walls_seen(sim: &Simulation, x: f64, y: f64, max: f64) -> Option<Walls<'_>> {
+/// The walls a sensor at `(x, y)` reaching `max` with beams `fan` sees, and which of its beams
+/// may meet them: none when its rays pass through them (negative `ranger_return`); on Stage's
+/// raster, the beams towards the parts of its reach not known free of walls (`sim/wall_free.rs`:
+/// asked once for the scan instead of by every beam's walk); on the floorplan's own grid, the
+/// beams towards its wall rectangles within reach.
+fn walls_seen(
+    sim: &Simulation,
+    x: f64,
+    y: f64,
+    max: f64,
+    fan: Fan,
+) -> Option<(Walls<'_>, Option<Vec<bool>>)> {
     if sim.world.floor_ranger_return < 0.0 {
         return None;
     }
     if let Some(raster) = sim.wall_raster() {
-        return (!raster.free_within(x, y, max)).then_some(Walls::Raster(raster));
+        let mut parts = Vec::new();
+        if !raster.walled_parts(x, y, max, &mut parts) {
+            return Some((Walls::Raster(raster), None));
+        }
+        let beams = beams_meeting(&parts, x, y, fan);
+        return (!parts.is_empty()).then_some((Walls::Raster(raster), Some(beams)));
     }
     let grid = sim.world.floor.as_ref()?;
-    grid.walls_within(x, y, max).then_some(Walls::Grid(grid))
+    grid.walls_within(x, y, max).then(|| {
+        let beams = WallBeams::new(grid, x, y, max, fan);
+        let may_meet = (0..fan.count).map(|i| beams.may_meet(i)).collect();
+        (Walls::Grid(grid), Some(may_meet))
+    })
 }
 
 /// The boxes a sensor at `at` sees within `reach` at height `z`, and each beam's share of them.
@@ -80,20 +97,21 @@ pub(super) fn caster(
     z: f64,
 ) -> impl Fn(usize, f64) -> Option<Hit> + '_ {
     let at = (origin.x, origin.y);
-    let walls = walls_seen(sim, at.0, at.1, max).filter(|_| walls_reach(sim, z));
-    // On the floorplan's own grid, only the beams that may meet a wall walk it.
-    let wall_beams = match walls {
-        Some(Walls::Grid(grid)) => Some(WallBeams::new(grid, at.0, at.1, max, fan)),
-        _ => None,
-    };
+    // Only the beams that may meet a wall walk the walls.
+    let seen = walls_reach(sim, z)
+        .then(|| walls_seen(sim, at.0, at.1, max, fan))
+        .flatten();
+    let (walls, wall_beams) = seen.map_or((None, None), |(walls, beams)| (Some(walls), beams));
     let directions = Directions::of(fan);
-    let wall_of = move |beam: usize, (dx, dy): (f64, f64)| {
-        walls
-            .filter(|_| wall_beams.as_ref().is_none_or(|w| w.may_meet(beam)))
-            .and_then(|walls| walls.cast(at.0, at.1, dx, dy, max))
-    };
+    let wall_along =
+        move |(dx, dy): (f64, f64)| walls.and_then(|w| w.cast(at.0, at.1, dx, dy, max));
     let fan_walls: Vec<Option<f64>> = (0..fan.count)
-        .map(|beam| wall_of(beam, directions.of_beam(beam, fan_angle(fan, beam))))
+        .map(|beam| {
+            let may_meet = wall_beams.as_ref().is_none_or(|w| w[beam]);
+            may_meet
+                .then(|| wall_along(directions.of_beam(beam, fan_angle(fan, beam))))
+                .flatten()
+        })
         .collect();
     // The farthest any beam of the fan reaches: its wall, or its range where it meets none.
     let reach = fan_walls
@@ -111,7 +129,9 @@ pub(super) fn caster(
         } else {
             let (all, by_beam) =
                 everything.get_or_init(|| boxes_within(sim, robot, at, max, fan, z));
-            (wall_of(beam, direction), all, by_beam.of(beam))
+            // Turned off its fan's direction: walked whether or not the fan's beam may meet
+            // a wall.
+            (wall_along(direction), all, by_beam.of(beam))
         };
         // Nothing in this beam's direction: its maximum.
         if wall.is_none() && ahead.is_empty() {
