@@ -42,7 +42,8 @@ fn a_models_children_stand_on_it_are_sensed_and_stop_robots() {
 
     let mut sim = Simulation::new(world);
     // The ranger, 0.31 m up (above the base's 0.1 m), facing the station across y = -0.1:
-    // it meets the post's near face at x = 1.95.
+    // it meets the post's near face at x = 1.95, within a cell of Stage's 2 cm raster (the
+    // face's cell starts at 1.94).
     sim.robots[0].pose = Pose {
         x: 0.0,
         y: -0.1,
@@ -50,7 +51,7 @@ fn a_models_children_stand_on_it_are_sensed_and_stop_robots() {
     };
     let ranger = sim.world.robots[0].rangers[0].clone();
     let reading = ranger_scan(&sim, 0, &ranger)[0];
-    assert!((reading - 1.95).abs() < 0.01, "{reading}");
+    assert!((reading - 1.95).abs() < 0.02, "{reading}");
     let finder = sim.world.robots[0].fiducials[0].clone();
     assert!(fiducials(&sim, 0, &finder).iter().any(|h| h.id == 2));
 

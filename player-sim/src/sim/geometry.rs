@@ -1,6 +1,7 @@
 //! Rays against oriented boxes, and box overlap: what robots and obstacles are to the
 //! simulator.
 
+use super::box_cells::{Placed, cell_margin};
 use super::shapes::{outlines_overlap, ray_into_polygons};
 use crate::world::{Polygon, Pose, placed};
 
@@ -38,6 +39,30 @@ impl GroundBox<'_> {
             return hit;
         }
         hit.and_then(|_| ray_into_polygons(self.shape, ox, oy, dx, dy))
+    }
+
+    /// Distance along the ray from `(x, y)` at `angle` to the box's cells on a raster of
+    /// `resolution`, as rangers meet it (`sim/box_cells.rs`); exactly where the box is too
+    /// large for a raster.
+    pub fn raycast_cells(&self, resolution: f64, x: f64, y: f64, angle: f64) -> Option<f64> {
+        let (sin, cos) = self.pose.a.sin_cos();
+        let placed = Placed {
+            x: self.pose.x,
+            y: self.pose.y,
+            sin,
+            cos,
+            half_length: self.length / 2.0,
+            half_width: self.width / 2.0,
+            shape: self.shape,
+        };
+        let (dy, dx) = angle.sin_cos();
+        let beyond = (self.pose.x - x) * dx
+            + (self.pose.y - y) * dy
+            + self.bounding_radius()
+            + cell_margin(resolution);
+        placed
+            .cast_cells(resolution, (x, y), (dx, dy), beyond.max(0.0))
+            .unwrap_or_else(|| self.raycast(x, y, angle))
     }
 
     /// The solid outline in world coordinates: the blocks, or the box's four corners.

@@ -6,6 +6,7 @@ mod battery;
 mod beams;
 mod blobfinder;
 mod body_index;
+mod box_cells;
 mod camera;
 mod directions;
 mod drivers;

@@ -6,6 +6,7 @@
 //! instead of all 255 others.
 
 use super::Simulation;
+use super::box_cells::{Placed, cell_margin};
 use super::geometry::slab_hit;
 use super::sensors::body_at;
 use super::shapes::ray_into_polygons;
@@ -32,11 +33,36 @@ pub struct SolidBox<'a> {
     shape: &'a [Polygon],
     /// Its blocks by height, when they are not all as tall (see [`NearbyBoxes::reaching`]).
     slices: &'a [ShapeSlice],
+    /// The world's raster when rays meet the box's cells on it, as rangers do
+    /// (`sim/box_cells.rs`, [`NearbyBoxes::on_raster`]); 0: its exact outline (the camera).
+    resolution: f64,
 }
 
 impl SolidBox<'_> {
-    /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box, if ahead.
+    /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box (its cells on the
+    /// world's raster when [`NearbyBoxes::on_raster`]), if ahead.
     fn hit(&self, x: f64, y: f64, dx: f64, dy: f64) -> Option<f64> {
+        if self.resolution == 0.0 {
+            return self.exact_hit(x, y, dx, dy);
+        }
+        let placed = Placed {
+            x: self.x,
+            y: self.y,
+            sin: self.sin,
+            cos: self.cos,
+            half_length: self.half_length,
+            half_width: self.half_width,
+            shape: self.shape,
+        };
+        // Nothing of the box lies farther than its far side.
+        let beyond = (self.x - x) * dx + (self.y - y) * dy + self.radius;
+        placed
+            .cast_cells(self.resolution, (x, y), (dx, dy), beyond.max(0.0))
+            .unwrap_or_else(|| self.exact_hit(x, y, dx, dy))
+    }
+
+    /// Where the ray enters the box's exact outline.
+    fn exact_hit(&self, x: f64, y: f64, dx: f64, dy: f64) -> Option<f64> {
         let (rx, ry) = (x - self.x, y - self.y);
         let (ox, oy) = (
             self.cos * rx + self.sin * ry,
@@ -108,7 +134,8 @@ impl<'a> NearbyBoxes<'a> {
         boxes.extend(robots.chain(obstacles).filter_map(
             |(pose, trig, size, color, ranger_return, (shape, slices))| {
                 // Squares, not `hypot`: every sensor asks this of the robots around it.
-                let radius = (size[0] * size[0] + size[1] * size[1]).sqrt() / 2.0;
+                let radius = (size[0] * size[0] + size[1] * size[1]).sqrt() / 2.0
+                    + cell_margin(sim.world.resolution);
                 let (ex, ey) = (pose.x - x, pose.y - y);
                 let within = reach + radius;
                 (within >= 0.0 && ex * ex + ey * ey <= within * within).then(|| {
@@ -127,6 +154,7 @@ impl<'a> NearbyBoxes<'a> {
                         ranger_return,
                         shape,
                         slices,
+                        resolution: 0.0,
                     }
                 })
             },
@@ -156,6 +184,15 @@ impl<'a> NearbyBoxes<'a> {
         self
     }
 
+    /// Rays meet the boxes as Stage's rangers meet them: on the world's raster of `resolution`
+    /// (see `sim/box_cells.rs`), not on their exact outlines.
+    pub fn on_raster(mut self, resolution: f64) -> Self {
+        for b in &mut self.boxes {
+            b.resolution = resolution;
+        }
+        self
+    }
+
     /// With the bodies mounted on every robot but `except` within `reach` of `(x, y)` (what
     /// rangers meet; the other sensors and collisions know only the robots' own bodies).
     pub fn with_mounted(
@@ -180,8 +217,9 @@ impl<'a> NearbyBoxes<'a> {
                     a: p.a + body.pose.a,
                 };
                 // Squares, not `hypot`: every scan asks this of the robots around it.
-                let radius =
-                    (body.size[0] * body.size[0] + body.size[1] * body.size[1]).sqrt() / 2.0;
+                let radius = (body.size[0] * body.size[0] + body.size[1] * body.size[1]).sqrt()
+                    / 2.0
+                    + cell_margin(sim.world.resolution);
                 let (ex, ey, within) = (pose.x - x, pose.y - y, reach + radius);
                 if !(within >= 0.0 && ex * ex + ey * ey <= within * within) {
                     continue;
@@ -205,6 +243,7 @@ impl<'a> NearbyBoxes<'a> {
                     ranger_return: body.ranger_return,
                     shape: &body.shape,
                     slices: &[],
+                    resolution: 0.0,
                 });
             }
         }

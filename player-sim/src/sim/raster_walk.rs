@@ -15,6 +15,28 @@
 use super::wall_raster::{WallRaster, quadrant};
 use crate::world::floor_i64;
 
+/// Cells a ray walks through: how far it may jump from a cell (0 on a solid cell).
+pub(super) trait Cells {
+    /// Cells per metre.
+    fn per_metre(&self) -> f64;
+    /// The free square of global cell `(x, y)` for a ray heading into quarter `q` (see
+    /// [`WallRaster`]): 0 on a solid cell; a ray may move that many cells less one along its
+    /// longer axis without entering a solid one.
+    fn ahead(&self, x: i64, y: i64, q: usize) -> u32;
+}
+
+impl Cells for WallRaster {
+    #[inline]
+    fn per_metre(&self) -> f64 {
+        self.per_metre
+    }
+
+    #[inline]
+    fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
+        WallRaster::ahead(self, x, y, q)
+    }
+}
+
 /// The cell Stage's ray looks into for a point in floored cell `k` (see the module's note).
 #[inline]
 fn looked_into(k: i64) -> i64 {
@@ -28,74 +50,81 @@ impl WallRaster {
     /// Distance from `(x, y)` along the unit direction `(dx, dy)` to where the ray enters the
     /// first wall cell, if within `max` (0 when it starts in one).
     pub fn cast(&self, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<f64> {
-        let (gx, gy) = (x * self.per_metre, y * self.per_metre);
-        let reach = max * self.per_metre;
-        if !(gx.is_finite() && gy.is_finite() && reach >= 0.0 && dx.is_finite() && dy.is_finite()) {
-            return None;
-        }
-        if dx == 0.0 && dy == 0.0 {
-            let k = (looked_into(floor_i64(gx)), looked_into(floor_i64(gy)));
-            return (self.clearance(k.0, k.1) == 0).then_some(0.0);
-        }
-        // Which axis the ray moves along the more, and how far per unit along the ray.
-        // A diagonal's tie (to rounding: its sine and cosine may differ in the last bit) goes
-        // to y, as a tie goes in Stage.
-        let x_longer = dx.abs() > dy.abs() + 1e-12;
-        let longer = if x_longer { dx.abs() } else { dy.abs() };
-        let q = quadrant(dx, dy);
-        let x_axis = Axis::new(gx, dx);
-        let y_axis = Axis::new(gy, dy);
-        // Along the ray, in cells: where the walk (re)starts.
-        let mut from = 0.0f64;
+        walk(self, x, y, dx, dy, max)
+    }
+}
+
+/// Distance from `(x, y)` along the unit direction `(dx, dy)` to where the ray enters the
+/// first solid cell of `cells`, if within `max` (0 when it starts in one).
+pub(super) fn walk<C: Cells>(cells: &C, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<f64> {
+    let per_metre = cells.per_metre();
+    let (gx, gy) = (x * per_metre, y * per_metre);
+    let reach = max * per_metre;
+    if !(gx.is_finite() && gy.is_finite() && reach >= 0.0 && dx.is_finite() && dy.is_finite()) {
+        return None;
+    }
+    if dx == 0.0 && dy == 0.0 {
+        let k = (looked_into(floor_i64(gx)), looked_into(floor_i64(gy)));
+        return (cells.ahead(k.0, k.1, 0) == 0).then_some(0.0);
+    }
+    // Which axis the ray moves along the more, and how far per unit along the ray.
+    // A diagonal's tie (to rounding: its sine and cosine may differ in the last bit) goes
+    // to y, as a tie goes in Stage.
+    let x_longer = dx.abs() > dy.abs() + 1e-12;
+    let longer = if x_longer { dx.abs() } else { dy.abs() };
+    let q = quadrant(dx, dy);
+    let x_axis = Axis::new(gx, dx);
+    let y_axis = Axis::new(gy, dy);
+    // Along the ray, in cells: where the walk (re)starts.
+    let mut from = 0.0f64;
+    loop {
+        let (mut kx, mut next_x) = x_axis.start(from);
+        let (mut ky, mut next_y) = y_axis.start(from);
+        // Where the ray entered the cell it is in.
+        let mut entered = from;
+        // Whether the ray entered its cell across a face of the longer axis.
+        let mut across_longer = false;
         loop {
-            let (mut kx, mut next_x) = x_axis.start(from);
-            let (mut ky, mut next_y) = y_axis.start(from);
-            // Where the ray entered the cell it is in.
-            let mut entered = from;
-            // Whether the ray entered its cell across a face of the longer axis.
-            let mut across_longer = false;
-            loop {
-                let clear = self.ahead(looked_into(kx), looked_into(ky), q);
-                if clear == 0 {
-                    // Stage measures a ray in whole cells along its longer axis: through a
-                    // face across that axis, the first whole step past it.
-                    let cells = if across_longer {
-                        (entered * longer - 1e-9).ceil() / longer
-                    } else {
-                        entered
-                    };
-                    return (cells <= reach).then_some(cells / self.per_metre);
-                }
-                if clear >= JUMP_FROM {
-                    // Every cell whose looked-into cell is within `clear - 1` of this one's the
-                    // way the ray heads is free: jump to just before the ray leaves them.
-                    let d = i64::from(clear) - 1;
-                    let free = x_axis.free(kx, d, entered).min(y_axis.free(ky, d, entered));
-                    from = entered + free - 1e-9;
-                    if from > reach {
-                        return None;
-                    }
-                    break;
-                }
-                // Through a corner (both faces at once, to rounding), the longer axis's face:
-                // so that a ray a hair to either side of the corner reads the same.
-                across_longer = if x_longer {
-                    next_x <= next_y + 1e-9
+            let clear = cells.ahead(looked_into(kx), looked_into(ky), q);
+            if clear == 0 {
+                // Stage measures a ray in whole cells along its longer axis: through a
+                // face across that axis, the first whole step past it.
+                let walked = if across_longer {
+                    (entered * longer - 1e-9).ceil() / longer
                 } else {
-                    next_y <= next_x + 1e-9
+                    entered
                 };
-                if next_x < next_y {
-                    entered = next_x;
-                    kx += x_axis.step;
-                    next_x += x_axis.delta;
-                } else {
-                    entered = next_y;
-                    ky += y_axis.step;
-                    next_y += y_axis.delta;
-                }
-                if entered > reach {
+                return (walked <= reach).then_some(walked / per_metre);
+            }
+            if clear >= JUMP_FROM {
+                // Every cell whose looked-into cell is within `clear - 1` of this one's the
+                // way the ray heads is free: jump to just before the ray leaves them.
+                let d = i64::from(clear) - 1;
+                let free = x_axis.free(kx, d, entered).min(y_axis.free(ky, d, entered));
+                from = entered + free - 1e-9;
+                if from > reach {
                     return None;
                 }
+                break;
+            }
+            // Through a corner (both faces at once, to rounding), the longer axis's face:
+            // so that a ray a hair to either side of the corner reads the same.
+            across_longer = if x_longer {
+                next_x <= next_y + 1e-9
+            } else {
+                next_y <= next_x + 1e-9
+            };
+            if next_x < next_y {
+                entered = next_x;
+                kx += x_axis.step;
+                next_x += x_axis.delta;
+            } else {
+                entered = next_y;
+                ky += y_axis.step;
+                next_y += y_axis.delta;
+            }
+            if entered > reach {
+                return None;
             }
         }
     }

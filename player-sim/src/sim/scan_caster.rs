@@ -81,7 +81,8 @@ fn boxes_within<'a>(
 ) -> (NearbyBoxes<'a>, BeamBoxes) {
     let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, reach)
         .with_mounted(sim, Some(robot), at, reach)
-        .reaching(z);
+        .reaching(z)
+        .on_raster(sim.world.resolution);
     let by_beam = BeamBoxes::new(&boxes, at.0, at.1, fan);
     (boxes, by_beam)
 }

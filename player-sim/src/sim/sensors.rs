@@ -70,7 +70,7 @@ fn cast_exhaustive(
             if !slices.is_empty() {
                 b.shape = &slice_at(slices, z)?.shape;
             }
-            b.raycast(x, y, angle)
+            b.raycast_cells(sim.world.resolution, x, y, angle)
         });
     let mounted = (0..sim.robots.len())
         .filter(|&i| i != from)
@@ -89,7 +89,7 @@ fn cast_exhaustive(
                 width: m.size[1],
                 shape: &m.shape,
             };
-            body.raycast(x, y, angle)
+            body.raycast_cells(sim.world.resolution, x, y, angle)
         });
     floor
         .into_iter()

@@ -40,6 +40,29 @@ pub struct WallRaster {
     ahead: [Vec<u8>; 4],
 }
 
+/// Every cell of a 4-connected line from cell `a` to cell `b`, both ends included, as Stage
+/// marks a block's edge: each step moves one column or one row, whichever keeps the cells
+/// nearer the straight line (ties: a row).
+pub(super) fn line_cells(a: (i64, i64), b: (i64, i64), mut mark: impl FnMut(i64, i64)) {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let (sx, sy) = (dx.signum(), dy.signum());
+    let (ax, ay) = (dx.abs(), dy.abs());
+    let (mut x, mut y) = a;
+    // Twice the signed distance from the line, scaled: which step stays nearer.
+    let mut error = ay - ax;
+    mark(x, y);
+    for _ in 0..ax + ay {
+        if error < 0 {
+            x += sx;
+            error += 2 * ay;
+        } else {
+            y += sy;
+            error -= 2 * ax;
+        }
+        mark(x, y);
+    }
+}
+
 /// Which quarter of directions `(dx, dy)` heads into: an index into [`WallRaster`]'s squares.
 #[inline]
 pub(super) fn quadrant(dx: f64, dy: f64) -> usize {
@@ -136,26 +159,8 @@ impl WallRaster {
         self.clearance[r * self.width + c] = 0;
     }
 
-    /// Every cell of a 4-connected line from cell `a` to cell `b`: each step moves one column or
-    /// one row, whichever keeps the cells nearer the straight line (ties: a row).
     fn mark_line(&mut self, a: (i64, i64), b: (i64, i64)) {
-        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-        let (sx, sy) = (dx.signum(), dy.signum());
-        let (ax, ay) = (dx.abs(), dy.abs());
-        let (mut x, mut y) = a;
-        // Twice the signed distance from the line, scaled: which step stays nearer.
-        let mut error = ay - ax;
-        self.mark(x, y);
-        for _ in 0..ax + ay {
-            if error < 0 {
-                x += sx;
-                error += 2 * ay;
-            } else {
-                y += sy;
-                error -= 2 * ax;
-            }
-            self.mark(x, y);
-        }
+        line_cells(a, b, |x, y| self.mark(x, y));
     }
 
     /// Each cell's distance in cells to the nearest wall cell (the larger of the column and

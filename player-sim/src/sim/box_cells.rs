@@ -1,0 +1,215 @@
+//! Robots, obstacles and bodies mounted on robots as Stage's rangers see them: not their exact
+//! outlines but the cells of the world's raster (`resolution`, 2 cm unless set) that their
+//! blocks' edges pass through, corners floored to whole cells — as the floorplan's walls are
+//! seen ([`WallRaster`](super::WallRaster)). A chair's 3 cm leg is two or three cells, a
+//! cell more to the north and east than the leg itself, and a beam passing a centimetre beside
+//! the leg meets it in Stage; a beam crossing a robot's outline where its cells leave a gap by
+//! the diagonal passes. Only the outline is marked, as Stage marks it: a ray starting inside a
+//! box meets its far side.
+//!
+//! A box's cells are drawn when a ray comes near it (a few per beam at most, after the scan's
+//! pruning), into a small grid around the box, and the ray is walked through them with the
+//! walls' walk ([`walk`]), so that a box and a wall in the same cell read the same.
+
+use super::raster_walk::{Cells, walk};
+use super::wall_raster::line_cells;
+use crate::world::{Polygon, floor_i64};
+
+/// Boxes whose cells would number more than this are cast exactly instead (a hall-sized
+/// obstacle at a fine resolution).
+const MOST_CELLS: i64 = 1 << 22;
+
+/// How far a box's cells on a raster of `resolution` reach beyond its outline: a floored
+/// corner's cell and the cell beside it that rays look into west and south of the origin, in
+/// both axes (2√2 cells), rounded up. Rays farther from the outline than this miss the box.
+pub(super) fn cell_margin(resolution: f64) -> f64 {
+    if resolution.is_finite() && resolution > 0.0 {
+        3.0 * resolution
+    } else {
+        0.0
+    }
+}
+
+/// A box placed in the world: centre, frame, half sizes, and its blocks in its frame (empty: the
+/// box itself is the one block).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Placed<'a> {
+    pub x: f64,
+    pub y: f64,
+    pub sin: f64,
+    pub cos: f64,
+    pub half_length: f64,
+    pub half_width: f64,
+    pub shape: &'a [Polygon],
+}
+
+impl Placed<'_> {
+    /// `(lx, ly)` of the box's frame in world cells (floored, as Stage floors a block's
+    /// corners).
+    fn cell(&self, [lx, ly]: [f64; 2], per_metre: f64) -> (i64, i64) {
+        let x = self.x + self.cos * lx - self.sin * ly;
+        let y = self.y + self.sin * lx + self.cos * ly;
+        (floor_i64(x * per_metre), floor_i64(y * per_metre))
+    }
+
+    /// The corners of each block in world cells.
+    fn corner_cells(&self, per_metre: f64) -> Vec<Vec<(i64, i64)>> {
+        if self.shape.is_empty() {
+            let (h, w) = (self.half_length, self.half_width);
+            return vec![
+                [[h, w], [-h, w], [-h, -w], [h, -w]]
+                    .iter()
+                    .map(|&p| self.cell(p, per_metre))
+                    .collect(),
+            ];
+        }
+        self.shape
+            .iter()
+            .map(|polygon| polygon.iter().map(|&p| self.cell(p, per_metre)).collect())
+            .collect()
+    }
+
+    /// Distance along the ray from `(x, y)` in the unit direction `(dx, dy)` to the first of
+    /// the box's cells, within `max`, on a raster of `resolution`; `None` when the box is too
+    /// large for one (then the caller casts exactly).
+    pub(super) fn cast_cells(
+        &self,
+        resolution: f64,
+        (x, y): (f64, f64),
+        (dx, dy): (f64, f64),
+        max: f64,
+    ) -> Option<Option<f64>> {
+        let cells = BoxCells::of(self, resolution)?;
+        Some(walk(&cells, x, y, dx, dy, max))
+    }
+}
+
+/// A box's outline cells in the smallest grid holding them.
+struct BoxCells {
+    per_metre: f64,
+    /// Global cell of the grid's first column and row.
+    first: (i64, i64),
+    width: i64,
+    height: i64,
+    solid: Vec<bool>,
+}
+
+impl BoxCells {
+    fn of(placed: &Placed, resolution: f64) -> Option<BoxCells> {
+        let per_metre = 1.0 / resolution;
+        if !(per_metre.is_finite() && per_metre > 0.0) {
+            return None;
+        }
+        let corners = placed.corner_cells(per_metre);
+        let (mut low, mut high) = ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN));
+        for &(x, y) in corners.iter().flatten() {
+            low = (low.0.min(x), low.1.min(y));
+            high = (high.0.max(x), high.1.max(y));
+        }
+        if low.0 > high.0 {
+            return None;
+        }
+        let (width, height) = (high.0 - low.0 + 1, high.1 - low.1 + 1);
+        if width.saturating_mul(height) > MOST_CELLS {
+            return None;
+        }
+        let mut cells = BoxCells {
+            per_metre,
+            first: low,
+            width,
+            height,
+            solid: vec![false; (width * height) as usize],
+        };
+        for polygon in &corners {
+            for (k, &a) in polygon.iter().enumerate() {
+                let b = polygon[(k + 1) % polygon.len()];
+                line_cells(a, b, |x, y| {
+                    let (c, r) = (x - cells.first.0, y - cells.first.1);
+                    cells.solid[(r * cells.width + c) as usize] = true;
+                });
+            }
+        }
+        Some(cells)
+    }
+}
+
+impl Cells for BoxCells {
+    fn per_metre(&self) -> f64 {
+        self.per_metre
+    }
+
+    /// Inside the grid: 0 on the outline, else 1 (walked cell by cell); outside, how far
+    /// outside (the ray jumps to the grid).
+    fn ahead(&self, x: i64, y: i64, _: usize) -> u32 {
+        let (c, r) = (x - self.first.0, y - self.first.1);
+        if c >= 0 && r >= 0 && c < self.width && r < self.height {
+            return u32::from(!self.solid[(r * self.width + c) as usize]);
+        }
+        let outside = |v: i64, n: i64| {
+            if v < 0 { -v } else { (v - n + 1).max(0) }
+        };
+        outside(c, self.width)
+            .max(outside(r, self.height))
+            .clamp(1, i64::from(u32::MAX)) as u32
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn leg(x: f64, y: f64) -> Placed<'static> {
+        Placed {
+            x,
+            y,
+            sin: 0.0,
+            cos: 1.0,
+            half_length: 0.015,
+            half_width: 0.015,
+            shape: &[],
+        }
+    }
+
+    #[test]
+    fn a_leg_is_met_on_its_cells_not_its_outline() {
+        // A 3 cm leg from 1.985 to 2.015 m: cells 99 to 100 of 2 cm (1.98 to 2.02 m), entered
+        // 1.97 m from the ray's start, which Stage reads in whole cells walked: 99, 1.98 m.
+        let l = leg(2.0, 0.0);
+        let d = l.cast_cells(0.02, (0.01, 0.0), (1.0, 0.0), 8.0).unwrap();
+        assert!((d.unwrap() - 1.98).abs() < 1e-9, "{d:?}");
+        // A beam passing 1.5 cm north of the leg's edge still meets its cell row (0 to 2 cm
+        // holds the edge at 1.5 cm; the beam at 3 cm does not).
+        let beside = l.cast_cells(0.02, (0.01, 0.019), (1.0, 0.0), 8.0).unwrap();
+        assert!(beside.is_some());
+        let clear = l.cast_cells(0.02, (0.01, 0.041), (1.0, 0.0), 8.0).unwrap();
+        assert_eq!(clear, None);
+        // Away from it, or beyond the reach: nothing.
+        assert_eq!(
+            l.cast_cells(0.02, (0.01, 0.0), (-1.0, 0.0), 8.0).unwrap(),
+            None
+        );
+        assert_eq!(
+            l.cast_cells(0.02, (0.01, 0.0), (1.0, 0.0), 1.0).unwrap(),
+            None
+        );
+    }
+
+    #[test]
+    fn only_the_outline_is_solid() {
+        let b = Placed {
+            half_length: 0.5,
+            half_width: 0.5,
+            ..leg(0.0, 0.0)
+        };
+        // From inside, the far side.
+        let d = b.cast_cells(0.02, (0.01, 0.01), (1.0, 0.0), 8.0).unwrap();
+        assert!((d.unwrap() - 0.49).abs() < 0.021, "{d:?}");
+        // A box too large for a raster is cast exactly by the caller.
+        let hall = Placed {
+            half_length: 500.0,
+            half_width: 500.0,
+            ..b
+        };
+        assert!(hall.cast_cells(0.02, (0.0, 0.0), (1.0, 0.0), 8.0).is_none());
+    }
+}
