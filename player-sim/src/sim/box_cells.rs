@@ -80,12 +80,14 @@ impl Placed<'_> {
         max: f64,
     ) -> Option<Option<f64>> {
         let cells = BoxCells::of(self, resolution)?;
-        Some(walk(&cells, x, y, dx, dy, max))
+        Some(cells.cast((x, y), (dx, dy), max))
     }
 }
 
-/// A box's outline cells in the smallest grid holding them.
-struct BoxCells {
+/// A box's outline cells in the smallest grid holding them: drawn once a scan for each box
+/// its beams come near (`NearbyBoxes::on_raster`), and walked by each of those beams.
+#[derive(Debug, Clone)]
+pub(super) struct BoxCells {
     per_metre: f64,
     /// Global cell of the grid's first column and row.
     first: (i64, i64),
@@ -95,7 +97,9 @@ struct BoxCells {
 }
 
 impl BoxCells {
-    fn of(placed: &Placed, resolution: f64) -> Option<BoxCells> {
+    /// The cells of `placed` on a raster of `resolution`; `None` when the box is too large for
+    /// one.
+    pub(super) fn of(placed: &Placed, resolution: f64) -> Option<BoxCells> {
         let per_metre = 1.0 / resolution;
         if !(per_metre.is_finite() && per_metre > 0.0) {
             return None;
@@ -113,23 +117,31 @@ impl BoxCells {
         if width.saturating_mul(height) > MOST_CELLS {
             return None;
         }
-        let mut cells = BoxCells {
-            per_metre,
-            first: low,
-            width,
-            height,
-            solid: vec![false; (width * height) as usize],
-        };
+        let mut solid = vec![false; (width * height) as usize];
         for polygon in &corners {
             for (k, &a) in polygon.iter().enumerate() {
                 let b = polygon[(k + 1) % polygon.len()];
                 line_cells(a, b, |x, y| {
-                    let (c, r) = (x - cells.first.0, y - cells.first.1);
-                    cells.solid[(r * cells.width + c) as usize] = true;
+                    let (c, r) = (x - low.0, y - low.1);
+                    solid[(r * width + c) as usize] = true;
                 });
             }
         }
-        Some(cells)
+        Some(BoxCells {
+            per_metre,
+            first: low,
+            width,
+            height,
+            solid,
+        })
+    }
+}
+
+impl BoxCells {
+    /// Distance along the ray from `(x, y)` in the unit direction `(dx, dy)` to the first of
+    /// the cells, within `max`.
+    pub(super) fn cast(&self, (x, y): (f64, f64), (dx, dy): (f64, f64), max: f64) -> Option<f64> {
+        walk(self, x, y, dx, dy, max)
     }
 }
 

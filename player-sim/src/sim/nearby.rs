@@ -6,7 +6,9 @@
 //! instead of all 255 others.
 
 use super::Simulation;
-use super::box_cells::{Placed, cell_margin};
+use std::cell::OnceCell;
+
+use super::box_cells::{BoxCells, Placed, cell_margin};
 use super::geometry::slab_hit;
 use super::sensors::body_at;
 use super::shapes::ray_into_polygons;
@@ -39,26 +41,54 @@ pub struct SolidBox<'a> {
 }
 
 impl SolidBox<'_> {
-    /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box (its cells on the
-    /// world's raster when [`NearbyBoxes::on_raster`]), if ahead.
-    fn hit(&self, x: f64, y: f64, dx: f64, dy: f64) -> Option<f64> {
-        if self.resolution == 0.0 {
+    /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box, if ahead: its
+    /// cells on the world's raster when [`NearbyBoxes::on_raster`] (drawn into `cells` the
+    /// first time a ray needs them), else its exact outline.
+    fn hit(
+        &self,
+        cells: Option<&OnceCell<Option<BoxCells>>>,
+        x: f64,
+        y: f64,
+        dx: f64,
+        dy: f64,
+    ) -> Option<f64> {
+        let Some(cells) = cells.filter(|_| self.resolution != 0.0) else {
             return self.exact_hit(x, y, dx, dy);
-        }
-        let placed = Placed {
-            x: self.x,
-            y: self.y,
-            sin: self.sin,
-            cos: self.cos,
-            half_length: self.half_length,
-            half_width: self.half_width,
-            shape: self.shape,
         };
-        // Nothing of the box lies farther than its far side.
-        let beyond = (self.x - x) * dx + (self.y - y) * dy + self.radius;
-        placed
-            .cast_cells(self.resolution, (x, y), (dx, dy), beyond.max(0.0))
-            .unwrap_or_else(|| self.exact_hit(x, y, dx, dy))
+        // The box widened by its cells' margin first, in its frame: most rays near its circle
+        // pass beside it, and drawing its cells costs more than this test.
+        let margin = cell_margin(self.resolution);
+        let (rx, ry) = (x - self.x, y - self.y);
+        let (ox, oy) = (
+            self.cos * rx + self.sin * ry,
+            -self.sin * rx + self.cos * ry,
+        );
+        let (lx, ly) = (
+            self.cos * dx + self.sin * dy,
+            -self.sin * dx + self.cos * dy,
+        );
+        let (hx, hy) = (self.half_length + margin, self.half_width + margin);
+        slab_hit(ox, oy, lx, ly, hx, hy)?;
+        let drawn = cells.get_or_init(|| {
+            let placed = Placed {
+                x: self.x,
+                y: self.y,
+                sin: self.sin,
+                cos: self.cos,
+                half_length: self.half_length,
+                half_width: self.half_width,
+                shape: self.shape,
+            };
+            BoxCells::of(&placed, self.resolution)
+        });
+        match drawn {
+            // Nothing of the box lies farther than its far side.
+            Some(drawn) => {
+                let beyond = (self.x - x) * dx + (self.y - y) * dy + self.radius;
+                drawn.cast((x, y), (dx, dy), beyond.max(0.0))
+            }
+            None => self.exact_hit(x, y, dx, dy),
+        }
     }
 
     /// Where the ray enters the box's exact outline.
@@ -92,6 +122,9 @@ impl SolidBox<'_> {
 #[derive(Debug, Clone, Default)]
 pub struct NearbyBoxes<'a> {
     boxes: Vec<SolidBox<'a>>,
+    /// Each box's cells on the world's raster, drawn when a ray first needs them (empty
+    /// unless [`NearbyBoxes::on_raster`]).
+    cells: Vec<OnceCell<Option<BoxCells>>>,
 }
 
 impl<'a> NearbyBoxes<'a> {
@@ -159,7 +192,10 @@ impl<'a> NearbyBoxes<'a> {
                 })
             },
         ));
-        NearbyBoxes { boxes }
+        NearbyBoxes {
+            boxes,
+            cells: Vec::new(),
+        }
     }
 
     /// Only the boxes standing at the height `z` (a beam there passes over or under the
@@ -190,6 +226,7 @@ impl<'a> NearbyBoxes<'a> {
         for b in &mut self.boxes {
             b.resolution = resolution;
         }
+        self.cells = self.boxes.iter().map(|_| OnceCell::new()).collect();
         self
     }
 
@@ -275,8 +312,10 @@ impl<'a> NearbyBoxes<'a> {
         max: f64,
         counts: impl Fn(&SolidBox<'a>) -> bool,
     ) -> Option<(f64, &SolidBox<'a>)> {
-        let listed = candidates.iter().map(|&k| &self.boxes[k as usize]);
-        nearest_of(listed.filter(|b| counts(b)), (x, y), (dx, dy), max)
+        let listed = candidates
+            .iter()
+            .map(|&k| (&self.boxes[k as usize], self.cells.get(k as usize)));
+        nearest_of(listed.filter(|(b, _)| counts(b)), (x, y), (dx, dy), max)
     }
 
     /// The nearest box along the ray from `(x, y)` at `angle`, within `max`: (distance, box).
@@ -308,7 +347,10 @@ impl<'a> NearbyBoxes<'a> {
         counts: impl Fn(&SolidBox<'a>) -> bool,
     ) -> Option<(f64, &SolidBox<'a>)> {
         nearest_of(
-            self.boxes.iter().filter(|b| counts(b)),
+            self.boxes
+                .iter()
+                .zip(self.cells.iter().map(Some).chain(std::iter::repeat(None)))
+                .filter(|(b, _)| counts(b)),
             (x, y),
             (dx, dy),
             max,
@@ -327,25 +369,29 @@ impl<'a> NearbyBoxes<'a> {
         self.boxes
             .iter()
             .filter(move |b| b.may_hit(x, y, dx, dy, max))
-            .filter_map(move |b| b.hit(x, y, dx, dy).filter(|&d| d <= max).map(|d| (d, b)))
+            .filter_map(move |b| {
+                b.hit(None, x, y, dx, dy)
+                    .filter(|&d| d <= max)
+                    .map(|d| (d, b))
+            })
     }
 }
 
 /// The nearest of `boxes` along the ray from `(x, y)` in the unit direction `(dx, dy)`, within
 /// `max`; each box's cheap bounding test is made against the nearest hit so far.
 fn nearest_of<'b, 'a: 'b>(
-    boxes: impl Iterator<Item = &'b SolidBox<'a>>,
+    boxes: impl Iterator<Item = (&'b SolidBox<'a>, Option<&'b OnceCell<Option<BoxCells>>>)>,
     (x, y): (f64, f64),
     (dx, dy): (f64, f64),
     max: f64,
 ) -> Option<(f64, &'b SolidBox<'a>)> {
     let mut best: Option<(f64, &SolidBox<'a>)> = None;
-    for b in boxes {
+    for (b, cells) in boxes {
         let limit = best.map_or(max, |(d, _)| d);
         if !b.may_hit(x, y, dx, dy, limit) {
             continue;
         }
-        if let Some(d) = b.hit(x, y, dx, dy).filter(|&d| d <= limit) {
+        if let Some(d) = b.hit(cells, x, y, dx, dy).filter(|&d| d <= limit) {
             best = Some((d, b));
         }
     }
