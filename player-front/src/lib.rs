@@ -30,6 +30,6 @@ pub mod socket;
 pub mod watch;
 
 pub use front::Front;
-pub use runtime::{FrontRuntime, Stopping};
+pub use runtime::{FrontRuntime, Stopping, shared_runtime};
 pub use socket::{CloseCode, STALLED_AFTER, SendError};
 pub use watch::{Device, Look, Upstream, Watch, Watching};

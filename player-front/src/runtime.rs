@@ -92,6 +92,18 @@ impl FrontRuntime {
     }
 }
 
+/// A runtime for a program's fronts to share (`start_on` each with its handle): a few
+/// workers, since the conversions run on the robots' threads and the workers only move bytes
+/// to the viewers' sockets; its threads named `fronts`, as `top -H` shows them.
+pub fn shared_runtime() -> std::io::Result<Runtime> {
+    let workers = std::thread::available_parallelism().map_or(2, |n| n.get().clamp(2, 4));
+    tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(workers)
+        .thread_name("fronts")
+        .enable_all()
+        .build()
+}
+
 impl Drop for FrontRuntime {
     fn drop(&mut self) {
         self.stop();

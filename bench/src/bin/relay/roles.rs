@@ -105,10 +105,22 @@ pub fn serve_relay(args: &Args) -> Result<()> {
             ..Route::loopback(port)
         })
         .collect();
+    // The fronts share one runtime, as player-relay's do.
+    let runtime = player_front::shared_runtime()?;
     let (web, foxglove) = if args.fronts {
+        let handle = runtime.handle();
         (
-            Some(Arc::new(WebFront::start(LOCALHOST, 0, Commanders::Nobody)?)),
-            Some(Arc::new(FoxgloveLive::start(LOCALHOST, 0)?)),
+            Some(Arc::new(WebFront::start_on(
+                handle.clone(),
+                LOCALHOST,
+                0,
+                Commanders::Nobody,
+            )?)),
+            Some(Arc::new(FoxgloveLive::start_on(
+                handle.clone(),
+                LOCALHOST,
+                0,
+            )?)),
         )
     } else {
         (None, None)

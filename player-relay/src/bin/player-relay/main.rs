@@ -275,16 +275,9 @@ fn run(cli: Cli) -> Result<()> {
     Ok(())
 }
 
-/// The runtime the fronts share: a few workers (the viewers' sockets, the conversions are
-/// done on the robots' threads), its threads named `fronts` as top shows them.
+/// The runtime the fronts share ([`player_front::shared_runtime`]).
 fn fronts_runtime() -> Result<tokio::runtime::Runtime> {
-    let workers = std::thread::available_parallelism().map_or(2, |n| n.get().clamp(2, 4));
-    tokio::runtime::Builder::new_multi_thread()
-        .worker_threads(workers)
-        .thread_name("fronts")
-        .enable_all()
-        .build()
-        .context("cannot start the fronts' runtime")
+    player_front::shared_runtime().context("cannot start the fronts' runtime")
 }
 
 /// `HOST:PORT`, or `NAME (HOST:PORT)` for a named robot.
