@@ -20,6 +20,7 @@
 
 pub mod camera_frames;
 pub mod devices;
+pub mod image_file;
 pub mod mapfile;
 pub mod nav;
 pub mod replay;

@@ -12,6 +12,8 @@ use std::sync::Arc;
 use player_proto::interfaces::common::Pose2d;
 use player_proto::interfaces::map::{MAX_TILE_CELLS, MapData, MapInfo};
 
+use crate::image_file::{ImageFileError, Picture};
+
 /// Above this `occ` a pixel is an occupied cell (Player's threshold).
 const OCCUPIED_ABOVE: f64 = 0.95;
 /// Below this `occ` a pixel is a free cell (Player's threshold).
@@ -49,9 +51,12 @@ pub struct MapFileSettings {
 
 impl GridMap {
     /// Reads `image` as Player's mapfile does.
-    pub fn from_image(image: &Path, settings: &MapFileSettings) -> Result<GridMap, String> {
-        let decoded = image::open(image)
-            .map_err(|e| format!("cannot read map image {}: {e}", image.display()))?;
+    pub fn from_image(image: &Path, settings: &MapFileSettings) -> Result<GridMap, ImageFileError> {
+        let decoded = image::open(image).map_err(|e| ImageFileError {
+            picture: Picture::MapImage,
+            path: image.to_path_buf(),
+            fault: e.into(),
+        })?;
         let (width, height) = (decoded.width(), decoded.height());
         // gdk-pixbuf hands Player RGB, or RGBA when the file has transparency: the average
         // runs over those channels.

@@ -166,5 +166,6 @@ fn map(driver: &DriverBlock) -> Result<GridMap, WorldFileError> {
         negate,
         origin,
     };
-    GridMap::from_image(&driver.folder.join(file), &settings).map_err(|e| at(filename, e))
+    GridMap::from_image(&driver.folder.join(file), &settings)
+        .map_err(|e| at(filename, e.to_string()))
 }

@@ -5,6 +5,7 @@ use std::path::Path;
 
 use super::cell_floor::floor_i64;
 use super::wall_sums::WallSums;
+use crate::image_file::{ImageFault, ImageFileError, Picture};
 
 /// Which way a wall face looks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -46,28 +47,30 @@ impl OccupancyGrid {
         size_y: f64,
         centre_x: f64,
         centre_y: f64,
-    ) -> Result<OccupancyGrid, String> {
-        let cannot =
-            |e: &dyn std::fmt::Display| format!("cannot read bitmap {}: {e}", path.display());
-        let reader = image::ImageReader::open(path)
-            .and_then(|r| r.with_guessed_format())
-            .map_err(|e| cannot(&e))?;
+    ) -> Result<OccupancyGrid, ImageFileError> {
+        let cannot = |fault: ImageFault| ImageFileError {
+            picture: Picture::Bitmap,
+            path: path.to_path_buf(),
+            fault,
+        };
+        let open = || {
+            image::ImageReader::open(path)
+                .and_then(|r| r.with_guessed_format())
+                .map_err(|e| cannot(e.into()))
+        };
         // The header's size first: a lying one is refused before anything is allocated.
-        let (w, h) = reader.into_dimensions().map_err(|e| cannot(&e))?;
-        if w == 0 || h == 0 {
-            return Err(cannot(&format!("it is {w} x {h} pixels")));
+        let (width, height) = open()?.into_dimensions().map_err(|e| cannot(e.into()))?;
+        if width == 0 || height == 0 {
+            return Err(cannot(ImageFault::Empty { width, height }));
         }
-        if u64::from(w) * u64::from(h) > MAX_BITMAP_PIXELS {
-            return Err(cannot(&format!(
-                "it is {w} x {h} pixels, more than the {MAX_BITMAP_PIXELS} a floorplan may have"
-            )));
+        if u64::from(width) * u64::from(height) > MAX_BITMAP_PIXELS {
+            return Err(cannot(ImageFault::TooLarge {
+                width,
+                height,
+                most: MAX_BITMAP_PIXELS,
+            }));
         }
-        let image = image::ImageReader::open(path)
-            .and_then(|r| r.with_guessed_format())
-            .map_err(|e| cannot(&e))?
-            .decode()
-            .map_err(|e| cannot(&e))?
-            .to_rgba8();
+        let image = open()?.decode().map_err(|e| cannot(e.into()))?.to_rgba8();
         let (w, h) = (image.width() as usize, image.height() as usize);
         let mut occupied = vec![false; w * h];
         // The walls' bounding box, in columns and rows from the south.

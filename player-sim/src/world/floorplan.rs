@@ -55,7 +55,7 @@ impl World {
         }
         let file = string(bitmap)?;
         let grid = OccupancyGrid::from_png(&base.join(file), size[0], size[1], pose.x, pose.y)
-            .map_err(|e| err(&bitmap.pos, e))?;
+            .map_err(|e| err(&bitmap.pos, e.to_string()))?;
         // Where the whole image lies (its walls fill `size`; a margin lies beyond).
         let covers = [
             grid.width as f64 * grid.cell.0,
