@@ -58,15 +58,7 @@ impl SolidBox<'_> {
         // The box widened by its cells' margin first, in its frame: most rays near its circle
         // pass beside it, and drawing its cells costs more than this test.
         let margin = cell_margin(self.resolution);
-        let (rx, ry) = (x - self.x, y - self.y);
-        let (ox, oy) = (
-            self.cos * rx + self.sin * ry,
-            -self.sin * rx + self.cos * ry,
-        );
-        let (lx, ly) = (
-            self.cos * dx + self.sin * dy,
-            -self.sin * dx + self.cos * dy,
-        );
+        let ((ox, oy), (lx, ly)) = self.in_frame(x, y, dx, dy);
         let (hx, hy) = (self.half_length + margin, self.half_width + margin);
         slab_hit(ox, oy, lx, ly, hx, hy)?;
         let drawn = cells.get_or_init(|| {
@@ -91,17 +83,25 @@ impl SolidBox<'_> {
         }
     }
 
+    /// The ray's origin and direction in the box's own frame (centred, its length along x).
+    #[inline]
+    fn in_frame(&self, x: f64, y: f64, dx: f64, dy: f64) -> ((f64, f64), (f64, f64)) {
+        let (rx, ry) = (x - self.x, y - self.y);
+        (
+            (
+                self.cos * rx + self.sin * ry,
+                -self.sin * rx + self.cos * ry,
+            ),
+            (
+                self.cos * dx + self.sin * dy,
+                -self.sin * dx + self.cos * dy,
+            ),
+        )
+    }
+
     /// Where the ray enters the box's exact outline.
     fn exact_hit(&self, x: f64, y: f64, dx: f64, dy: f64) -> Option<f64> {
-        let (rx, ry) = (x - self.x, y - self.y);
-        let (ox, oy) = (
-            self.cos * rx + self.sin * ry,
-            -self.sin * rx + self.cos * ry,
-        );
-        let (lx, ly) = (
-            self.cos * dx + self.sin * dy,
-            -self.sin * dx + self.cos * dy,
-        );
+        let ((ox, oy), (lx, ly)) = self.in_frame(x, y, dx, dy);
         let hit = slab_hit(ox, oy, lx, ly, self.half_length, self.half_width);
         if self.shape.is_empty() {
             return hit;
