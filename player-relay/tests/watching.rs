@@ -20,7 +20,7 @@ use player_relay::{Relay, RelayConfig, Route};
 use player_zenoh::Mode;
 use player_zenoh::keys::Leaf;
 use player_zenoh::zenoh::Wait;
-use zenoh_support::{PATIENCE, Site, free_port, serve_world, session};
+use zenoh_support::{PATIENCE, Site, free_port, inside_own_namespace, serve_world, session};
 
 const LASER: (Interface, u16) = (Interface::LASER, 0);
 
@@ -90,49 +90,11 @@ fn a_foxglove_client_on_a_scan_channel_subscribes_the_laser_while_it_is_on_it() 
     );
 }
 
-/// Set inside the namespace the Zenoh test made for itself.
-const INSIDE: &str = "PLAYER_RELAY_WATCHING_NETNS";
-
-fn ip(args: &[&str]) {
-    let status = Command::new("ip").args(args).status().expect("ip runs");
-    assert!(status.success(), "ip {}", args.join(" "));
-}
-
-/// A network namespace with loopback up; removed when dropped.
-struct Namespace(String);
-
-impl Drop for Namespace {
-    fn drop(&mut self) {
-        let _ = Command::new("ip").args(["netns", "del", &self.0]).status();
-    }
-}
-
 #[test]
 fn a_zenoh_subscriber_on_a_data_key_subscribes_the_laser_while_it_matches() {
-    if std::env::var_os(INSIDE).is_none() {
-        // This same test, again, alone in a namespace of its own.
-        let namespace = Namespace(format!("pw-{}", std::process::id() % 100_000));
-        ip(&["netns", "add", &namespace.0]);
-        ip(&[
-            "netns",
-            "exec",
-            &namespace.0,
-            "ip",
-            "link",
-            "set",
-            "lo",
-            "up",
-        ]);
-        let me = std::env::current_exe().expect("the test binary");
-        let status = Command::new("ip")
-            .args(["netns", "exec", &namespace.0])
-            .arg(me)
-            .args(["--exact", "--nocapture", "--test-threads", "1"])
-            .arg("a_zenoh_subscriber_on_a_data_key_subscribes_the_laser_while_it_matches")
-            .env(INSIDE, "1")
-            .status()
-            .expect("the test runs in the namespace");
-        assert!(status.success(), "in the namespace: {status}");
+    if !inside_own_namespace(
+        "a_zenoh_subscriber_on_a_data_key_subscribes_the_laser_while_it_matches",
+    ) {
         return;
     }
     program_edge::logging::init("warn");

@@ -9,52 +9,11 @@
 
 mod zenoh_support;
 
-use std::process::Command;
 use std::time::{Duration, Instant};
 
 use player_proto::wire::Interface;
 use player_zenoh::{FromZenoh, FromZenohConfig, Mode};
 use zenoh_support::*;
-
-/// Set in the test's own run inside its namespace.
-const INSIDE: &str = "PLAYER_RELAY_TEST_IN_NETNS";
-
-fn is_root() -> bool {
-    std::fs::read_to_string("/proc/self/status")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("Uid:"))
-                .map(|l| l.split_whitespace().nth(1) == Some("0"))
-        })
-        .unwrap_or(false)
-}
-
-/// Whether to run `test` here: inside its namespace, yes; outside, it is run there (and
-/// must pass) and not here.
-fn inside_own_namespace(test: &str) -> bool {
-    if std::env::var_os(INSIDE).is_some() {
-        return true;
-    }
-    if !is_root() {
-        eprintln!("not root: {test} needs a network namespace of its own and is not run here");
-        return false;
-    }
-    let status = Command::new("unshare")
-        .args([
-            "--net",
-            "sh",
-            "-c",
-            r#"ip link set lo up && exec "$0" "$@""#,
-        ])
-        .arg(std::env::current_exe().expect("the test's own path"))
-        .args(["--exact", test, "--nocapture", "--test-threads=1"])
-        .env(INSIDE, "1")
-        .status()
-        .expect("unshare runs");
-    assert!(status.success(), "{test} failed in its namespace: {status}");
-    false
-}
 
 fn wait_for(what: &str, done: impl Fn() -> bool) {
     let deadline = Instant::now() + PATIENCE;

@@ -137,3 +137,45 @@ pub fn matching_scans(direct: &Client, bridged: &Client, wanted: usize) -> usize
     }
     matched
 }
+
+/// Set in a test's own run inside its network namespace.
+const IN_OWN_NAMESPACE: &str = "PLAYER_RELAY_TEST_IN_NETNS";
+
+fn is_root() -> bool {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("Uid:"))
+                .map(|l| l.split_whitespace().nth(1) == Some("0"))
+        })
+        .unwrap_or(false)
+}
+
+/// Whether to run `test` here: inside its network namespace, yes; outside, it is run again
+/// under `unshare --net` with only loopback up (and must pass there), not here. Zenoh's
+/// peers then never touch the machine's own network. Needs root (as CI has); anywhere else
+/// the test says so and passes without running.
+pub fn inside_own_namespace(test: &str) -> bool {
+    if std::env::var_os(IN_OWN_NAMESPACE).is_some() {
+        return true;
+    }
+    if !is_root() {
+        eprintln!("not root: {test} needs a network namespace of its own and is not run here");
+        return false;
+    }
+    let status = std::process::Command::new("unshare")
+        .args([
+            "--net",
+            "sh",
+            "-c",
+            r#"ip link set lo up && exec "$0" "$@""#,
+        ])
+        .arg(std::env::current_exe().expect("the test's own path"))
+        .args(["--exact", test, "--nocapture", "--test-threads=1"])
+        .env(IN_OWN_NAMESPACE, "1")
+        .status()
+        .expect("unshare runs");
+    assert!(status.success(), "{test} failed in its namespace: {status}");
+    false
+}
