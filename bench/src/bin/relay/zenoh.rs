@@ -23,6 +23,9 @@ use crate::{Args, DRAIN, SETUP_TIMEOUT};
 struct Phase {
     name: &'static str,
     latency: Option<LatencySummary>,
+    /// Messages sent inside the window and received, over the rate's nominal count. The window's
+    /// ends fall between a device's messages wherever they fall, so a device can count one more
+    /// or one fewer than rate × seconds: 100.1 % is a full delivery, not a duplicate.
     received: f64,
     failed: usize,
     /// (process, CPU seconds per second) for each process of the phase.
