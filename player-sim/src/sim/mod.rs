@@ -25,6 +25,7 @@ mod shapes;
 mod test_randoms;
 mod walking;
 mod wall_beams;
+mod wall_boxes;
 mod wall_free;
 mod wall_raster;
 mod wander;

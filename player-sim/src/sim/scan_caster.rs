@@ -55,6 +55,12 @@ fn walls_seen(
         return None;
     }
     if let Some(raster) = sim.wall_raster() {
+        // The walls' boxes first (a hall's few walls), else the clearances' quadtree.
+        if let Some(beams) = raster.beams_to_walls(x, y, max, fan) {
+            return beams
+                .contains(&true)
+                .then_some((Walls::Raster(raster), Some(beams)));
+        }
         let mut parts = Vec::new();
         if !raster.walled_parts(x, y, max, &mut parts) {
             return Some((Walls::Raster(raster), None));

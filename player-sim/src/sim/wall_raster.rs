@@ -11,6 +11,7 @@
 //! wall cell is), so that a ray crosses open space in a few jumps instead of cell by cell: the
 //! cost of a beam grows with the walls it passes near, not with its length in 2 cm cells.
 
+use super::wall_boxes::{CellBox, WallBoxes};
 use crate::world::{World, floor_i64};
 
 /// The most cells a raster may have (64 Mi, 64 MiB): a finer or larger world keeps the
@@ -38,6 +39,8 @@ pub struct WallRaster {
     /// at its corner and the rest of it that way, at most [`MAX_CLEARANCE`]: a ray moving away
     /// from a wall beside or behind it jumps as far as the walls ahead allow.
     ahead: [Vec<u8>; 4],
+    /// Boxes holding every wall cell, for a scan to tell which beams may meet a wall.
+    pub(super) boxes: WallBoxes,
 }
 
 /// Every cell of a 4-connected line from cell `a` to cell `b`, both ends included, as Stage
@@ -139,7 +142,19 @@ impl WallRaster {
             height: h as usize,
             clearance: vec![MAX_CLEARANCE; (w * h) as usize],
             ahead: Default::default(),
+            boxes: Default::default(),
         };
+        // A line's cells lie within its ends' box.
+        let boxes: Vec<CellBox> = marks
+            .iter()
+            .map(|&(x0, y0, x1, y1)| [x0, y0, x1, y1])
+            .chain(
+                lines
+                    .iter()
+                    .map(|&(a, b)| [a.0.min(b.0), a.1.min(b.1), a.0.max(b.0), a.1.max(b.1)]),
+            )
+            .collect();
+        raster.boxes = WallBoxes::new(boxes);
         for (x0, y0, x1, y1) in marks {
             for y in y0..=y1 {
                 for x in x0..=x1 {
@@ -309,6 +324,7 @@ mod tests {
             height: 30,
             clearance: vec![MAX_CLEARANCE; 1200],
             ahead: Default::default(),
+            boxes: Default::default(),
         };
         for &(x, y) in cells {
             r.mark(x, y);
