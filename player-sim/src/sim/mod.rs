@@ -28,6 +28,7 @@ mod wall_beams;
 mod wall_boxes;
 mod wall_free;
 mod wall_raster;
+mod wall_tiles;
 mod wander;
 
 pub use battery::BatteryState;

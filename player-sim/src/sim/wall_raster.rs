@@ -12,6 +12,7 @@
 //! cost of a beam grows with the walls it passes near, not with its length in 2 cm cells.
 
 use super::wall_boxes::{CellBox, WallBoxes};
+use super::wall_tiles::{CLEARANCE, WallTiles};
 use crate::world::{World, floor_i64};
 
 /// The most cells a raster may have (64 Mi, 64 MiB): a finer or larger world keeps the
@@ -20,6 +21,14 @@ const MAX_CELLS: usize = 64 << 20;
 
 /// Clearance is counted up to this many cells (a jump of about 5 m at 2 cm).
 const MAX_CLEARANCE: u8 = 255;
+
+/// Rasters of more cells than this, with at most [`TILED_MOST_BOXES`] wall boxes, are worked
+/// out in tiles when first read (`wall_tiles.rs`) instead of in full before the first step.
+const TILED_FROM: usize = 4 << 20;
+
+/// The most wall boxes a tiled raster may have: each tile's cells are worked out from the
+/// boxes near it, box by box, where the passes' cost does not grow with the walls.
+const TILED_MOST_BOXES: usize = 4096;
 
 /// The walls on Stage's raster, with each cell's clearance.
 #[derive(Debug, Clone, PartialEq)]
@@ -39,8 +48,12 @@ pub struct WallRaster {
     /// at its corner and the rest of it that way, at most [`MAX_CLEARANCE`]: a ray moving away
     /// from a wall beside or behind it jumps as far as the walls ahead allow.
     ahead: [Vec<u8>; 4],
-    /// Boxes holding every wall cell, for a scan to tell which beams may meet a wall.
+    /// Boxes holding exactly the wall cells: for a scan to tell which beams may meet a wall,
+    /// and for the tiles.
     pub(super) boxes: WallBoxes,
+    /// For a large raster of few walls, the values of `clearance` and `ahead` (then empty) in
+    /// tiles, worked out when first read.
+    tiles: Option<WallTiles>,
 }
 
 /// Every cell of a 4-connected line from cell `a` to cell `b`, both ends included, as Stage
@@ -140,21 +153,24 @@ impl WallRaster {
             first,
             width: w as usize,
             height: h as usize,
-            clearance: vec![MAX_CLEARANCE; (w * h) as usize],
+            clearance: Vec::new(),
             ahead: Default::default(),
             boxes: Default::default(),
+            tiles: None,
         };
-        // A line's cells lie within its ends' box.
-        let boxes: Vec<CellBox> = marks
+        let mut cells: Vec<CellBox> = marks
             .iter()
             .map(|&(x0, y0, x1, y1)| [x0, y0, x1, y1])
-            .chain(
-                lines
-                    .iter()
-                    .map(|&(a, b)| [a.0.min(b.0), a.1.min(b.1), a.0.max(b.0), a.1.max(b.1)]),
-            )
             .collect();
-        raster.boxes = WallBoxes::new(boxes);
+        for &(a, b) in &lines {
+            line_cells(a, b, |x, y| cells.push([x, y, x, y]));
+        }
+        raster.boxes = WallBoxes::new(cells);
+        if (w * h) as usize > TILED_FROM && raster.boxes.len() <= TILED_MOST_BOXES {
+            raster.tiles = Some(WallTiles::new(first, w as usize, h as usize));
+            return Some(raster);
+        }
+        raster.clearance = vec![MAX_CLEARANCE; (w * h) as usize];
         for (x0, y0, x1, y1) in marks {
             for y in y0..=y1 {
                 for x in x0..=x1 {
@@ -284,7 +300,11 @@ impl WallRaster {
     pub(super) fn clearance(&self, x: i64, y: i64) -> u32 {
         let (c, r) = (x - self.first.0, y - self.first.1);
         if c >= 0 && r >= 0 && (c as usize) < self.width && (r as usize) < self.height {
-            return u32::from(self.clearance[r as usize * self.width + c as usize]);
+            let (c, r) = (c as usize, r as usize);
+            if let Some(tiles) = &self.tiles {
+                return u32::from(tiles.get(CLEARANCE, c, r, &self.boxes));
+            }
+            return u32::from(self.clearance[r * self.width + c]);
         }
         let outside = |v: i64, n: usize| {
             if v < 0 { -v } else { (v - n as i64 + 1).max(0) }
@@ -299,9 +319,24 @@ impl WallRaster {
     pub(super) fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
         let (c, r) = (x - self.first.0, y - self.first.1);
         if c >= 0 && r >= 0 && (c as usize) < self.width && (r as usize) < self.height {
-            return u32::from(self.ahead[q][r as usize * self.width + c as usize]);
+            let (c, r) = (c as usize, r as usize);
+            if let Some(tiles) = &self.tiles {
+                return u32::from(tiles.get(q, c, r, &self.boxes));
+            }
+            return u32::from(self.ahead[q][r * self.width + c]);
         }
         self.clearance(x, y)
+    }
+
+    /// The same raster with its values in tiles, worked out when read (`wall_tiles.rs`).
+    #[cfg(test)]
+    pub(super) fn tiled(&self) -> WallRaster {
+        WallRaster {
+            clearance: Vec::new(),
+            ahead: Default::default(),
+            tiles: Some(WallTiles::new(self.first, self.width, self.height)),
+            ..self.clone()
+        }
     }
 
     /// Is global cell `(x, y)` a wall?
@@ -325,6 +360,7 @@ mod tests {
             clearance: vec![MAX_CLEARANCE; 1200],
             ahead: Default::default(),
             boxes: Default::default(),
+            tiles: None,
         };
         for &(x, y) in cells {
             r.mark(x, y);
