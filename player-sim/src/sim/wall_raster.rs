@@ -306,6 +306,14 @@ impl WallRaster {
             }
             return u32::from(self.clearance[r * self.width + c]);
         }
+        self.outside(x, y)
+    }
+
+    /// The clearance of global cell `(x, y)` outside the raster: how far outside it lies.
+    #[cold]
+    #[inline(never)]
+    fn outside(&self, x: i64, y: i64) -> u32 {
+        let (c, r) = (x - self.first.0, y - self.first.1);
         let outside = |v: i64, n: usize| {
             if v < 0 { -v } else { (v - n as i64 + 1).max(0) }
         };
@@ -325,7 +333,7 @@ impl WallRaster {
             }
             return u32::from(self.ahead[q][r * self.width + c]);
         }
-        self.clearance(x, y)
+        self.outside(x, y)
     }
 
     /// The same raster with its values in tiles, worked out when read (`wall_tiles.rs`).

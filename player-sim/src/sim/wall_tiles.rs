@@ -28,8 +28,20 @@ const MOST: i32 = 255;
 /// `wall_raster::quadrant`), or the clearance.
 pub(super) const CLEARANCE: usize = 4;
 
-/// A tile's cells, row-major from the south; `None`: every cell 255.
-type Tile = OnceLock<Option<Box<[u8]>>>;
+/// A tile's cells, in blocks of 8 x 8 (see [`within`]).
+type Cells = Box<[u8; SIDE * SIDE]>;
+
+/// A tile, once worked out; `None`: every cell 255.
+type Tile = OnceLock<Option<Cells>>;
+
+/// Where cell `(c, r)` of its tile is kept: in blocks of 8 x 8 cells, a cache line each, so
+/// that the cells a ray reads near a wall, and its neighbouring beams' there, share lines
+/// whichever way the wall runs.
+#[inline]
+fn within(c: usize, r: usize) -> usize {
+    let (c, r) = (c & (SIDE - 1), r & (SIDE - 1));
+    ((((r >> 3) << (SHIFT - 3)) | (c >> 3)) << 6) | ((r & 7) << 3) | (c & 7)
+}
 
 /// The raster's values in tiles, each worked out on first read.
 #[derive(Debug, Clone, Default)]
@@ -67,19 +79,29 @@ impl WallTiles {
     /// being `walls`.
     #[inline]
     pub(super) fn get(&self, kind: usize, c: usize, r: usize, walls: &WallBoxes) -> u8 {
-        let (tc, tr) = (c >> SHIFT, r >> SHIFT);
-        let tile = self.tiles[kind][tr * self.columns + tc]
-            .get_or_init(|| self.work_out(kind, tc, tr, walls));
+        let k = (r >> SHIFT) * self.columns + (c >> SHIFT);
+        let tile = match self.tiles[kind][k].get() {
+            Some(tile) => tile,
+            None => self.first_read(kind, k, walls),
+        };
         match tile {
-            Some(cells) => cells[((r & (SIDE - 1)) << SHIFT) | (c & (SIDE - 1))],
+            Some(cells) => cells[within(c, r)],
             None => MOST as u8,
         }
+    }
+
+    /// Tile `k` of kind `kind`, worked out now unless another thread has.
+    #[cold]
+    #[inline(never)]
+    fn first_read(&self, kind: usize, k: usize, walls: &WallBoxes) -> &Option<Cells> {
+        let (tc, tr) = (k % self.columns, k / self.columns);
+        self.tiles[kind][k].get_or_init(|| self.work_out(kind, tc, tr, walls))
     }
 
     /// Tile `(tc, tr)` of kind `kind` from the boxes that may come within 255 cells of it.
     #[cold]
     #[inline(never)]
-    fn work_out(&self, kind: usize, tc: usize, tr: usize, walls: &WallBoxes) -> Option<Box<[u8]>> {
+    fn work_out(&self, kind: usize, tc: usize, tr: usize, walls: &WallBoxes) -> Option<Cells> {
         // The tile's first cell, global.
         let (x0, y0) = (
             self.first.0 + (tc * SIDE) as i64,
@@ -108,7 +130,10 @@ impl WallTiles {
         if near.is_empty() {
             return None;
         }
-        let mut cells = vec![MOST as u8; SIDE * SIDE].into_boxed_slice();
+        let mut cells: Cells = vec![MOST as u8; SIDE * SIDE]
+            .into_boxed_slice()
+            .try_into()
+            .expect("a tile's cells");
         for [bx0, by0, bx1, by1] in near {
             for r in 0..SIDE as i32 {
                 // The rows' share of the distance, or none of the box that way.
@@ -124,8 +149,7 @@ impl WallTiles {
                 if dy >= MOST {
                     continue;
                 }
-                let row = &mut cells[(r as usize) << SHIFT..][..SIDE];
-                for (c, cell) in (0..SIDE as i32).zip(row.iter_mut()) {
+                for c in 0..SIDE as i32 {
                     let dx = if all {
                         (bx0 - c).max(c - bx1).max(0)
                     } else if west {
@@ -135,6 +159,7 @@ impl WallTiles {
                     } else {
                         (bx0 - c).max(0)
                     };
+                    let cell = &mut cells[within(c as usize, r as usize)];
                     *cell = (*cell).min(dx.max(dy).min(MOST) as u8);
                 }
             }
