@@ -9,9 +9,10 @@
 
 use std::marker::PhantomData;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use super::RobotState;
+use super::box_cells::{BoxCells, DrawnCells};
 use super::sensors::body_at;
 use crate::world::{Pose, World, floor_i64};
 
@@ -33,6 +34,11 @@ pub struct BodyIndex {
     /// Each robot's `(sin, cos)` of its heading and of its body's (its heading turned by its
     /// `origin`): taken once per index, not by every scan that sees the robot.
     trig: Vec<[(f64, f64); 2]>,
+    /// Robot `i`'s mounted bodies are `drawn`'s bodies `robots + mounted[i]..`, after the
+    /// robots' own.
+    mounted: Vec<u32>,
+    /// The bodies' cells on the world's raster, drawn once for every scan of these poses.
+    drawn: DrawnCells,
 }
 
 impl BodyIndex {
@@ -95,8 +101,16 @@ impl BodyIndex {
                 [heading, body]
             })
             .collect();
+        let mut mounted = Vec::with_capacity(world.robots.len());
+        let mut bodies = world.robots.len();
+        for spec in &world.robots {
+            mounted.push((bodies - world.robots.len()) as u32);
+            bodies += spec.mounted_bodies.len();
+        }
         let mut index = BodyIndex {
             trig,
+            mounted,
+            drawn: DrawnCells::new(bodies),
             poses: robots.iter().map(|r| r.pose).collect(),
             origin: (x0, y0),
             cell,
@@ -125,6 +139,18 @@ impl BodyIndex {
     /// Robot `i`'s `(sin, cos)` of its heading, then of its body's.
     pub fn trig(&self, i: usize) -> [(f64, f64); 2] {
         self.trig[i]
+    }
+
+    /// Which of [`BodyIndex::drawn`]'s bodies robot `i`'s mounted body `k` is (robot `i`'s own
+    /// body is body `i`).
+    pub(super) fn mounted_body(&self, i: usize, k: usize) -> usize {
+        self.mounted.len() + self.mounted[i] as usize + k
+    }
+
+    /// Where body `k`'s cells on the world's raster are drawn, once for every scan of these
+    /// poses.
+    pub(super) fn drawn(&self, k: usize) -> Option<&OnceLock<Option<BoxCells>>> {
+        self.drawn.get(k)
     }
 
     /// Was the index built from robots standing where these stand?

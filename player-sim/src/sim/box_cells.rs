@@ -11,6 +11,8 @@
 //! pruning), into a small grid around the box, and the ray is walked through them with the
 //! walls' walk ([`walk`]), so that a box and a wall in the same cell read the same.
 
+use std::sync::OnceLock;
+
 use super::raster_walk::{Cells, walk};
 use super::wall_raster::line_cells;
 use crate::world::{Polygon, floor_i64};
@@ -134,6 +136,38 @@ impl BoxCells {
             height,
             solid,
         })
+    }
+}
+
+/// The cells of every robot's body and mounted bodies for one set of poses, each drawn the
+/// first time any scan's ray needs it (`BodyIndex`): in the swarm a robot is seen by a dozen
+/// scans a step, and each drew its cells anew.
+#[derive(Debug, Default)]
+pub(super) struct DrawnCells(Vec<OnceLock<Option<BoxCells>>>);
+
+impl DrawnCells {
+    /// `count` bodies, none drawn.
+    pub(super) fn new(count: usize) -> DrawnCells {
+        DrawnCells((0..count).map(|_| OnceLock::new()).collect())
+    }
+
+    /// Body `k`'s cells, once drawn.
+    pub(super) fn get(&self, k: usize) -> Option<&OnceLock<Option<BoxCells>>> {
+        self.0.get(k)
+    }
+}
+
+/// A copy draws its cells anew: they are a cache of the poses.
+impl Clone for DrawnCells {
+    fn clone(&self) -> DrawnCells {
+        DrawnCells::new(self.0.len())
+    }
+}
+
+/// The cells are a function of the poses, which the index compares.
+impl PartialEq for DrawnCells {
+    fn eq(&self, other: &DrawnCells) -> bool {
+        self.0.len() == other.0.len()
     }
 }
 

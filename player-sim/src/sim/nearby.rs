@@ -7,6 +7,9 @@
 
 use super::Simulation;
 use std::cell::OnceCell;
+use std::sync::{Arc, OnceLock};
+
+use super::body_index::BodyIndex;
 
 use super::box_cells::{BoxCells, Placed, cell_margin};
 use super::geometry::slab_hit;
@@ -38,20 +41,35 @@ pub struct SolidBox<'a> {
     /// The world's raster when rays meet the box's cells on it, as rangers do
     /// (`sim/box_cells.rs`, [`NearbyBoxes::on_raster`]); 0: its exact outline (the camera).
     resolution: f64,
+    /// A robot's body or mounted body: which of the robots' index's bodies, whose cells are
+    /// drawn once for every scan ([`NO_BODY`]: an obstacle, or a body cut by height).
+    body: u32,
+}
+
+/// [`SolidBox::body`] of a box whose cells each scan draws for itself.
+const NO_BODY: u32 = u32::MAX;
+
+/// Where a box's cells are drawn: for the scan alone, or for every scan of the step.
+#[derive(Clone, Copy)]
+enum Drawn<'b> {
+    Scan(&'b OnceCell<Option<BoxCells>>),
+    Step(&'b OnceLock<Option<BoxCells>>),
+}
+
+impl<'b> Drawn<'b> {
+    fn get_or_init(self, draw: impl FnOnce() -> Option<BoxCells>) -> &'b Option<BoxCells> {
+        match self {
+            Drawn::Scan(cells) => cells.get_or_init(draw),
+            Drawn::Step(cells) => cells.get_or_init(draw),
+        }
+    }
 }
 
 impl SolidBox<'_> {
     /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box, if ahead: its
     /// cells on the world's raster when [`NearbyBoxes::on_raster`] (drawn into `cells` the
     /// first time a ray needs them), else its exact outline.
-    fn hit(
-        &self,
-        cells: Option<&OnceCell<Option<BoxCells>>>,
-        x: f64,
-        y: f64,
-        dx: f64,
-        dy: f64,
-    ) -> Option<f64> {
+    fn hit(&self, cells: Option<Drawn<'_>>, x: f64, y: f64, dx: f64, dy: f64) -> Option<f64> {
         let Some(cells) = cells.filter(|_| self.resolution != 0.0) else {
             return self.exact_hit(x, y, dx, dy);
         };
@@ -125,6 +143,8 @@ pub struct NearbyBoxes<'a> {
     /// Each box's cells on the world's raster, drawn when a ray first needs them (empty
     /// unless [`NearbyBoxes::on_raster`]).
     cells: Vec<OnceCell<Option<BoxCells>>>,
+    /// The robots' index the robots were asked of, which draws their cells for every scan.
+    index: Option<Arc<BodyIndex>>,
 }
 
 impl<'a> NearbyBoxes<'a> {
@@ -145,7 +165,7 @@ impl<'a> NearbyBoxes<'a> {
                 let (state, spec) = (&sim.robots[i], &sim.world.robots[i]);
                 let body = body_at(state.pose, spec.origin);
                 (
-                    body,
+                    (body, i as u32),
                     Some(index.trig(i)[1]),
                     spec.size,
                     spec.color,
@@ -162,10 +182,17 @@ impl<'a> NearbyBoxes<'a> {
             .map(|(_, o)| {
                 let body = body_at(o.pose, o.origin);
                 let shape = (&o.shape[..], &o.shape_slices[..]);
-                (body, None, o.size, o.color, o.ranger_return, shape)
+                (
+                    (body, NO_BODY),
+                    None,
+                    o.size,
+                    o.color,
+                    o.ranger_return,
+                    shape,
+                )
             });
         boxes.extend(robots.chain(obstacles).filter_map(
-            |(pose, trig, size, color, ranger_return, (shape, slices))| {
+            |((pose, body), trig, size, color, ranger_return, (shape, slices))| {
                 // Squares, not `hypot`: every sensor asks this of the robots around it.
                 let radius = (size[0] * size[0] + size[1] * size[1]).sqrt() / 2.0
                     + cell_margin(sim.world.resolution);
@@ -188,6 +215,8 @@ impl<'a> NearbyBoxes<'a> {
                         shape,
                         slices,
                         resolution: 0.0,
+                        // A body cut by height has cells of its own for each height.
+                        body: if slices.is_empty() { body } else { NO_BODY },
                     }
                 })
             },
@@ -195,6 +224,7 @@ impl<'a> NearbyBoxes<'a> {
         NearbyBoxes {
             boxes,
             cells: Vec::new(),
+            index: Some(index),
         }
     }
 
@@ -242,10 +272,15 @@ impl<'a> NearbyBoxes<'a> {
         let mut near = Vec::new();
         let index = sim.body_index();
         index.near(x, y, reach, &mut near);
+        // The mounted bodies' cells drawn by the index the robots were asked of.
+        let same = self
+            .index
+            .as_ref()
+            .is_none_or(|own| Arc::ptr_eq(own, &index));
         for i in near.into_iter().filter(|&i| Some(i) != except) {
             let (state, spec) = (&sim.robots[i], &sim.world.robots[i]);
             let [(s, c), _] = index.trig(i);
-            for body in &spec.mounted_bodies {
+            for (k, body) in spec.mounted_bodies.iter().enumerate() {
                 // `on_robot`, with the robot's sine and cosine taken once for the step.
                 let p = state.pose;
                 let pose = Pose {
@@ -281,10 +316,28 @@ impl<'a> NearbyBoxes<'a> {
                     shape: &body.shape,
                     slices: &[],
                     resolution: 0.0,
+                    body: u32::try_from(index.mounted_body(i, k))
+                        .ok()
+                        .filter(|_| same)
+                        .unwrap_or(NO_BODY),
                 });
             }
         }
+        if self.index.is_none() {
+            self.index = Some(index);
+        }
         self
+    }
+
+    /// Where box `k`'s cells are drawn; `None` unless [`NearbyBoxes::on_raster`].
+    fn drawn(&self, k: usize) -> Option<Drawn<'_>> {
+        let own = self.cells.get(k)?;
+        let body = self.boxes[k].body;
+        let step = self.index.as_ref().filter(|_| body != NO_BODY);
+        Some(match step.and_then(|index| index.drawn(body as usize)) {
+            Some(cells) => Drawn::Step(cells),
+            None => Drawn::Scan(own),
+        })
     }
 
     pub fn len(&self) -> usize {
@@ -314,7 +367,7 @@ impl<'a> NearbyBoxes<'a> {
     ) -> Option<(f64, &SolidBox<'a>)> {
         let listed = candidates
             .iter()
-            .map(|&k| (&self.boxes[k as usize], self.cells.get(k as usize)));
+            .map(|&k| (&self.boxes[k as usize], self.drawn(k as usize)));
         nearest_of(listed.filter(|(b, _)| counts(b)), (x, y), (dx, dy), max)
     }
 
@@ -349,7 +402,8 @@ impl<'a> NearbyBoxes<'a> {
         nearest_of(
             self.boxes
                 .iter()
-                .zip(self.cells.iter().map(Some).chain(std::iter::repeat(None)))
+                .enumerate()
+                .map(|(k, b)| (b, self.drawn(k)))
                 .filter(|(b, _)| counts(b)),
             (x, y),
             (dx, dy),
@@ -380,7 +434,7 @@ impl<'a> NearbyBoxes<'a> {
 /// The nearest of `boxes` along the ray from `(x, y)` in the unit direction `(dx, dy)`, within
 /// `max`; each box's cheap bounding test is made against the nearest hit so far.
 fn nearest_of<'b, 'a: 'b>(
-    boxes: impl Iterator<Item = (&'b SolidBox<'a>, Option<&'b OnceCell<Option<BoxCells>>>)>,
+    boxes: impl Iterator<Item = (&'b SolidBox<'a>, Option<Drawn<'b>>)>,
     (x, y): (f64, f64),
     (dx, dy): (f64, f64),
     max: f64,
