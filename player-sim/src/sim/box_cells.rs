@@ -11,6 +11,7 @@
 //! pruning), into a small grid around the box, and the ray is walked through them with the
 //! walls' walk ([`walk`]), so that a box and a wall in the same cell read the same.
 
+use std::cell::OnceCell;
 use std::sync::OnceLock;
 
 use super::raster_walk::{Cells, walk};
@@ -154,6 +155,25 @@ impl DrawnCells {
     /// Body `k`'s cells, once drawn.
     pub(super) fn get(&self, k: usize) -> Option<&OnceLock<Option<BoxCells>>> {
         self.0.get(k)
+    }
+}
+
+/// Where a box's cells are drawn: for the scan alone, or for every scan of the step.
+#[derive(Clone, Copy)]
+pub(super) enum Drawn<'b> {
+    Scan(&'b OnceCell<Option<BoxCells>>),
+    Step(&'b OnceLock<Option<BoxCells>>),
+}
+
+impl<'b> Drawn<'b> {
+    pub(super) fn get_or_init(
+        self,
+        draw: impl FnOnce() -> Option<BoxCells>,
+    ) -> &'b Option<BoxCells> {
+        match self {
+            Drawn::Scan(cells) => cells.get_or_init(draw),
+            Drawn::Step(cells) => cells.get_or_init(draw),
+        }
     }
 }
 

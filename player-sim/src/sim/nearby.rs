@@ -7,15 +7,17 @@
 
 use super::Simulation;
 use std::cell::OnceCell;
-use std::sync::{Arc, OnceLock};
+use std::sync::Arc;
 
 use super::body_index::BodyIndex;
 
-use super::box_cells::{BoxCells, Placed, cell_margin};
+mod mounted;
+
+use super::box_cells::{BoxCells, Drawn, Placed, cell_margin};
 use super::geometry::slab_hit;
 use super::sensors::body_at;
 use super::shapes::ray_into_polygons;
-use crate::world::{Polygon, Pose, ShapeSlice, slice_at};
+use crate::world::{Polygon, ShapeSlice, slice_at};
 
 /// A solid box prepared for many rays: its frame's sine and cosine computed once.
 #[derive(Debug, Clone, Copy)]
@@ -48,22 +50,6 @@ pub struct SolidBox<'a> {
 
 /// [`SolidBox::body`] of a box whose cells each scan draws for itself.
 const NO_BODY: u32 = u32::MAX;
-
-/// Where a box's cells are drawn: for the scan alone, or for every scan of the step.
-#[derive(Clone, Copy)]
-enum Drawn<'b> {
-    Scan(&'b OnceCell<Option<BoxCells>>),
-    Step(&'b OnceLock<Option<BoxCells>>),
-}
-
-impl<'b> Drawn<'b> {
-    fn get_or_init(self, draw: impl FnOnce() -> Option<BoxCells>) -> &'b Option<BoxCells> {
-        match self {
-            Drawn::Scan(cells) => cells.get_or_init(draw),
-            Drawn::Step(cells) => cells.get_or_init(draw),
-        }
-    }
-}
 
 impl SolidBox<'_> {
     /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box, if ahead: its
@@ -145,6 +131,9 @@ pub struct NearbyBoxes<'a> {
     cells: Vec<OnceCell<Option<BoxCells>>>,
     /// The robots' index the robots were asked of, which draws their cells for every scan.
     index: Option<Arc<BodyIndex>>,
+    /// What the index was asked (`(x, y, reach)`) and the robots it gave, in order, kept for
+    /// [`NearbyBoxes::with_mounted`] to ask no more when it asks the same.
+    asked: Option<((f64, f64, f64), Vec<usize>)>,
 }
 
 impl<'a> NearbyBoxes<'a> {
@@ -159,7 +148,8 @@ impl<'a> NearbyBoxes<'a> {
         // At most every robot asked and every obstacle: one allocation, not a doubling series.
         let mut boxes = Vec::with_capacity(near.len() + sim.world.obstacles.len());
         let robots = near
-            .into_iter()
+            .iter()
+            .copied()
             .filter(move |&i| Some(i) != except)
             .map(|i| {
                 let (state, spec) = (&sim.robots[i], &sim.world.robots[i]);
@@ -225,6 +215,7 @@ impl<'a> NearbyBoxes<'a> {
             boxes,
             cells: Vec::new(),
             index: Some(index),
+            asked: Some(((x, y, reach), near)),
         }
     }
 
@@ -257,75 +248,6 @@ impl<'a> NearbyBoxes<'a> {
             b.resolution = resolution;
         }
         self.cells = self.boxes.iter().map(|_| OnceCell::new()).collect();
-        self
-    }
-
-    /// With the bodies mounted on every robot but `except` within `reach` of `(x, y)` (what
-    /// rangers meet; the other sensors and collisions know only the robots' own bodies).
-    pub fn with_mounted(
-        mut self,
-        sim: &'a Simulation,
-        except: Option<usize>,
-        (x, y): (f64, f64),
-        reach: f64,
-    ) -> Self {
-        let mut near = Vec::new();
-        let index = sim.body_index();
-        index.near(x, y, reach, &mut near);
-        // The mounted bodies' cells drawn by the index the robots were asked of.
-        let same = self
-            .index
-            .as_ref()
-            .is_none_or(|own| Arc::ptr_eq(own, &index));
-        for i in near.into_iter().filter(|&i| Some(i) != except) {
-            let (state, spec) = (&sim.robots[i], &sim.world.robots[i]);
-            let [(s, c), _] = index.trig(i);
-            for (k, body) in spec.mounted_bodies.iter().enumerate() {
-                // `on_robot`, with the robot's sine and cosine taken once for the step.
-                let p = state.pose;
-                let pose = Pose {
-                    x: p.x + c * body.pose.x - s * body.pose.y,
-                    y: p.y + s * body.pose.x + c * body.pose.y,
-                    a: p.a + body.pose.a,
-                };
-                // Squares, not `hypot`: every scan asks this of the robots around it.
-                let radius = (body.size[0] * body.size[0] + body.size[1] * body.size[1]).sqrt()
-                    / 2.0
-                    + cell_margin(sim.world.resolution);
-                let (ex, ey, within) = (pose.x - x, pose.y - y, reach + radius);
-                if !(within >= 0.0 && ex * ex + ey * ey <= within * within) {
-                    continue;
-                }
-                let (sin, cos) = if body.pose.a == 0.0 {
-                    (s, c)
-                } else {
-                    pose.a.sin_cos()
-                };
-                self.boxes.push(SolidBox {
-                    x: pose.x,
-                    y: pose.y,
-                    sin,
-                    cos,
-                    half_length: body.size[0] / 2.0,
-                    half_width: body.size[1] / 2.0,
-                    radius,
-                    height: body.bottom + body.size[2],
-                    bottom: body.bottom,
-                    color: spec.color,
-                    ranger_return: body.ranger_return,
-                    shape: &body.shape,
-                    slices: &[],
-                    resolution: 0.0,
-                    body: u32::try_from(index.mounted_body(i, k))
-                        .ok()
-                        .filter(|_| same)
-                        .unwrap_or(NO_BODY),
-                });
-            }
-        }
-        if self.index.is_none() {
-            self.index = Some(index);
-        }
         self
     }
 
