@@ -107,6 +107,8 @@ pub struct Simulation {
     walls: std::sync::OnceLock<Option<std::sync::Arc<WallRaster>>>,
     /// Threads a step may cast its controllers' scans on (see [`Simulation::set_threads`]).
     threads: usize,
+    /// Each robot's last fan of laser beams and their directions, for its next scan.
+    fan_directions: scan_caster::FanDirections,
 }
 
 const STOP: Command = Command::Velocity {
@@ -152,7 +154,9 @@ impl Simulation {
             bodies: IndexCache::default(),
             walls: std::sync::OnceLock::new(),
             threads: parallel_scans::default_threads(),
+            fan_directions: scan_caster::FanDirections::default(),
         };
+        sim.fan_directions = scan_caster::FanDirections::new(sim.robots.len());
         for i in 0..sim.walkers.len() {
             sim.place_legs(i);
         }

@@ -8,6 +8,7 @@
 //! against the boxes within the sensor's whole reach (listed only when such a beam comes).
 
 use std::cell::OnceCell;
+use std::sync::{Arc, Mutex};
 
 use super::Simulation;
 use super::beams::{BeamBoxes, Fan};
@@ -109,7 +110,7 @@ pub(super) fn caster(
         .then(|| walls_seen(sim, at.0, at.1, max, fan))
         .flatten();
     let (walls, wall_beams) = seen.map_or((None, None), |(walls, beams)| (Some(walls), beams));
-    let directions = Directions::of(fan);
+    let directions = sim.fan_directions.of(robot, fan);
     let wall_along =
         move |(dx, dy): (f64, f64)| walls.and_then(|w| w.cast(at.0, at.1, dx, dy, max));
     let fan_walls: Vec<Option<f64>> = (0..fan.count)
@@ -152,7 +153,87 @@ pub(super) fn caster(
     }
 }
 
+/// Each robot's last fan of beams and their directions: a robot driving straight on scans the
+/// same fan step after step (the wandering swarm's robots, mostly), and the directions' 180
+/// rotations, each waiting on the last, were a twentieth of its one-thread profile. The same
+/// fan, bit for bit, has the same directions.
+#[derive(Debug, Default)]
+pub(super) struct FanDirections(Vec<Mutex<Option<Kept>>>);
+
+/// A robot's last fan and its directions.
+type Kept = (Fan, Arc<Directions>);
+
+/// Fans of fewer beams are not kept (a ring of single-beam sonars would replace its robot's
+/// fan sensor by sensor).
+const KEPT_FROM: usize = 16;
+
+impl FanDirections {
+    /// Room for `robots` robots' fans.
+    pub(super) fn new(robots: usize) -> FanDirections {
+        FanDirections((0..robots).map(|_| Mutex::new(None)).collect())
+    }
+
+    /// The directions of robot `robot`'s fan `fan`: its last ones if that was this fan.
+    fn of(&self, robot: usize, fan: Fan) -> Arc<Directions> {
+        let Some(slot) = self.0.get(robot).filter(|_| fan.count >= KEPT_FROM) else {
+            return Arc::new(Directions::of(fan));
+        };
+        let mut kept = slot.lock().unwrap_or_else(|e| e.into_inner());
+        let same = |f: &Fan| {
+            (f.first.to_bits(), f.step.to_bits(), f.count)
+                == (fan.first.to_bits(), fan.step.to_bits(), fan.count)
+        };
+        match &*kept {
+            Some((f, directions)) if same(f) => directions.clone(),
+            _ => {
+                let directions = Arc::new(Directions::of(fan));
+                *kept = Some((fan, directions.clone()));
+                directions
+            }
+        }
+    }
+}
+
+/// A copy keeps none: they are a cache.
+impl Clone for FanDirections {
+    fn clone(&self) -> FanDirections {
+        FanDirections::new(self.0.len())
+    }
+}
+
 /// The direction of the fan's beam `i`, as the scan computes it.
 fn fan_angle(fan: Fan, i: usize) -> f64 {
     fan.first + i as f64 * fan.step
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_kept_fan_has_the_directions_of_its_own() {
+        let kept = FanDirections::new(2);
+        let fan = |first: f64, count: usize| Fan {
+            first,
+            step: std::f64::consts::PI / 180.0,
+            count,
+        };
+        // Kept, asked again, replaced by a turned fan, and a robot the cache has no room for.
+        for (robot, f) in [
+            (0, fan(0.3, 181)),
+            (0, fan(0.3, 181)),
+            (0, fan(0.3 + 1e-15, 181)),
+            (1, fan(-2.0, 181)),
+            (0, fan(0.3, 8)),
+            (5, fan(1.0, 181)),
+        ] {
+            let (got, want) = (kept.of(robot, f), Directions::of(f));
+            for i in 0..f.count {
+                let angle = fan_angle(f, i);
+                assert_eq!(got.of_beam(i, angle), want.of_beam(i, angle), "beam {i}");
+            }
+        }
+        let again = kept.of(0, fan(0.3 + 1e-15, 181));
+        assert!(Arc::ptr_eq(&again, &kept.of(0, fan(0.3 + 1e-15, 181))));
+    }
 }
