@@ -76,8 +76,9 @@ impl WallTiles {
     }
 
     /// The value of kind `kind` at raster column `c`, row `r` (within the raster), the walls
-    /// being `walls`.
-    #[inline]
+    /// being `walls`. Out of line, so that the raster's read of a full array (a cave's) stays inlined in the
+    /// walk: the tiles' reads wait on memory far longer than a call takes.
+    #[inline(never)]
     pub(super) fn get(&self, kind: usize, c: usize, r: usize, walls: &WallBoxes) -> u8 {
         let k = (r >> SHIFT) * self.columns + (c >> SHIFT);
         let tile = match self.tiles[kind][k].get() {
