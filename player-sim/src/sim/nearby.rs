@@ -8,8 +8,9 @@
 use super::Simulation;
 use std::cell::OnceCell;
 
-use super::box_cells::{BoxCells, Placed, cell_margin};
+use super::box_cells::{BoxCells, Placed, RayScene, cell_margin};
 use super::geometry::slab_hit;
+use super::raster_walk::RegionMap;
 use super::sensors::body_at;
 use super::shapes::ray_into_polygons;
 use crate::world::{Polygon, Pose, ShapeSlice, slice_at};
@@ -47,6 +48,7 @@ impl SolidBox<'_> {
     fn hit(
         &self,
         cells: Option<&OnceCell<Option<BoxCells>>>,
+        scene: Option<&RayScene>,
         x: f64,
         y: f64,
         dx: f64,
@@ -61,25 +63,29 @@ impl SolidBox<'_> {
         let ((ox, oy), (lx, ly)) = self.in_frame(x, y, dx, dy);
         let (hx, hy) = (self.half_length + margin, self.half_width + margin);
         slab_hit(ox, oy, lx, ly, hx, hy)?;
-        let drawn = cells.get_or_init(|| {
-            let placed = Placed {
-                x: self.x,
-                y: self.y,
-                sin: self.sin,
-                cos: self.cos,
-                half_length: self.half_length,
-                half_width: self.half_width,
-                shape: self.shape,
-            };
-            BoxCells::of(&placed, self.resolution)
-        });
+        let drawn = cells.get_or_init(|| BoxCells::of(&self.placed(), self.resolution));
         match drawn {
             // Nothing of the box lies farther than its far side.
             Some(drawn) => {
-                let beyond = (self.x - x) * dx + (self.y - y) * dy + self.radius;
-                drawn.cast((x, y), (dx, dy), beyond.max(0.0))
+                let beyond = ((self.x - x) * dx + (self.y - y) * dy + self.radius).max(0.0);
+                match scene {
+                    Some(scene) => drawn.cast_in(scene, (x, y), (dx, dy), beyond),
+                    None => drawn.cast((x, y), (dx, dy), beyond),
+                }
             }
             None => self.exact_hit(x, y, dx, dy),
+        }
+    }
+
+    fn placed(&self) -> Placed<'_> {
+        Placed {
+            x: self.x,
+            y: self.y,
+            sin: self.sin,
+            cos: self.cos,
+            half_length: self.half_length,
+            half_width: self.half_width,
+            shape: self.shape,
         }
     }
 
@@ -125,6 +131,9 @@ pub struct NearbyBoxes<'a> {
     /// Each box's cells on the world's raster, drawn when a ray first needs them (empty
     /// unless [`NearbyBoxes::on_raster`]).
     cells: Vec<OnceCell<Option<BoxCells>>>,
+    /// How rangers walk to the cells: Stage's path for a sensor's range among the regions it
+    /// walks (see [`NearbyBoxes::walked_in`]).
+    scene: Option<RayScene>,
 }
 
 impl<'a> NearbyBoxes<'a> {
@@ -195,6 +204,7 @@ impl<'a> NearbyBoxes<'a> {
         NearbyBoxes {
             boxes,
             cells: Vec::new(),
+            scene: None,
         }
     }
 
@@ -228,6 +238,20 @@ impl<'a> NearbyBoxes<'a> {
         }
         self.cells = self.boxes.iter().map(|_| OnceCell::new()).collect();
         self
+    }
+
+    /// Rays walk to the boxes' cells along the path Stage's rays take in `scene` (see
+    /// `sim/raster_walk.rs`).
+    pub(super) fn walked_in(mut self, scene: RayScene) -> Self {
+        self.scene = Some(scene);
+        self
+    }
+
+    /// Holds in `regions` those of Stage's raster of `resolution` the boxes' cells lie in.
+    pub(super) fn hold_regions(&self, resolution: f64, regions: &mut RegionMap) {
+        for b in &self.boxes {
+            b.placed().add_regions(resolution, regions);
+        }
     }
 
     /// With the bodies mounted on every robot but `except` within `reach` of `(x, y)` (what
@@ -315,7 +339,14 @@ impl<'a> NearbyBoxes<'a> {
         let listed = candidates
             .iter()
             .map(|&k| (&self.boxes[k as usize], self.cells.get(k as usize)));
-        nearest_of(listed.filter(|(b, _)| counts(b)), (x, y), (dx, dy), max)
+        let scene = self.scene.as_ref();
+        nearest_of(
+            listed.filter(|(b, _)| counts(b)),
+            scene,
+            (x, y),
+            (dx, dy),
+            max,
+        )
     }
 
     /// The nearest box along the ray from `(x, y)` at `angle`, within `max`: (distance, box).
@@ -351,6 +382,7 @@ impl<'a> NearbyBoxes<'a> {
                 .iter()
                 .zip(self.cells.iter().map(Some).chain(std::iter::repeat(None)))
                 .filter(|(b, _)| counts(b)),
+            self.scene.as_ref(),
             (x, y),
             (dx, dy),
             max,
@@ -370,7 +402,7 @@ impl<'a> NearbyBoxes<'a> {
             .iter()
             .filter(move |b| b.may_hit(x, y, dx, dy, max))
             .filter_map(move |b| {
-                b.hit(None, x, y, dx, dy)
+                b.hit(None, None, x, y, dx, dy)
                     .filter(|&d| d <= max)
                     .map(|d| (d, b))
             })
@@ -381,6 +413,7 @@ impl<'a> NearbyBoxes<'a> {
 /// `max`; each box's cheap bounding test is made against the nearest hit so far.
 fn nearest_of<'b, 'a: 'b>(
     boxes: impl Iterator<Item = (&'b SolidBox<'a>, Option<&'b OnceCell<Option<BoxCells>>>)>,
+    scene: Option<&RayScene>,
     (x, y): (f64, f64),
     (dx, dy): (f64, f64),
     max: f64,
@@ -391,7 +424,7 @@ fn nearest_of<'b, 'a: 'b>(
         if !b.may_hit(x, y, dx, dy, limit) {
             continue;
         }
-        if let Some(d) = b.hit(cells, x, y, dx, dy).filter(|&d| d <= limit) {
+        if let Some(d) = b.hit(cells, scene, x, y, dx, dy).filter(|&d| d <= limit) {
             best = Some((d, b));
         }
     }

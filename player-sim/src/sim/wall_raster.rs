@@ -38,6 +38,8 @@ pub struct WallRaster {
     /// at its corner and the rest of it that way, at most [`MAX_CLEARANCE`]: a ray moving away
     /// from a wall beside or behind it jumps as far as the walls ahead allow.
     ahead: [Vec<u8>; 4],
+    /// Stage's regions holding a wall cell (`sim/raster_walk.rs`), worked out on the first ray.
+    pub(super) region_map: std::sync::OnceLock<super::raster_walk::RegionMap>,
 }
 
 /// Every cell of a 4-connected line from cell `a` to cell `b`, both ends included, as Stage
@@ -79,7 +81,15 @@ impl WallRaster {
         }
         let mut marks: Vec<(i64, i64, i64, i64)> = Vec::new();
         let cell = |v: f64| floor_i64(v * per_metre);
-        if let (Some(grid), Some(_)) = (&world.floor, &world.floorplan) {
+        // An unrotated bitmap's own pixels, their edges where Stage puts them (`StageBitmap`);
+        // else the floor grid's.
+        let placed = world.floor_bitmap.as_deref();
+        let grid = placed.map(|b| &b.pixels).or(world.floor.as_ref());
+        if let (Some(grid), Some(_)) = (grid, &world.floorplan) {
+            let edge_x =
+                |c: usize| placed.map_or(grid.origin.0 + c as f64 * grid.cell.0, |b| b.x(c));
+            let edge_y =
+                |r: usize| placed.map_or(grid.origin.1 + r as f64 * grid.cell.1, |b| b.y(r));
             let wall = |column: usize, row: usize| {
                 grid.occupied_at(
                     grid.origin.0 + (column as f64 + 0.5) * grid.cell.0,
@@ -98,10 +108,8 @@ impl WallRaster {
                     while column < grid.width && wall(column, row) {
                         column += 1;
                     }
-                    let x0 = grid.origin.0 + start as f64 * grid.cell.0;
-                    let x1 = grid.origin.0 + column as f64 * grid.cell.0;
-                    let y0 = grid.origin.1 + row as f64 * grid.cell.1;
-                    let y1 = grid.origin.1 + (row + 1) as f64 * grid.cell.1;
+                    let (x0, x1) = (edge_x(start), edge_x(column));
+                    let (y0, y1) = (edge_y(row), edge_y(row + 1));
                     marks.push((cell(x0), cell(y0), cell(x1), cell(y1)));
                 }
             }
@@ -139,6 +147,7 @@ impl WallRaster {
             height: h as usize,
             clearance: vec![MAX_CLEARANCE; (w * h) as usize],
             ahead: Default::default(),
+            region_map: Default::default(),
         };
         for (x0, y0, x1, y1) in marks {
             for y in y0..=y1 {
@@ -289,6 +298,18 @@ impl WallRaster {
         self.clearance(x, y)
     }
 
+    /// The raster's first and last global cells, each way.
+    pub(super) fn cell_bounds(&self) -> ((i64, i64), (i64, i64)) {
+        let last = |first: i64, n: usize| first + n as i64 - 1;
+        (
+            self.first,
+            (
+                last(self.first.0, self.width),
+                last(self.first.1, self.height),
+            ),
+        )
+    }
+
     /// Is global cell `(x, y)` a wall?
     pub fn is_wall(&self, x: i64, y: i64) -> bool {
         self.clearance(x, y) == 0
@@ -309,6 +330,7 @@ mod tests {
             height: 30,
             clearance: vec![MAX_CLEARANCE; 1200],
             ahead: Default::default(),
+            region_map: Default::default(),
         };
         for &(x, y) in cells {
             r.mark(x, y);
