@@ -14,7 +14,7 @@
 use std::cell::OnceCell;
 use std::sync::OnceLock;
 
-use super::raster_walk::{Cells, walk};
+use super::raster_walk::{Both, Cells, Listed, Nowhere, Ray, RegionMap, Regions, walk};
 use super::wall_raster::line_cells;
 use crate::world::{Polygon, floor_i64};
 
@@ -22,15 +22,25 @@ use crate::world::{Polygon, floor_i64};
 /// obstacle at a fine resolution).
 const MOST_CELLS: i64 = 1 << 22;
 
-/// How far a box's cells on a raster of `resolution` reach beyond its outline: a floored
-/// corner's cell and the cell beside it that rays look into west and south of the origin, in
-/// both axes (2√2 cells), rounded up. Rays farther from the outline than this miss the box.
+/// How far a box's cells on a raster of `resolution` reach beyond its outline, as a ray's
+/// line passes them: a floored corner's cell and the cell beside it that rays look into west
+/// and south of the origin, in both axes (2√2 cells), and the 2.2 cells Stage's stepped path
+/// may stray from the line (`sim/raster_walk.rs`), rounded up. Rays whose line passes farther
+/// from the outline than this miss the box.
 pub(super) fn cell_margin(resolution: f64) -> f64 {
     if resolution.is_finite() && resolution > 0.0 {
-        3.0 * resolution
+        6.0 * resolution
     } else {
         0.0
     }
+}
+
+/// What a ray's walk needs to take Stage's path: the sensor's range (its steps' slope comes
+/// from it) and the regions holding something about the sensor (the walls' and the bodies').
+#[derive(Debug, Clone, Default)]
+pub(super) struct RayScene {
+    pub range: f64,
+    pub regions: RegionMap,
 }
 
 /// A box placed in the world: centre, frame, half sizes, and its blocks in its frame (empty: the
@@ -53,6 +63,30 @@ impl Placed<'_> {
         let x = self.x + self.cos * lx - self.sin * ly;
         let y = self.y + self.sin * lx + self.cos * ly;
         (floor_i64(x * per_metre), floor_i64(y * per_metre))
+    }
+
+    /// Adds the regions of Stage's raster (`resolution`) the box's cells lie in: those its
+    /// corners' cells span (every one of them, for a box smaller than a region).
+    pub(super) fn add_regions(&self, resolution: f64, regions: &mut RegionMap) {
+        let per_metre = 1.0 / resolution;
+        if !(per_metre.is_finite() && per_metre > 0.0) {
+            return;
+        }
+        let corners = self.corner_cells(per_metre);
+        let (mut low, mut high) = ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN));
+        for &(x, y) in corners.iter().flatten() {
+            low = (low.0.min(x), low.1.min(y));
+            high = (high.0.max(x), high.1.max(y));
+        }
+        // A hall-sized box is skipped: its regions would be too many to list.
+        if low.0 > high.0 || (high.0 - low.0).max(high.1 - low.1) > 4 * 32 {
+            return;
+        }
+        for y in (low.1 >> 5)..=(high.1 >> 5) {
+            for x in (low.0 >> 5)..=(high.0 >> 5) {
+                regions.hold(x, y);
+            }
+        }
     }
 
     /// The corners of each block in world cells.
@@ -81,9 +115,13 @@ impl Placed<'_> {
         (x, y): (f64, f64),
         (dx, dy): (f64, f64),
         max: f64,
+        scene: Option<&RayScene>,
     ) -> Option<Option<f64>> {
         let cells = BoxCells::of(self, resolution)?;
-        Some(cells.cast((x, y), (dx, dy), max))
+        Some(match scene {
+            Some(scene) => cells.cast_in(scene, (x, y), (dx, dy), max),
+            None => cells.cast((x, y), (dx, dy), max),
+        })
     }
 }
 
@@ -97,6 +135,8 @@ pub(super) struct BoxCells {
     width: i64,
     height: i64,
     solid: Vec<bool>,
+    /// Stage's regions its cells lie in (walked cell by cell, not jumped).
+    regions: Listed,
 }
 
 impl BoxCells {
@@ -121,12 +161,14 @@ impl BoxCells {
             return None;
         }
         let mut solid = vec![false; (width * height) as usize];
+        let mut regions = Listed::default();
         for polygon in &corners {
             for (k, &a) in polygon.iter().enumerate() {
                 let b = polygon[(k + 1) % polygon.len()];
                 line_cells(a, b, |x, y| {
                     let (c, r) = (x - low.0, y - low.1);
                     solid[(r * width + c) as usize] = true;
+                    regions.add_cell(x, y);
                 });
             }
         }
@@ -136,6 +178,7 @@ impl BoxCells {
             width,
             height,
             solid,
+            regions,
         })
     }
 }
@@ -195,15 +238,36 @@ impl BoxCells {
     /// Distance along the ray from `(x, y)` in the unit direction `(dx, dy)` to the first of
     /// the cells, within `max`.
     pub(super) fn cast(&self, (x, y): (f64, f64), (dx, dy): (f64, f64), max: f64) -> Option<f64> {
-        walk(self, x, y, dx, dy, max)
+        let ray = Ray::new(self.per_metre, (x, y), (dx, dy), max)?;
+        self.cast_ray(&ray, &Nowhere, max)
+    }
+
+    /// Distance along the ray from `(x, y)` in the unit direction `(dx, dy)` of a sensor in
+    /// `scene` to the first of the cells on Stage's path, within `stop` metres.
+    pub(super) fn cast_in(
+        &self,
+        scene: &RayScene,
+        (x, y): (f64, f64),
+        (dx, dy): (f64, f64),
+        stop: f64,
+    ) -> Option<f64> {
+        let ray = Ray::new(self.per_metre, (x, y), (dx, dy), scene.range)?;
+        self.cast_ray(&ray, &scene.regions, stop)
+    }
+
+    /// Distance along `ray` (on this box's raster) to the first of the cells on Stage's path,
+    /// within `stop` metres; the regions walked are the box's own and those `others` holds.
+    pub(super) fn cast_ray<R: Regions + ?Sized>(
+        &self,
+        ray: &Ray,
+        others: &R,
+        stop: f64,
+    ) -> Option<f64> {
+        walk(self, &Both(&self.regions, others), ray, stop)
     }
 }
 
 impl Cells for BoxCells {
-    fn per_metre(&self) -> f64 {
-        self.per_metre
-    }
-
     /// Inside the grid: 0 on the outline, else 1 (walked cell by cell); outside, how far
     /// outside (the ray jumps to the grid).
     fn ahead(&self, x: i64, y: i64, _: usize) -> u32 {
@@ -238,24 +302,34 @@ mod tests {
 
     #[test]
     fn a_leg_is_met_on_its_cells_not_its_outline() {
-        // A 3 cm leg from 1.985 to 2.015 m: cells 99 to 100 of 2 cm (1.98 to 2.02 m), entered
-        // 1.97 m from the ray's start, which Stage reads in whole cells walked: 99, 1.98 m.
+        // A 3 cm leg from 1.985 to 2.015 m: cells 99 to 100 of 2 cm (1.98 to 2.02 m). With
+        // nothing else about, Stage's ray jumps the empty regions to the leg's (from x = 96
+        // cells, 1.92 m) and walks on in whole cells from there: it meets cell 99 at x = 99,
+        // 98.5 cells (1.97 m) from its start half a cell east of 0.
         let l = leg(2.0, 0.0);
-        let d = l.cast_cells(0.02, (0.01, 0.0), (1.0, 0.0), 8.0).unwrap();
-        assert!((d.unwrap() - 1.98).abs() < 1e-9, "{d:?}");
+        let d = l
+            .cast_cells(0.02, (0.01, 0.0), (1.0, 0.0), 8.0, None)
+            .unwrap();
+        assert!((d.unwrap() - 1.97).abs() < 1e-9, "{d:?}");
         // A beam passing 1.5 cm north of the leg's edge still meets its cell row (0 to 2 cm
         // holds the edge at 1.5 cm; the beam at 3 cm does not).
-        let beside = l.cast_cells(0.02, (0.01, 0.019), (1.0, 0.0), 8.0).unwrap();
+        let beside = l
+            .cast_cells(0.02, (0.01, 0.019), (1.0, 0.0), 8.0, None)
+            .unwrap();
         assert!(beside.is_some());
-        let clear = l.cast_cells(0.02, (0.01, 0.041), (1.0, 0.0), 8.0).unwrap();
+        let clear = l
+            .cast_cells(0.02, (0.01, 0.041), (1.0, 0.0), 8.0, None)
+            .unwrap();
         assert_eq!(clear, None);
         // Away from it, or beyond the reach: nothing.
         assert_eq!(
-            l.cast_cells(0.02, (0.01, 0.0), (-1.0, 0.0), 8.0).unwrap(),
+            l.cast_cells(0.02, (0.01, 0.0), (-1.0, 0.0), 8.0, None)
+                .unwrap(),
             None
         );
         assert_eq!(
-            l.cast_cells(0.02, (0.01, 0.0), (1.0, 0.0), 1.0).unwrap(),
+            l.cast_cells(0.02, (0.01, 0.0), (1.0, 0.0), 1.0, None)
+                .unwrap(),
             None
         );
     }
@@ -268,7 +342,9 @@ mod tests {
             ..leg(0.0, 0.0)
         };
         // From inside, the far side.
-        let d = b.cast_cells(0.02, (0.01, 0.01), (1.0, 0.0), 8.0).unwrap();
+        let d = b
+            .cast_cells(0.02, (0.01, 0.01), (1.0, 0.0), 8.0, None)
+            .unwrap();
         assert!((d.unwrap() - 0.49).abs() < 0.021, "{d:?}");
         // A box too large for a raster is cast exactly by the caller.
         let hall = Placed {
@@ -276,6 +352,9 @@ mod tests {
             half_width: 500.0,
             ..b
         };
-        assert!(hall.cast_cells(0.02, (0.0, 0.0), (1.0, 0.0), 8.0).is_none());
+        assert!(
+            hall.cast_cells(0.02, (0.0, 0.0), (1.0, 0.0), 8.0, None)
+                .is_none()
+        );
     }
 }

@@ -1,7 +1,7 @@
 //! Rays against oriented boxes, and box overlap: what robots and obstacles are to the
 //! simulator.
 
-use super::box_cells::{Placed, cell_margin};
+use super::box_cells::{Placed, RayScene, cell_margin};
 use super::shapes::{outlines_overlap, ray_into_polygons};
 use crate::world::{Polygon, Pose, placed};
 
@@ -45,6 +45,19 @@ impl GroundBox<'_> {
     /// `resolution`, as rangers meet it (`sim/box_cells.rs`); exactly where the box is too
     /// large for a raster.
     pub fn raycast_cells(&self, resolution: f64, x: f64, y: f64, angle: f64) -> Option<f64> {
+        let (dy, dx) = angle.sin_cos();
+        self.raycast_cells_in(resolution, (x, y), (angle, (dx, dy)), None)
+    }
+
+    /// [`GroundBox::raycast_cells`] along the unit direction `(dx, dy)` (at `angle`), on the
+    /// path Stage takes for a sensor in `scene`.
+    pub(super) fn raycast_cells_in(
+        &self,
+        resolution: f64,
+        (x, y): (f64, f64),
+        (angle, (dx, dy)): (f64, (f64, f64)),
+        scene: Option<&RayScene>,
+    ) -> Option<f64> {
         let (sin, cos) = self.pose.a.sin_cos();
         let placed = Placed {
             x: self.pose.x,
@@ -55,13 +68,12 @@ impl GroundBox<'_> {
             half_width: self.width / 2.0,
             shape: self.shape,
         };
-        let (dy, dx) = angle.sin_cos();
         let beyond = (self.pose.x - x) * dx
             + (self.pose.y - y) * dy
             + self.bounding_radius()
             + cell_margin(resolution);
         placed
-            .cast_cells(resolution, (x, y), (dx, dy), beyond.max(0.0))
+            .cast_cells(resolution, (x, y), (dx, dy), beyond.max(0.0), scene)
             .unwrap_or_else(|| self.raycast(x, y, angle))
     }
 

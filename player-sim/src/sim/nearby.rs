@@ -13,8 +13,9 @@ use super::body_index::BodyIndex;
 
 mod mounted;
 
-use super::box_cells::{BoxCells, Drawn, Placed, cell_margin};
+use super::box_cells::{BoxCells, Drawn, Placed, RayScene, cell_margin};
 use super::geometry::slab_hit;
+use super::raster_walk::RegionMap;
 use super::sensors::body_at;
 use super::shapes::ray_into_polygons;
 use crate::world::{Polygon, ShapeSlice, slice_at};
@@ -55,7 +56,15 @@ impl SolidBox<'_> {
     /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box, if ahead: its
     /// cells on the world's raster when [`NearbyBoxes::on_raster`] (drawn into `cells` the
     /// first time a ray needs them), else its exact outline.
-    fn hit(&self, cells: Option<Drawn<'_>>, x: f64, y: f64, dx: f64, dy: f64) -> Option<f64> {
+    fn hit(
+        &self,
+        cells: Option<Drawn<'_>>,
+        scene: Option<&RayScene>,
+        x: f64,
+        y: f64,
+        dx: f64,
+        dy: f64,
+    ) -> Option<f64> {
         let Some(cells) = cells.filter(|_| self.resolution != 0.0) else {
             return self.exact_hit(x, y, dx, dy);
         };
@@ -65,25 +74,29 @@ impl SolidBox<'_> {
         let ((ox, oy), (lx, ly)) = self.in_frame(x, y, dx, dy);
         let (hx, hy) = (self.half_length + margin, self.half_width + margin);
         slab_hit(ox, oy, lx, ly, hx, hy)?;
-        let drawn = cells.get_or_init(|| {
-            let placed = Placed {
-                x: self.x,
-                y: self.y,
-                sin: self.sin,
-                cos: self.cos,
-                half_length: self.half_length,
-                half_width: self.half_width,
-                shape: self.shape,
-            };
-            BoxCells::of(&placed, self.resolution)
-        });
+        let drawn = cells.get_or_init(|| BoxCells::of(&self.placed(), self.resolution));
         match drawn {
             // Nothing of the box lies farther than its far side.
             Some(drawn) => {
-                let beyond = (self.x - x) * dx + (self.y - y) * dy + self.radius;
-                drawn.cast((x, y), (dx, dy), beyond.max(0.0))
+                let beyond = ((self.x - x) * dx + (self.y - y) * dy + self.radius).max(0.0);
+                match scene {
+                    Some(scene) => drawn.cast_in(scene, (x, y), (dx, dy), beyond),
+                    None => drawn.cast((x, y), (dx, dy), beyond),
+                }
             }
             None => self.exact_hit(x, y, dx, dy),
+        }
+    }
+
+    fn placed(&self) -> Placed<'_> {
+        Placed {
+            x: self.x,
+            y: self.y,
+            sin: self.sin,
+            cos: self.cos,
+            half_length: self.half_length,
+            half_width: self.half_width,
+            shape: self.shape,
         }
     }
 
@@ -134,6 +147,9 @@ pub struct NearbyBoxes<'a> {
     /// What the index was asked (`(x, y, reach)`) and the robots it gave, in order, kept for
     /// [`NearbyBoxes::with_mounted`] to ask no more when it asks the same.
     asked: Option<((f64, f64, f64), Vec<usize>)>,
+    /// How rangers walk to the cells: Stage's path for a sensor's range among the regions it
+    /// walks (see [`NearbyBoxes::walked_in`]).
+    scene: Option<RayScene>,
 }
 
 impl<'a> NearbyBoxes<'a> {
@@ -216,6 +232,7 @@ impl<'a> NearbyBoxes<'a> {
             cells: Vec::new(),
             index: Some(index),
             asked: Some(((x, y, reach), near)),
+            scene: None,
         }
     }
 
@@ -249,6 +266,20 @@ impl<'a> NearbyBoxes<'a> {
         }
         self.cells = self.boxes.iter().map(|_| OnceCell::new()).collect();
         self
+    }
+
+    /// Rays walk to the boxes' cells along the path Stage's rays take in `scene` (see
+    /// `sim/raster_walk.rs`).
+    pub(super) fn walked_in(mut self, scene: RayScene) -> Self {
+        self.scene = Some(scene);
+        self
+    }
+
+    /// Holds in `regions` those of Stage's raster of `resolution` the boxes' cells lie in.
+    pub(super) fn hold_regions(&self, resolution: f64, regions: &mut RegionMap) {
+        for b in &self.boxes {
+            b.placed().add_regions(resolution, regions);
+        }
     }
 
     /// Where box `k`'s cells are drawn; `None` unless [`NearbyBoxes::on_raster`].
@@ -290,7 +321,13 @@ impl<'a> NearbyBoxes<'a> {
         let listed = candidates
             .iter()
             .map(|&k| (&self.boxes[k as usize], self.drawn(k as usize)));
-        nearest_of(listed.filter(|(b, _)| counts(b)), (x, y), (dx, dy), max)
+        nearest_of(
+            listed.filter(|(b, _)| counts(b)),
+            self.scene.as_ref(),
+            (x, y),
+            (dx, dy),
+            max,
+        )
     }
 
     /// The nearest box along the ray from `(x, y)` at `angle`, within `max`: (distance, box).
@@ -327,6 +364,7 @@ impl<'a> NearbyBoxes<'a> {
                 .enumerate()
                 .map(|(k, b)| (b, self.drawn(k)))
                 .filter(|(b, _)| counts(b)),
+            self.scene.as_ref(),
             (x, y),
             (dx, dy),
             max,
@@ -346,7 +384,7 @@ impl<'a> NearbyBoxes<'a> {
             .iter()
             .filter(move |b| b.may_hit(x, y, dx, dy, max))
             .filter_map(move |b| {
-                b.hit(None, x, y, dx, dy)
+                b.hit(None, None, x, y, dx, dy)
                     .filter(|&d| d <= max)
                     .map(|d| (d, b))
             })
@@ -357,6 +395,7 @@ impl<'a> NearbyBoxes<'a> {
 /// `max`; each box's cheap bounding test is made against the nearest hit so far.
 fn nearest_of<'b, 'a: 'b>(
     boxes: impl Iterator<Item = (&'b SolidBox<'a>, Option<Drawn<'b>>)>,
+    scene: Option<&RayScene>,
     (x, y): (f64, f64),
     (dx, dy): (f64, f64),
     max: f64,
@@ -367,7 +406,7 @@ fn nearest_of<'b, 'a: 'b>(
         if !b.may_hit(x, y, dx, dy, limit) {
             continue;
         }
-        if let Some(d) = b.hit(cells, x, y, dx, dy).filter(|&d| d <= limit) {
+        if let Some(d) = b.hit(cells, scene, x, y, dx, dy).filter(|&d| d <= limit) {
             best = Some((d, b));
         }
     }

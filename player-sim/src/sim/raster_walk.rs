@@ -1,258 +1,333 @@
-//! A ray walked through the [`WallRaster`]: cell by cell near walls, and in jumps across open
-//! space — a cell `d` cells from the nearest wall lets the ray move `d - 1` cells along its
-//! longer axis at once without passing any wall cell. The first wall cell the ray enters is the
-//! one a cell-by-cell walk would find; the jumps only skip cells known to be free.
+//! A ray walked through the raster's cells along the path Stage 4.3's rays take, so that a ray
+//! grazing a wall's corner, a chair's leg or another robot's cells meets them or misses them
+//! as in Stage.
 //!
-//! The distance read is Stage's too, within its resolution: Stage counts a ray's length in
-//! whole cells along the axis it moves along the more, so a wall entered across that axis
-//! reads at the first whole step past its face (on average half a cell farther than the face).
+//! Stage's path is not the straight line's cells. Stage scales the ray's whole length (the
+//! sensor's range, in cells) along each axis and truncates both to whole cells, and from the
+//! cell the ray starts in it steps one column or one row at a time in the order those two
+//! counts give (a column while the error term is negative, else a row): the cells of a line
+//! of that slope from the start cell's middle, whatever the start's place within the cell. It
+//! takes that many steps in all, no more. Which cell a point is in is its coordinates (in
+//! cells) truncated towards zero, while walls and bodies are marked in floored cells: west and
+//! south of the origin a ray looks into the cell beside the one a point lies in.
 //!
-//! Which cell a point lies in follows Stage's rays: Stage finds a ray's cell by truncating its
-//! coordinates (in cells) towards zero, while it floors the corners of the walls it marks, so
-//! that west and south of the origin a ray meets a wall one cell before the cell the wall was
-//! marked in. Matching that keeps readings there within a cell of Stage's instead of two.
+//! Stage keeps its cells in regions of 32 × 32 ([`regions`]). A region where nothing is marked
+//! is not walked: the ray moves to where the straight line through its current point (not
+//! the stepped path's middle) crosses into the next region along the way it heads, and walks
+//! on from the cell there with the stepping error it had. That crossing is measured from the
+//! region's corner as Stage measures it: heading west or south, one cell past the region's
+//! edge. Within a region the steps move the cell looked into, not the point: a path crossing
+//! the origin's row or column inside a region keeps stepping from the cell it was in, and only
+//! the next region's first cell is the point's again. The distance read is counted along the
+//! axis with more steps, from the start to the point reached, so a wall entered across that
+//! axis reads in whole cells walked.
+//!
+//! A region holds something when a wall's cell lies in it ([`WallRaster`]'s) or a body's (the
+//! robots, obstacles and mounted bodies within the sensor's range, its own robot among them,
+//! listed once a scan). Checked against Stage 4.3 itself (libstage's own raytrace, in its
+//! cave with its raster): 1 490 of 1 500 random rays read the same to the nanometre, and the
+//! other ten met a robot the check left out.
+//!
+//! For speed the walk still jumps across open space: where the cell it is in is `d` cells from
+//! any solid cell the way it heads, every cell of the stepped path within `d - 1` columns and
+//! rows ahead is free, and the path's place after those is computed at once from the stepping
+//! error ([`free_steps`]) rather than cell by cell. Both walks visit the same cells.
+
+mod regions;
+
+pub(super) use regions::{Both, Listed, Nowhere, RegionMap, Regions, region_of};
 
 use super::wall_raster::{WallRaster, quadrant};
-use crate::world::floor_i64;
 
 /// Cells a ray walks through: how far it may jump from a cell (0 on a solid cell).
 pub(super) trait Cells {
-    /// Cells per metre.
-    fn per_metre(&self) -> f64;
     /// The free square of global cell `(x, y)` for a ray heading into quarter `q` (see
-    /// [`WallRaster`]): 0 on a solid cell; a ray may move that many cells less one along its
-    /// longer axis without entering a solid one.
+    /// [`WallRaster`]): 0 on a solid cell; the cells within that many less one columns and
+    /// rows that way are free.
     fn ahead(&self, x: i64, y: i64, q: usize) -> u32;
 }
 
 impl Cells for WallRaster {
-    #[inline]
-    fn per_metre(&self) -> f64 {
-        self.per_metre
-    }
-
     #[inline]
     fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
         WallRaster::ahead(self, x, y, q)
     }
 }
 
-/// The cell Stage's ray looks into for a point in floored cell `k` (see the module's note).
-#[inline]
-fn looked_into(k: i64) -> i64 {
-    if k < 0 { k + 1 } else { k }
-}
-
-/// Clearances below this are walked cell by cell.
+/// Free squares below this are walked cell by cell.
 const JUMP_FROM: u32 = 2;
 
 impl WallRaster {
-    /// Distance from `(x, y)` along the unit direction `(dx, dy)` to where the ray enters the
-    /// first wall cell, if within `max` (0 when it starts in one).
+    /// Distance from `(x, y)` along the unit direction `(dx, dy)` to where a ray of a sensor
+    /// reaching `max` meets the first wall cell on Stage's path, if it does (0 when it starts
+    /// in one), with only the walls' regions walked.
     pub fn cast(&self, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<f64> {
-        walk(self, x, y, dx, dy, max)
+        self.cast_among(x, y, dx, dy, max, self.regions())
+    }
+
+    /// [`WallRaster::cast`] walking the regions `regions` holds (the walls' and the bodies'
+    /// about the sensor, its own robot's among them: Stage walks every region a body's cells
+    /// lie in).
+    pub(super) fn cast_among(
+        &self,
+        x: f64,
+        y: f64,
+        dx: f64,
+        dy: f64,
+        max: f64,
+        regions: &RegionMap,
+    ) -> Option<f64> {
+        let ray = Ray::new(self.per_metre, (x, y), (dx, dy), max)?;
+        walk(self, regions, &ray, max)
     }
 }
 
-/// Distance from `(x, y)` along the unit direction `(dx, dy)` to where the ray enters the
-/// first solid cell of `cells`, if within `max` (0 when it starts in one).
-pub(super) fn walk<C: Cells>(cells: &C, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<f64> {
-    let per_metre = cells.per_metre();
-    let (gx, gy) = (x * per_metre, y * per_metre);
-    let reach = max * per_metre;
-    if !(gx.is_finite() && gy.is_finite() && reach >= 0.0 && dx.is_finite() && dy.is_finite()) {
-        return None;
-    }
-    if dx == 0.0 && dy == 0.0 {
-        let k = (looked_into(floor_i64(gx)), looked_into(floor_i64(gy)));
-        return (cells.ahead(k.0, k.1, 0) == 0).then_some(0.0);
-    }
-    // Which axis the ray moves along the more, and how far per unit along the ray.
-    // A diagonal's tie (to rounding: its sine and cosine may differ in the last bit) goes
-    // to y, as a tie goes in Stage.
-    let x_longer = dx.abs() > dy.abs() + 1e-12;
-    let longer = if x_longer { dx.abs() } else { dy.abs() };
-    let q = quadrant(dx, dy);
-    let x_axis = Axis::new(gx, dx);
-    let y_axis = Axis::new(gy, dy);
-    // Along the ray, in cells: where the walk (re)starts.
-    let mut from = 0.0f64;
-    loop {
-        let (mut kx, mut next_x) = x_axis.start(from);
-        let (mut ky, mut next_y) = y_axis.start(from);
-        // Where the ray entered the cell it is in.
-        let mut entered = from;
-        // Whether the ray entered its cell across a face of the longer axis.
-        let mut across_longer = false;
-        loop {
-            let clear = cells.ahead(looked_into(kx), looked_into(ky), q);
-            if clear == 0 {
-                // Stage measures a ray in whole cells along its longer axis: through a
-                // face across that axis, the first whole step past it.
-                let walked = if across_longer {
-                    (entered * longer - 1e-9).ceil() / longer
-                } else {
-                    entered
-                };
-                return (walked <= reach).then_some(walked / per_metre);
-            }
-            if clear >= JUMP_FROM {
-                // Every cell whose looked-into cell is within `clear - 1` of this one's the
-                // way the ray heads is free: jump to just before the ray leaves them.
-                let d = i64::from(clear) - 1;
-                let free = x_axis.free(kx, d, entered).min(y_axis.free(ky, d, entered));
-                from = entered + free - 1e-9;
-                if from > reach {
-                    return None;
-                }
-                break;
-            }
-            // Through a corner (both faces at once, to rounding), the longer axis's face:
-            // so that a ray a hair to either side of the corner reads the same.
-            across_longer = if x_longer {
-                next_x <= next_y + 1e-9
-            } else {
-                next_y <= next_x + 1e-9
-            };
-            if next_x < next_y {
-                entered = next_x;
-                kx += x_axis.step;
-                next_x += x_axis.delta;
-            } else {
-                entered = next_y;
-                ky += y_axis.step;
-                next_y += y_axis.delta;
-            }
-            if entered > reach {
-                return None;
-            }
-        }
-    }
+/// A ray as Stage lays it out: its start in cells, its direction's cosine and sine (the sine
+/// of a ray due east is 1e-12, as Stage makes it), and the whole columns and rows its range
+/// spans, each with the way it steps.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Ray {
+    start: (f64, f64),
+    cos: f64,
+    sin: f64,
+    step: (i64, i64),
+    columns: i64,
+    rows: i64,
+    per_metre: f64,
 }
 
-/// A ray's motion along one axis, in cells: from `origin`, `d` per unit along the ray.
-struct Axis {
-    origin: f64,
-    d: f64,
-    /// `1 / |d|`: how far along the ray one cell of this axis is (infinite when `d` is 0).
-    delta: f64,
-    /// The cell index's step: +1 or -1.
-    step: i64,
-}
-
-impl Axis {
-    fn new(origin: f64, d: f64) -> Axis {
-        Axis {
-            origin,
-            d,
-            delta: 1.0 / d.abs(),
-            step: if d > 0.0 { 1 } else { -1 },
+impl Ray {
+    /// The ray from `(x, y)` metres along the unit `(dx, dy)` of a sensor reaching `range`, on
+    /// a raster of `per_metre` cells a metre; `None` for a ray that cannot be walked.
+    pub(super) fn new(
+        per_metre: f64,
+        (x, y): (f64, f64),
+        (dx, dy): (f64, f64),
+        range: f64,
+    ) -> Option<Ray> {
+        let start = (x * per_metre, y * per_metre);
+        let fine = [start.0, start.1, dx, dy, range]
+            .iter()
+            .all(|v| v.is_finite());
+        if !fine || range < 0.0 || (dx == 0.0 && dy == 0.0) {
+            return None;
         }
+        // Stage turns a ray at angle exactly 0 by 1e-12 to keep its tangent finite.
+        let sin = if dy == 0.0 && dx > 0.0 { 1e-12 } else { dy };
+        let (along_x, along_y) = (per_metre * range * dx, per_metre * range * sin);
+        let sign = |v: f64| if v < 0.0 { -1 } else { 1 };
+        Some(Ray {
+            start,
+            cos: dx,
+            sin,
+            step: (sign(along_x), sign(along_y)),
+            columns: along_x.abs() as i64,
+            rows: along_y.abs() as i64,
+            per_metre,
+        })
     }
 
-    /// The floored cell at `t` along the ray, and where along the ray it leaves that cell.
-    #[inline]
-    fn start(&self, t: f64) -> (i64, f64) {
-        let p = self.origin + t * self.d;
-        let k = floor_i64(p);
-        if self.d == 0.0 {
-            return (k, f64::INFINITY);
-        }
-        let edge = (k + i64::from(self.d > 0.0)) as f64;
-        (k, t + (edge - p).abs() * self.delta)
-    }
-
-    /// How far along the ray, from `t` (in floored cell `k`), the ray stays among the cells
-    /// whose looked-into cell is within `reach` of `k`'s.
-    #[inline]
-    fn free(&self, k: i64, reach: i64, t: f64) -> f64 {
-        let m = looked_into(k);
-        let p = self.origin + t * self.d;
-        if self.d > 0.0 {
-            // The last floored cell looked into as `m + reach` or nearer: the ray leaves it
-            // at its upper edge.
-            let v = m + reach;
-            let last = if v >= 0 { v } else { v - 1 };
-            ((last + 1) as f64 - p) * self.delta
-        } else if self.d < 0.0 {
-            let u = m - reach;
-            let first = if u >= 1 { u } else { u - 1 };
-            (p - first as f64) * self.delta
+    /// Metres from the start to `(x, y)` cells, counted along the axis with more steps.
+    fn distance(&self, (x, y): (f64, f64)) -> f64 {
+        let cells = if self.columns > self.rows {
+            ((x - self.start.0) / self.cos).abs()
         } else {
-            f64::INFINITY
+            ((y - self.start.1) / self.sin).abs()
+        };
+        cells / self.per_metre
+    }
+}
+
+/// The cell a point `v` (in cells) is looked up in: truncated towards zero.
+#[inline]
+fn cell_of(v: f64) -> i64 {
+    v as i64
+}
+
+/// Distance along `ray` to the first solid cell of `cells` on Stage's path, walking the
+/// regions `regions` holds cell by cell and jumping the others; `None` when the path ends
+/// first or passes `stop` metres.
+pub(super) fn walk<C: Cells, R: Regions>(
+    cells: &C,
+    regions: &R,
+    ray: &Ray,
+    stop: f64,
+) -> Option<f64> {
+    let (sx, sy) = ray.step;
+    let (ax, ay) = (ray.columns, ray.rows);
+    let q = quadrant(sx as f64, sy as f64);
+    let mut at = ray.start;
+    let mut error = ay - ax;
+    let mut left = ax + ay;
+    let mut crossings: Option<Crossings> = None;
+    while left > 0 {
+        let (mut cx, mut cy) = (cell_of(at.0), cell_of(at.1));
+        let region = (region_of(cx), region_of(cy));
+        if regions.populated(region.0, region.1) {
+            crossings = None;
+            // Steps left within this region along each axis.
+            let room = |c: i64, r: i64, s: i64| if s > 0 { r * 32 + 31 - c } else { c - r * 32 };
+            loop {
+                let clear = cells.ahead(cx, cy, q);
+                if clear == 0 {
+                    let d = ray.distance(at);
+                    return (d <= stop).then_some(d);
+                }
+                let (room_x, room_y) = (room(cx, region.0, sx), room(cy, region.1, sy));
+                let (mut i, mut j) = (0, 0);
+                if clear >= JUMP_FROM {
+                    let d = i64::from(clear) - 1;
+                    (i, j) = free_steps(error, ax, ay, d, d);
+                    // Past this region only into regions Stage walks too, and only while the
+                    // cell stepped is the point's (Stage looks the cell up again there).
+                    let to = (cx + sx * i, cy + sy * j);
+                    let same = |a: f64, b: f64| !(a < 0.0 && b > 0.0 || a > 0.0 && b < 0.0);
+                    let through = (i <= room_x && j <= room_y)
+                        || ((cx, cy) == (cell_of(at.0), cell_of(at.1))
+                            && same(at.0, at.0 + (sx * i) as f64)
+                            && same(at.1, at.1 + (sy * j) as f64)
+                            && all_held(regions, region, (region_of(to.0), region_of(to.1))));
+                    if !through {
+                        (i, j) = free_steps(error, ax, ay, d.min(room_x), d.min(room_y));
+                    }
+                    if i + j >= left {
+                        return None;
+                    }
+                }
+                if i + j == 0 {
+                    (i, j) = if error < 0 { (1, 0) } else { (0, 1) };
+                }
+                error += 2 * ay * i - 2 * ax * j;
+                left -= i + j;
+                (cx, cy) = (cx + sx * i, cy + sy * j);
+                at = (at.0 + (sx * i) as f64, at.1 + (sy * j) as f64);
+                if left <= 0 || i > room_x || j > room_y {
+                    break;
+                }
+            }
+        } else {
+            let c = crossings.get_or_insert_with(|| Crossings::new(ray, at));
+            let (to, moved) = c.next()?;
+            at = to;
+            left = (left as f64 - moved) as i64;
+        }
+        if ray.distance(at) > stop {
+            return None;
+        }
+    }
+    None
+}
+
+/// Do `regions` hold every region from `a` to `b` (corners of a rectangle of regions)?
+fn all_held<R: Regions>(regions: &R, a: (i64, i64), b: (i64, i64)) -> bool {
+    let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
+    let (y0, y1) = (a.1.min(b.1), a.1.max(b.1));
+    (y0..=y1).all(|y| (x0..=x1).all(|x| regions.populated(x, y)))
+}
+
+/// The longest start of the stepping pattern from error `error` (a column while it is
+/// negative, else a row; a column adds `2 * rows`, a row takes `2 * columns`) that moves at
+/// most `most_x` columns and `most_y` rows: how many of each it moves.
+fn free_steps(error: i64, columns: i64, rows: i64, most_x: i64, most_y: i64) -> (i64, i64) {
+    if columns == 0 {
+        // The error never falls below 0: rows only.
+        return (0, most_y);
+    }
+    // The rows moved before the column after `i` columns: until the error falls below 0.
+    let rows_before = |i: i64| {
+        let e = error + 2 * rows * i;
+        if e < 0 {
+            0
+        } else {
+            e.div_euclid(2 * columns) + 1
+        }
+    };
+    // Column `i` (≥ 1) is reached while no more than `most_y` rows have been moved:
+    // error + 2 * rows * (i - 1) < 2 * columns * most_y. With no more rows than columns and as
+    // many of each allowed, that holds for every column allowed (the error is below
+    // 2 * rows): no division.
+    if rows <= columns && most_x <= most_y {
+        return (most_x, rows_before(most_x).min(most_y));
+    }
+    let room = 2 * columns * most_y - error;
+    let i = if rows == 0 {
+        if room > 0 { most_x } else { 0 }
+    } else {
+        // The largest i with 2 * rows * (i - 1) < room: ceil(room / (2 * rows)).
+        (-(-room).div_euclid(2 * rows)).clamp(0, most_x)
+    };
+    (i, rows_before(i).min(most_y))
+}
+
+/// Where a ray crossing empty regions crosses into the next one, across a column of regions
+/// and across a row, and how far (in Stage's sum of the moves along both axes) each lies.
+struct Crossings {
+    across_x: (f64, f64),
+    across_y: (f64, f64),
+    to_x: f64,
+    to_y: f64,
+    /// From one crossing to the next of each kind, and its length.
+    jump_x: (f64, f64),
+    jump_y: (f64, f64),
+    length_x: f64,
+    length_y: f64,
+}
+
+impl Crossings {
+    /// The crossings ahead of `at`, on the line through it along `ray`.
+    fn new(ray: &Ray, at: (f64, f64)) -> Crossings {
+        let (sx, sy) = (ray.step.0 as f64, ray.step.1 as f64);
+        let tan = ray.sin / ray.cos;
+        let corner = |v: f64| (region_of(cell_of(v)) * 32) as f64;
+        // Heading west or south, Stage aims a cell past the region's edge.
+        let towards = |v: f64, s: f64| {
+            if s < 0.0 {
+                corner(v) - v - 1.0
+            } else {
+                corner(v) + 32.0 - v
+            }
+        };
+        let x_move = towards(at.0, sx);
+        let y_move = towards(at.1, sy);
+        let (x_rise, y_run) = (x_move * tan, y_move / tan);
+        let jump_x = (sx * 32.0, sx * 32.0 * tan);
+        let jump_y = (sy * 32.0 / tan, sy * 32.0);
+        Crossings {
+            across_x: (at.0 + x_move, at.1 + x_rise),
+            across_y: (at.0 + y_run, at.1 + y_move),
+            to_x: x_move.abs() + x_rise.abs(),
+            to_y: y_run.abs() + y_move.abs(),
+            jump_x,
+            jump_y,
+            length_x: jump_x.0.abs() + jump_x.1.abs(),
+            length_y: jump_y.0.abs() + jump_y.1.abs(),
+        }
+    }
+
+    /// The nearer crossing and how far it is, the next of its kind set up; `None` when neither
+    /// can be reached.
+    fn next(&mut self) -> Option<((f64, f64), f64)> {
+        if self.to_x < self.to_y {
+            let reached = (self.across_x, self.to_x);
+            self.across_x = (
+                self.across_x.0 + self.jump_x.0,
+                self.across_x.1 + self.jump_x.1,
+            );
+            self.to_y -= self.to_x;
+            self.to_x = self.length_x;
+            (reached.1 > 0.0).then_some(reached)
+        } else {
+            let reached = (self.across_y, self.to_y);
+            self.across_y = (
+                self.across_y.0 + self.jump_y.0,
+                self.across_y.1 + self.jump_y.1,
+            );
+            self.to_x -= self.to_y;
+            self.to_y = self.length_y;
+            (reached.1 > 0.0).then_some(reached)
         }
     }
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::sim::test_randoms::randoms;
-    use crate::world::OccupancyGrid;
-
-    /// The first wall cell along the ray by marching in steps of a thousandth of a cell.
-    fn marched(r: &WallRaster, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<f64> {
-        let (gx, gy) = (x * r.per_metre, y * r.per_metre);
-        let steps = (max * r.per_metre * 1000.0) as usize;
-        (0..=steps).map(|k| k as f64 / 1000.0).find_map(|t| {
-            let (cx, cy) = (floor_i64(gx + t * dx), floor_i64(gy + t * dy));
-            r.is_wall(looked_into(cx), looked_into(cy))
-                .then_some(t / r.per_metre)
-        })
-    }
-
-    #[test]
-    fn jumps_find_the_wall_cell_a_march_finds() {
-        // Pillars, a wall and lone cells in a 6 x 6 m hall of 0.2 m cells, around the origin
-        // (where Stage's rays look into the cell beside the marked one).
-        let mut rows = vec![String::from("##############################")];
-        for r in 1..29 {
-            let mut row: Vec<u8> = b"#............................#".to_vec();
-            if (5..20).contains(&r) {
-                row[17] = b'#';
-            }
-            if r % 7 == 0 {
-                row[(r * 5) % 27 + 1] = b'#';
-            }
-            rows.push(String::from_utf8(row).unwrap());
-        }
-        rows.push(rows[0].clone());
-        let rows: Vec<&str> = rows.iter().map(String::as_str).collect();
-        let mut world = crate::world::World::default();
-        world.resolution = 0.05;
-        world.floor = Some(OccupancyGrid::from_rows(&rows, 0.2, (-3.0, -3.0)));
-        world.floorplan = Some(crate::world::Floorplan {
-            bitmap: Default::default(),
-            size: [6.0, 6.0],
-            centre: [0.0, 0.0],
-            height: 1.0,
-            color: [0, 0, 0],
-        });
-        let raster = WallRaster::of(&world).expect("walls");
-        let mut next = randoms(0x5A57E4);
-        let mut hits = 0;
-        for _ in 0..400 {
-            let (x, y) = (5.6 * next() - 2.8, 5.6 * next() - 2.8);
-            let (dy, dx) = (std::f64::consts::TAU * next()).sin_cos();
-            let max = 1.0 + 6.0 * next();
-            let want = marched(&raster, x, y, dx, dy, max);
-            let got = raster.cast(x, y, dx, dy, max);
-            hits += usize::from(got.is_some());
-            // Stage's reading: at the face, or the first whole cell past it along the ray's
-            // longer axis.
-            let step = 1.0 / dx.abs().max(dy.abs()) / raster.per_metre;
-            match (want, got) {
-                (Some(a), Some(b)) => {
-                    assert!(
-                        b > a - 1e-4 && b < a + step + 1e-4,
-                        "{a} {b} from ({x}, {y})"
-                    )
-                }
-                // A whole step past a wall near the end of the reach may leave it.
-                (Some(a), None) => assert!(a + step > max - 1e-4, "{a} from ({x}, {y})"),
-                (None, b) => assert_eq!(b, None, "from ({x}, {y})"),
-            }
-        }
-        assert!(hits > 200, "{hits}");
-    }
-}
+mod tests;

@@ -12,12 +12,15 @@ use std::sync::{Arc, Mutex};
 
 use super::Simulation;
 use super::beams::{BeamBoxes, Fan};
+use super::box_cells::RayScene;
 use super::directions::Directions;
 use super::nearby::NearbyBoxes;
+use super::raster_walk::RegionMap;
 use super::sensors::walls_reach;
 use super::wall_beams::WallBeams;
 use super::wall_free::beams_meeting;
 use super::wall_raster::WallRaster;
+use crate::world::floor_i64;
 use crate::world::{OccupancyGrid, Pose};
 
 /// What a beam hit: its distance, and the `ranger_return` of the thing hit.
@@ -32,9 +35,18 @@ pub(super) enum Walls<'a> {
 }
 
 impl Walls<'_> {
-    pub(super) fn cast(self, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<f64> {
+    /// The walls along the ray; on the raster, Stage's path through `regions`.
+    pub(super) fn cast(
+        self,
+        x: f64,
+        y: f64,
+        dx: f64,
+        dy: f64,
+        max: f64,
+        regions: &RegionMap,
+    ) -> Option<f64> {
         match self {
-            Walls::Raster(raster) => raster.cast(x, y, dx, dy, max),
+            Walls::Raster(raster) => raster.cast_among(x, y, dx, dy, max, regions),
             Walls::Grid(grid) => grid.raycast_along(x, y, dx, dy, max).map(|(d, _)| d),
         }
     }
@@ -77,19 +89,45 @@ fn walls_seen(
     })
 }
 
-/// The boxes a sensor at `at` sees within `reach` at height `z`, and each beam's share of them.
+/// How a sensor at `at` reaching `reach` walks its rays (`sim/raster_walk.rs`): the regions of
+/// Stage's raster within its reach that hold a wall or a body (its own robot and what that
+/// carries among them). Stage walks those regions cell by cell, so its rays' paths depend on
+/// them.
+pub(super) fn ray_scene(sim: &Simulation, at: (f64, f64), reach: f64) -> RayScene {
+    let resolution = sim.world.resolution;
+    let span = |v: f64, s: f64| floor_i64((v + s * reach) / resolution) + 64 * s as i64;
+    let (low, high) = (
+        (span(at.0, -1.0), span(at.1, -1.0)),
+        (span(at.0, 1.0), span(at.1, 1.0)),
+    );
+    let mut regions = RegionMap::over(low, high);
+    if let Some(raster) = sim.wall_raster() {
+        regions.hold_all(raster.regions());
+    }
+    NearbyBoxes::around(sim, None, at.0, at.1, reach)
+        .with_mounted(sim, None, at, reach)
+        .hold_regions(resolution, &mut regions);
+    RayScene {
+        range: reach,
+        regions,
+    }
+}
+
+/// The boxes a sensor at `at` sees within `reach` at height `z`, and each beam's share of them;
+/// rays walk to them as in `scene`.
 fn boxes_within<'a>(
     sim: &'a Simulation,
     robot: usize,
-    at: (f64, f64),
-    reach: f64,
+    (at, reach): ((f64, f64), f64),
     fan: Fan,
     z: f64,
+    scene: RayScene,
 ) -> (NearbyBoxes<'a>, BeamBoxes) {
     let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, reach)
         .with_mounted(sim, Some(robot), at, reach)
         .reaching(z)
-        .on_raster(sim.world.resolution);
+        .on_raster(sim.world.resolution)
+        .walked_in(scene);
     let by_beam = BeamBoxes::new(&boxes, at.0, at.1, fan);
     (boxes, by_beam)
 }
@@ -111,8 +149,10 @@ pub(super) fn caster(
         .flatten();
     let (walls, wall_beams) = seen.map_or((None, None), |(walls, beams)| (Some(walls), beams));
     let directions = sim.fan_directions.of(robot, fan);
+    let scene = ray_scene(sim, at, max);
+    let regions = scene.regions.clone();
     let wall_along =
-        move |(dx, dy): (f64, f64)| walls.and_then(|w| w.cast(at.0, at.1, dx, dy, max));
+        move |(dx, dy): (f64, f64)| walls.and_then(|w| w.cast(at.0, at.1, dx, dy, max, &regions));
     let fan_walls: Vec<Option<f64>> = (0..fan.count)
         .map(|beam| {
             let may_meet = wall_beams.as_ref().is_none_or(|w| w[beam]);
@@ -126,7 +166,7 @@ pub(super) fn caster(
         .iter()
         .try_fold(0.0f64, |far, wall| wall.map(|d| far.max(d)))
         .map_or(max, |far| far.min(max));
-    let (boxes, by_beam) = boxes_within(sim, robot, at, reach, fan, z);
+    let (boxes, by_beam) = boxes_within(sim, robot, (at, reach), fan, z, scene.clone());
     let everything = OnceCell::new();
     let floor_return = sim.world.floor_ranger_return;
     move |beam, angle| {
@@ -135,8 +175,8 @@ pub(super) fn caster(
         let (wall, boxes, ahead) = if nominal {
             (fan_walls[beam], &boxes, by_beam.of(beam))
         } else {
-            let (all, by_beam) =
-                everything.get_or_init(|| boxes_within(sim, robot, at, max, fan, z));
+            let (all, by_beam) = everything
+                .get_or_init(|| boxes_within(sim, robot, (at, max), fan, z, scene.clone()));
             // Turned off its fan's direction: walked whether or not the fan's beam may meet
             // a wall.
             (wall_along(direction), all, by_beam.of(beam))

@@ -2,7 +2,9 @@
 //! robots; fiducial markers within range, field of view and line of sight.
 
 use super::beams::Fan;
-use super::scan_caster::{Hit, caster};
+use super::box_cells::RayScene;
+use super::directions::Directions;
+use super::scan_caster::{Hit, caster, ray_scene};
 use super::{GroundBox, Simulation, wrap};
 use crate::world::{FiducialSpec, Pose, RangerSpec, slice_at};
 
@@ -31,25 +33,35 @@ pub(super) fn walls_reach(sim: &Simulation, z: f64) -> bool {
     (0.0..=sim.world.floor_height).contains(&z)
 }
 
-/// Distance to the floorplan's walls along a ray, up to `max`.
-fn floor_distance(sim: &Simulation, x: f64, y: f64, angle: f64, max: f64) -> Option<f64> {
-    let (dy, dx) = angle.sin_cos();
+/// Distance to the floorplan's walls along a ray, up to `scene`'s range, on Stage's path
+/// through `scene`'s regions.
+fn floor_distance(
+    sim: &Simulation,
+    x: f64,
+    y: f64,
+    (angle, (dx, dy)): (f64, (f64, f64)),
+    scene: &RayScene,
+) -> Option<f64> {
+    let max = scene.range;
     match sim.wall_raster() {
-        Some(raster) => raster.cast(x, y, dx, dy, max),
+        Some(raster) => raster.cast_among(x, y, dx, dy, max, &scene.regions),
         None => sim.world.floor.as_ref()?.raycast(x, y, angle, max),
     }
 }
 
 /// The same distance by testing every box: the unpruned reference the pruned cast is tested
-/// against and the benchmark's baseline (for worlds where rangers see everything).
+/// against and the benchmark's baseline (for worlds where rangers see everything). The beam's
+/// direction is the scan's own (`Directions`): Stage's stepped path turns on its last bits.
 fn cast_exhaustive(
     sim: &Simulation,
     from: usize,
     (x, y, z): (f64, f64, f64),
-    angle: f64,
-    max: f64,
+    (angle, direction): (f64, (f64, f64)),
+    scene: &RayScene,
 ) -> Option<f64> {
-    let floor = floor_distance(sim, x, y, angle, max).filter(|_| walls_reach(sim, z));
+    let max = scene.range;
+    let floor =
+        floor_distance(sim, x, y, (angle, direction), scene).filter(|_| walls_reach(sim, z));
     // The boxes in boxes_except's order (robots, then obstacles), with their heights and
     // their blocks by height.
     let robots = (0..sim.robots.len()).filter(|&i| i != from).map(|i| {
@@ -70,7 +82,12 @@ fn cast_exhaustive(
             if !slices.is_empty() {
                 b.shape = &slice_at(slices, z)?.shape;
             }
-            b.raycast_cells(sim.world.resolution, x, y, angle)
+            b.raycast_cells_in(
+                sim.world.resolution,
+                (x, y),
+                (angle, direction),
+                Some(scene),
+            )
         });
     let mounted = (0..sim.robots.len())
         .filter(|&i| i != from)
@@ -89,7 +106,12 @@ fn cast_exhaustive(
                 width: m.size[1],
                 shape: &m.shape,
             };
-            body.raycast_cells(sim.world.resolution, x, y, angle)
+            body.raycast_cells_in(
+                sim.world.resolution,
+                (x, y),
+                (angle, direction),
+                Some(scene),
+            )
         });
     floor
         .into_iter()
@@ -123,9 +145,13 @@ pub fn ranger_returns(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Ra
 
 /// [`ranger_scan`] testing every box against every beam (no pruning): the reference.
 pub fn ranger_scan_exhaustive(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> Vec<f64> {
-    let scan = scan_with(sim, robot, ranger, |origin, max, _, z| {
-        move |_, angle| {
-            cast_exhaustive(sim, robot, (origin.x, origin.y, z), angle, max).map(|d| (d, 1.0))
+    let scan = scan_with(sim, robot, ranger, |origin, max, fan, z| {
+        let directions = Directions::of(fan);
+        let scene = ray_scene(sim, (origin.x, origin.y), max);
+        move |i, angle| {
+            let along = (angle, directions.of_beam(i, angle));
+            let at = (origin.x, origin.y, z);
+            cast_exhaustive(sim, robot, at, along, &scene).map(|d| (d, 1.0))
         }
     });
     scan.ranges

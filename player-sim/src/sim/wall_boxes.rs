@@ -8,19 +8,21 @@
 //! the sensor's reach: nearly every beam walked meets its wall.
 //!
 //! A point of a ray lies in floored cell `k`, and the walk looks into `k` or (west and south of
-//! the origin) `k + 1` (see `raster_walk.rs`): a wall cell `w` is found only from a point in
-//! cells `w - 1` to `w`, within the reach. Widened by [`MARGIN`] cells all round (more than
-//! that one cell, so that a walk tracing Stage's cell path a cell off the line is covered too)
-//! and cut to the disc of the reach plus the margin, a box's directions from the sensor hold
-//! every beam that may find one of its cells. The other beams meet no wall: readings cannot
+//! the origin) `k + 1` (see `raster_walk.rs`), on Stage's stepped path, which strays up to
+//! [`PATH_SLACK`] cells from the ray's line: a wall cell `w` is found only from a line passing
+//! within that many cells and one of it, within the reach. Widened by [`MARGIN`] cells all
+//! round and cut to the disc of the reach plus the margin, a box's directions from the sensor
+//! hold every beam that may find one of its cells. The other beams meet no wall: readings cannot
 //! change (tested against the walk below).
 
 use super::beams::{Fan, beams_spanning};
+use super::wall_free::PATH_SLACK;
 use super::wall_raster::WallRaster;
 use super::wrap;
 
-/// Cells each box is widened by on every side, and the reach beyond the sensor's.
-const MARGIN: f64 = 3.0;
+/// Cells each box is widened by on every side, and the reach beyond the sensor's: the path's
+/// stray, the cell beside a point's and a hair more.
+const MARGIN: f64 = (PATH_SLACK + 2) as f64;
 
 /// Side of the buckets the boxes are listed in, in cells (5 m at 2 cm).
 const BUCKET: i64 = 256;
@@ -119,6 +121,11 @@ impl WallBoxes {
     }
 
     /// How many boxes there are.
+    /// Every box, merged.
+    pub(super) fn all(&self) -> &[CellBox] {
+        &self.boxes
+    }
+
     pub(super) fn len(&self) -> usize {
         self.boxes.len()
     }

@@ -16,9 +16,16 @@ use super::beams::{Fan, beams_spanning};
 use super::wall_raster::WallRaster;
 use crate::world::floor_i64;
 
-/// Cells past the reach that a ray's walk may look into: the cell a point lies in, and the
-/// cell beside it that Stage's rays look into west and south of the origin, with a hair more.
-const MARGIN: i64 = 3;
+/// Cells past the reach that a ray's walk may look into: the cell a point lies in, the cell
+/// beside it that Stage's rays look into west and south of the origin, and the cells Stage's
+/// stepped path strays from the line (`PATH_SLACK`).
+const MARGIN: i64 = 2 + PATH_SLACK;
+
+/// How many cells Stage's stepped path may stray from a ray's line, rounded up
+/// (`sim/raster_walk.rs`): the start cell's middle is up to 0.71 cells off the start, the steps
+/// half a cell off their line, and the steps' slope, from whole cells of the range, up to a cell
+/// off at the range's end.
+pub(super) const PATH_SLACK: i64 = 3;
 
 /// How many times the square is split in quarters: at most 1 + 4 + 16 + 64 clearances read.
 const DEPTH: u32 = 3;
@@ -88,9 +95,13 @@ impl WallRaster {
             return true;
         }
         if depth == 0 {
-            // The cells from `low` to `high`, and a cell more all round, within this circle.
-            let (x0, y0) = ((low.0 - 1) as f64, (low.1 - 1) as f64);
-            let (x1, y1) = ((high.0 + 2) as f64, (high.1 + 2) as f64);
+            // The cells from `low` to `high`, and as far all round as a path may stray, within
+            // this circle.
+            let (x0, y0) = ((low.0 - PATH_SLACK) as f64, (low.1 - PATH_SLACK) as f64);
+            let (x1, y1) = (
+                (high.0 + 1 + PATH_SLACK) as f64,
+                (high.1 + 1 + PATH_SLACK) as f64,
+            );
             let radius = (x1 - x0).hypot(y1 - y0) / 2.0;
             parts.push((
                 (x0 + x1) / 2.0 * self.resolution,

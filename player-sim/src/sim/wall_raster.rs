@@ -54,6 +54,8 @@ pub struct WallRaster {
     /// For a large raster of few walls, the values of `clearance` and `ahead` (then empty) in
     /// tiles, worked out when first read.
     tiles: Option<WallTiles>,
+    /// Stage's regions holding a wall cell (`sim/raster_walk.rs`), worked out on the first ray.
+    pub(super) region_map: std::sync::OnceLock<super::raster_walk::RegionMap>,
 }
 
 /// Every cell of a 4-connected line from cell `a` to cell `b`, both ends included, as Stage
@@ -95,7 +97,15 @@ impl WallRaster {
         }
         let mut marks: Vec<(i64, i64, i64, i64)> = Vec::new();
         let cell = |v: f64| floor_i64(v * per_metre);
-        if let (Some(grid), Some(_)) = (&world.floor, &world.floorplan) {
+        // An unrotated bitmap's own pixels, their edges where Stage puts them (`StageBitmap`);
+        // else the floor grid's.
+        let placed = world.floor_bitmap.as_deref();
+        let grid = placed.map(|b| &b.pixels).or(world.floor.as_ref());
+        if let (Some(grid), Some(_)) = (grid, &world.floorplan) {
+            let edge_x =
+                |c: usize| placed.map_or(grid.origin.0 + c as f64 * grid.cell.0, |b| b.x(c));
+            let edge_y =
+                |r: usize| placed.map_or(grid.origin.1 + r as f64 * grid.cell.1, |b| b.y(r));
             let wall = |column: usize, row: usize| {
                 grid.occupied_at(
                     grid.origin.0 + (column as f64 + 0.5) * grid.cell.0,
@@ -114,10 +124,8 @@ impl WallRaster {
                     while column < grid.width && wall(column, row) {
                         column += 1;
                     }
-                    let x0 = grid.origin.0 + start as f64 * grid.cell.0;
-                    let x1 = grid.origin.0 + column as f64 * grid.cell.0;
-                    let y0 = grid.origin.1 + row as f64 * grid.cell.1;
-                    let y1 = grid.origin.1 + (row + 1) as f64 * grid.cell.1;
+                    let (x0, x1) = (edge_x(start), edge_x(column));
+                    let (y0, y1) = (edge_y(row), edge_y(row + 1));
                     marks.push((cell(x0), cell(y0), cell(x1), cell(y1)));
                 }
             }
@@ -157,6 +165,7 @@ impl WallRaster {
             ahead: Default::default(),
             boxes: Default::default(),
             tiles: None,
+            region_map: Default::default(),
         };
         let mut cells: Vec<CellBox> = marks
             .iter()
@@ -347,6 +356,23 @@ impl WallRaster {
         }
     }
 
+    /// Are its values in tiles, worked out when read (a large raster of few walls)?
+    pub(super) fn is_tiled(&self) -> bool {
+        self.tiles.is_some()
+    }
+
+    /// The raster's first and last global cells, each way.
+    pub(super) fn cell_bounds(&self) -> ((i64, i64), (i64, i64)) {
+        let last = |first: i64, n: usize| first + n as i64 - 1;
+        (
+            self.first,
+            (
+                last(self.first.0, self.width),
+                last(self.first.1, self.height),
+            ),
+        )
+    }
+
     /// Is global cell `(x, y)` a wall?
     pub fn is_wall(&self, x: i64, y: i64) -> bool {
         self.clearance(x, y) == 0
@@ -369,6 +395,7 @@ mod tests {
             ahead: Default::default(),
             boxes: Default::default(),
             tiles: None,
+            region_map: Default::default(),
         };
         for &(x, y) in cells {
             r.mark(x, y);

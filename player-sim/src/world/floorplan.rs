@@ -7,7 +7,7 @@ use std::path::Path;
 use super::blocks::{self, Polygon, placed};
 use super::models::Model;
 use super::properties::{color_of, err, numbers, opt_number, pose_of, ranger_return_of, string};
-use super::{Floorplan, OccupancyGrid, Pose, World};
+use super::{Floorplan, OccupancyGrid, Pose, StageBitmap, World};
 use crate::worldfile::WorldFileError;
 
 /// Thickness of the `boundary` walls, m (Stage's).
@@ -65,6 +65,10 @@ impl World {
             grid.origin.0 + covers[0] / 2.0,
             grid.origin.1 + covers[1] / 2.0,
         ];
+        if pose.a == 0.0 {
+            let placed = StageBitmap::new(grid.clone(), [size[0], size[1]], [pose.x, pose.y]);
+            self.floor_bitmap = Some(std::sync::Arc::new(placed));
+        }
         self.floor = Some(grid);
         self.floorplan = Some(Floorplan {
             bitmap: base.join(file),

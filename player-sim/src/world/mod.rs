@@ -24,6 +24,7 @@ mod ranger_noise;
 mod raster;
 mod robot;
 mod shape_slices;
+mod stage_bitmap;
 mod velocity_bounds;
 mod wall_rects;
 mod wall_sums;
@@ -44,6 +45,7 @@ pub use mounted_body::MountedBody;
 pub use person::{PersonSpec, STANCE_WIDTH, Walk};
 pub use ranger_noise::RangerNoise;
 pub use shape_slices::{ShapeSlice, slice_at};
+pub use stage_bitmap::StageBitmap;
 pub use velocity_bounds::VelocityBounds;
 pub use wall_rects::WallRect;
 
@@ -202,6 +204,8 @@ pub struct World {
     pub floor: Option<OccupancyGrid>,
     /// A bitmap floorplan, for viewers; `None` when the floorplan is drawn with blocks only.
     pub floorplan: Option<Floorplan>,
+    /// An unrotated bitmap floorplan's own pixels where Stage places them (rangers' raster).
+    pub floor_bitmap: Option<std::sync::Arc<StageBitmap>>,
     /// Floorplans drawn with `block`s and the walls of `boundary 1`, in world coordinates
     /// (they are also in `floor`).
     pub floor_blocks: Vec<Polygon>,

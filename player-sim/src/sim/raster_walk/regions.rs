@@ -1,0 +1,166 @@
+//! Stage's regions: squares of 32 × 32 cells, from the origin's cell on a grid of 32. Stage
+//! walks a ray cell by cell only through regions where something (a wall, a robot, a box, a
+//! body mounted on a robot, the sensor itself) has marked a cell, and jumps across the others,
+//! so which regions hold something decides the path of every ray that passes them.
+
+use super::super::wall_raster::WallRaster;
+
+/// Cells along a region's side, as a power of two.
+const REGION_BITS: u32 = 5;
+
+/// The region (along one axis) of global cell `c`.
+#[inline]
+pub(in crate::sim) fn region_of(c: i64) -> i64 {
+    c >> REGION_BITS
+}
+
+/// Which regions hold something.
+pub(in crate::sim) trait Regions {
+    /// Has anything marked a cell of region `(x, y)`?
+    fn populated(&self, x: i64, y: i64) -> bool;
+}
+
+impl Regions for WallRaster {
+    #[inline]
+    fn populated(&self, x: i64, y: i64) -> bool {
+        self.regions().populated(x, y)
+    }
+}
+
+impl WallRaster {
+    /// The regions holding a wall cell, worked out on the first ray: a region holds one when
+    /// the free square from its south-west cell to the north-east is smaller than the region
+    /// (beyond the raster's edge this errs towards holding one). A tiled raster (a large hall)
+    /// reads its wall boxes instead, which would otherwise work out every tile here.
+    pub(in crate::sim) fn regions(&self) -> &RegionMap {
+        self.region_map.get_or_init(|| {
+            let (low, high) = self.cell_bounds();
+            let mut map = RegionMap::over(low, high);
+            if self.is_tiled() {
+                for &[x0, y0, x1, y1] in self.boxes.all() {
+                    for y in region_of(y0)..=region_of(y1) {
+                        for x in region_of(x0)..=region_of(x1) {
+                            map.hold(x, y);
+                        }
+                    }
+                }
+                return map;
+            }
+            let side = 1 << REGION_BITS;
+            for y in region_of(low.1)..=region_of(high.1) {
+                for x in region_of(low.0)..=region_of(high.0) {
+                    if self.ahead(x << REGION_BITS, y << REGION_BITS, 0) < side {
+                        map.hold(x, y);
+                    }
+                }
+            }
+            map
+        })
+    }
+}
+
+/// Which regions hold something, over the regions of a rectangle of cells (none beyond it): a
+/// scan's, the walls' and its bodies' within its reach, read in one step a region.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(in crate::sim) struct RegionMap {
+    first: (i64, i64),
+    width: i64,
+    height: i64,
+    held: Vec<bool>,
+}
+
+impl RegionMap {
+    /// No region held, over the regions of the cells from `low` to `high`.
+    pub(in crate::sim) fn over(low: (i64, i64), high: (i64, i64)) -> RegionMap {
+        let first = (region_of(low.0), region_of(low.1));
+        let (width, height) = (
+            (region_of(high.0) - first.0 + 1).max(0),
+            (region_of(high.1) - first.1 + 1).max(0),
+        );
+        RegionMap {
+            first,
+            width,
+            height,
+            held: vec![false; (width * height) as usize],
+        }
+    }
+
+    fn index(&self, x: i64, y: i64) -> Option<usize> {
+        let (c, r) = (x - self.first.0, y - self.first.1);
+        (c >= 0 && r >= 0 && c < self.width && r < self.height)
+            .then(|| (r * self.width + c) as usize)
+    }
+
+    /// Region `(x, y)` holds something (ignored beyond the map).
+    pub(in crate::sim) fn hold(&mut self, x: i64, y: i64) {
+        if let Some(k) = self.index(x, y) {
+            self.held[k] = true;
+        }
+    }
+
+    /// The regions `other` holds, held here too (within this map).
+    pub(in crate::sim) fn hold_all(&mut self, other: &RegionMap) {
+        for r in 0..self.height {
+            for c in 0..self.width {
+                let (x, y) = (self.first.0 + c, self.first.1 + r);
+                if other.populated(x, y) {
+                    self.held[(r * self.width + c) as usize] = true;
+                }
+            }
+        }
+    }
+}
+
+impl Regions for RegionMap {
+    #[inline]
+    fn populated(&self, x: i64, y: i64) -> bool {
+        self.index(x, y).is_some_and(|k| self.held[k])
+    }
+}
+
+/// The regions either of two sets holds.
+pub(in crate::sim) struct Both<'a, A: ?Sized, B: ?Sized>(pub &'a A, pub &'a B);
+
+impl<A: Regions + ?Sized, B: Regions + ?Sized> Regions for Both<'_, A, B> {
+    #[inline]
+    fn populated(&self, x: i64, y: i64) -> bool {
+        self.0.populated(x, y) || self.1.populated(x, y)
+    }
+}
+
+impl<R: Regions + ?Sized> Regions for Option<&R> {
+    #[inline]
+    fn populated(&self, x: i64, y: i64) -> bool {
+        self.is_some_and(|r| r.populated(x, y))
+    }
+}
+
+/// Some regions, listed in order.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(in crate::sim) struct Listed(Vec<(i64, i64)>);
+
+impl Listed {
+    /// Adds the region of global cell `(x, y)`.
+    pub(in crate::sim) fn add_cell(&mut self, x: i64, y: i64) {
+        let r = (region_of(x), region_of(y));
+        if let Err(at) = self.0.binary_search(&r) {
+            self.0.insert(at, r);
+        }
+    }
+}
+
+impl Regions for Listed {
+    #[inline]
+    fn populated(&self, x: i64, y: i64) -> bool {
+        !self.0.is_empty() && self.0.binary_search(&(x, y)).is_ok()
+    }
+}
+
+/// No region: every one but the ray's start is jumped.
+pub(in crate::sim) struct Nowhere;
+
+impl Regions for Nowhere {
+    fn populated(&self, _: i64, _: i64) -> bool {
+        false
+    }
+}
