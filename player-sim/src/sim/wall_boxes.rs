@@ -334,14 +334,15 @@ mod tests {
     #[test]
     fn a_beam_left_out_meets_no_wall() {
         let raster = hall(0.05);
-        // The bitmap's walls: four borders, two walls and the pillar; each line of the drawn
-        // triangle a box for each run of its cells.
+        // The bitmap's walls as Stage marks them, their outlines: the border ring's outer and
+        // inner sides (8), each inner wall's four sides (8, a pixel is 10 cells) and the
+        // pillar's four; each line of the drawn triangle a box for each run of its cells.
         let big = raster
             .boxes
             .boxes
             .iter()
             .filter(|b| b[2] - b[0] > 8 || b[3] - b[1] > 8);
-        assert_eq!(big.count(), 7, "{:?}", raster.boxes.boxes);
+        assert_eq!(big.count(), 20, "{:?}", raster.boxes.boxes);
         let mut next = randoms(0xB0C5);
         let (mut skipped, mut walked, mut hits) = (0, 0, 0);
         for k in 0..4000 {
@@ -371,8 +372,9 @@ mod tests {
                 }
             }
         }
-        // Most beams are left out, and most of those walked meet their wall.
+        // Most beams are left out, and most of those walked meet their wall (fewer from points
+        // inside a wall, which walk to its far side).
         assert!(skipped > 550_000 && walked > 50_000, "{skipped} {walked}");
-        assert!(hits * 10 > walked * 8, "{hits} of {walked}");
+        assert!(hits * 4 > walked * 3, "{hits} of {walked}");
     }
 }

@@ -4,8 +4,9 @@
 //! outline passes through, its corners floored to whole cells; its rays then walk those cells.
 //! A wall region therefore reaches, in Stage, every cell its closed outline touches: up to a
 //! cell more than the bitmap's pixels on the north and east sides, and a diagonal corner or a
-//! one-pixel wall is where its cells are, not where its pixels are. Rays cast against this
-//! raster meet walls where Stage's meet them, within its resolution.
+//! one-pixel wall is where its cells are, not where its pixels are; a thick wall's inside is
+//! not marked at all, so that a sensor inside a wall sees out through its far side. Rays cast
+//! against this raster meet walls where Stage's meet them.
 //!
 //! Each cell also holds its clearance (how many cells away, in rows or columns, the nearest
 //! wall cell is), so that a ray crosses open space in a few jumps instead of cell by cell: the
@@ -112,21 +113,51 @@ impl WallRaster {
                     grid.origin.1 + (row as f64 + 0.5) * grid.cell.1,
                 )
             };
-            // Each run of wall pixels in a row as one closed rectangle.
-            for row in 0..grid.height {
+            // Stage traces the dark pixels' outlines and marks only the cells its edges pass
+            // through: each side of a dark pixel with a light pixel (or the image's edge)
+            // beyond it, the sides in a row or column joined into runs. A wall's inside is
+            // not marked, so that a ray starting there walks to its far side, as in Stage.
+            let dark = |column: i64, row: i64| {
+                column >= 0
+                    && row >= 0
+                    && (column as usize) < grid.width
+                    && (row as usize) < grid.height
+                    && wall(column as usize, row as usize)
+            };
+            for row in 0..=grid.height as i64 {
+                // The horizontal edges on the line between rows `row - 1` and `row`.
+                let y = cell(edge_y(row as usize));
                 let mut column = 0;
-                while column < grid.width {
-                    if !wall(column, row) {
+                while column < grid.width as i64 {
+                    let edge = |c: i64| dark(c, row - 1) != dark(c, row);
+                    if !edge(column) {
                         column += 1;
                         continue;
                     }
                     let start = column;
-                    while column < grid.width && wall(column, row) {
+                    while column < grid.width as i64 && edge(column) {
                         column += 1;
                     }
-                    let (x0, x1) = (edge_x(start), edge_x(column));
-                    let (y0, y1) = (edge_y(row), edge_y(row + 1));
-                    marks.push((cell(x0), cell(y0), cell(x1), cell(y1)));
+                    let (x0, x1) = (edge_x(start as usize), edge_x(column as usize));
+                    marks.push((cell(x0), y, cell(x1), y));
+                }
+            }
+            for column in 0..=grid.width as i64 {
+                // The vertical edges on the line between columns `column - 1` and `column`.
+                let x = cell(edge_x(column as usize));
+                let mut row = 0;
+                while row < grid.height as i64 {
+                    let edge = |r: i64| dark(column - 1, r) != dark(column, r);
+                    if !edge(row) {
+                        row += 1;
+                        continue;
+                    }
+                    let start = row;
+                    while row < grid.height as i64 && edge(row) {
+                        row += 1;
+                    }
+                    let (y0, y1) = (edge_y(start as usize), edge_y(row as usize));
+                    marks.push((x, cell(y0), x, cell(y1)));
                 }
             }
         }

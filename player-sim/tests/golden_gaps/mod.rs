@@ -22,15 +22,6 @@ const TOLERANCES: Floor = Floor {
 /// A world not listed must meet [`TOLERANCES`].
 const GAPS: &[(&str, Floor, &str)] = &[
     (
-        "mbicp",
-        Floor {
-            laser_within_5cm: 98.0,
-            laser_off_half_m: 0.1,
-            sonar_within_5cm: 73.4,
-        },
-        "its ranger's range and field of view",
-    ),
-    (
         "sensor_noise_demo",
         Floor {
             laser_within_5cm: 44.7,
