@@ -32,6 +32,12 @@
 //! any solid cell the way it heads, every cell of the stepped path within `d - 1` columns and
 //! rows ahead is free, and the path's place after those is computed at once from the stepping
 //! error ([`free_steps`]) rather than cell by cell. Both walks visit the same cells.
+//!
+//! A jump that would pass a region not walked is cut at the region's edge, and the cell it
+//! is cut at lies within the free square it jumped from: free. When that cell's next step
+//! leaves for a region not walked, the step is all the walk takes from it whatever its own
+//! free square, so that cell is not read: in the cave about one read a ray of 9.7 (most are
+//! cache misses in its 800 × 800 raster), the path, its steps and its readings unchanged.
 
 mod regions;
 
@@ -167,13 +173,32 @@ pub(super) fn walk<C: Cells, R: Regions>(
             crossings = None;
             // Steps left within this region along each axis.
             let room = |c: i64, r: i64, s: i64| if s > 0 { r * 32 + 31 - c } else { c - r * 32 };
+            // Whether the cell the walk is in lies within the free square of the cell it last
+            // read (every cell a jump or a step from a free square lands in does).
+            let mut known_free = false;
             loop {
+                let (room_x, room_y) = (room(cx, region.0, sx), room(cy, region.1, sy));
+                if known_free {
+                    // A free cell on the region's edge whose next step leaves for a region
+                    // not walked: whatever its free square, that step is all the walk takes
+                    // from it (a jump would pass that region, so is cut to the step), and the
+                    // walk jumps on from there. Its read is skipped.
+                    let (i, j) = if error < 0 { (1, 0) } else { (0, 1) };
+                    if (i > room_x || j > room_y)
+                        && !regions.populated(region.0 + sx * i, region.1 + sy * j)
+                    {
+                        error += 2 * ay * i - 2 * ax * j;
+                        left -= i + j;
+                        at = (at.0 + (sx * i) as f64, at.1 + (sy * j) as f64);
+                        break;
+                    }
+                }
                 let clear = cells.ahead(cx, cy, q);
                 if clear == 0 {
                     let d = ray.distance(at);
                     return (d <= stop).then_some(d);
                 }
-                let (room_x, room_y) = (room(cx, region.0, sx), room(cy, region.1, sy));
+                known_free = clear >= JUMP_FROM;
                 let (mut i, mut j) = (0, 0);
                 if clear >= JUMP_FROM {
                     let d = i64::from(clear) - 1;
