@@ -149,8 +149,9 @@ def test_a_recorded_simulation_s_rangers_become_point_clouds(playerrecord, playe
     )
     try:
         prec = tmp_path / "sim.prec"
+        # Four seconds: a debug player-sim on a loaded CI machine once sent nothing in two.
         subprocess.run(
-            [playerrecord, "record", f"localhost:{port}", "-o", prec, "-t", "2"],
+            [playerrecord, "record", f"localhost:{port}", "-o", prec, "-t", "4"],
             check=True,
             capture_output=True,
             timeout=30,
