@@ -59,6 +59,22 @@ pub struct WallRaster {
     pub(super) region_map: std::sync::OnceLock<super::raster_walk::RegionMap>,
 }
 
+/// Each run of consecutive indices below `len` where `on` holds, as `run(first, past_last)`.
+fn runs(len: i64, on: impl Fn(i64) -> bool, mut run: impl FnMut(usize, usize)) {
+    let mut k = 0;
+    while k < len {
+        if !on(k) {
+            k += 1;
+            continue;
+        }
+        let start = k;
+        while k < len && on(k) {
+            k += 1;
+        }
+        run(start as usize, k as usize);
+    }
+}
+
 /// Every cell of a 4-connected line from cell `a` to cell `b`, both ends included, as Stage
 /// marks a block's edge: each step moves one column or one row, whichever keeps the cells
 /// nearer the straight line (ties: a row).
@@ -124,41 +140,28 @@ impl WallRaster {
                     && (row as usize) < grid.height
                     && wall(column as usize, row as usize)
             };
-            for row in 0..=grid.height as i64 {
+            let (width, height) = (grid.width as i64, grid.height as i64);
+            for row in 0..=height {
                 // The horizontal edges on the line between rows `row - 1` and `row`.
                 let y = cell(edge_y(row as usize));
-                let mut column = 0;
-                while column < grid.width as i64 {
-                    let edge = |c: i64| dark(c, row - 1) != dark(c, row);
-                    if !edge(column) {
-                        column += 1;
-                        continue;
-                    }
-                    let start = column;
-                    while column < grid.width as i64 && edge(column) {
-                        column += 1;
-                    }
-                    let (x0, x1) = (edge_x(start as usize), edge_x(column as usize));
-                    marks.push((cell(x0), y, cell(x1), y));
-                }
+                runs(
+                    width,
+                    |c| dark(c, row - 1) != dark(c, row),
+                    |a, b| {
+                        marks.push((cell(edge_x(a)), y, cell(edge_x(b)), y));
+                    },
+                );
             }
-            for column in 0..=grid.width as i64 {
+            for column in 0..=width {
                 // The vertical edges on the line between columns `column - 1` and `column`.
                 let x = cell(edge_x(column as usize));
-                let mut row = 0;
-                while row < grid.height as i64 {
-                    let edge = |r: i64| dark(column - 1, r) != dark(column, r);
-                    if !edge(row) {
-                        row += 1;
-                        continue;
-                    }
-                    let start = row;
-                    while row < grid.height as i64 && edge(row) {
-                        row += 1;
-                    }
-                    let (y0, y1) = (edge_y(start as usize), edge_y(row as usize));
-                    marks.push((x, cell(y0), x, cell(y1)));
-                }
+                runs(
+                    height,
+                    |r| dark(column - 1, r) != dark(column, r),
+                    |a, b| {
+                        marks.push((x, cell(edge_y(a)), x, cell(edge_y(b))));
+                    },
+                );
             }
         }
         let mut lines = Vec::new();
