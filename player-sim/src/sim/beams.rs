@@ -5,11 +5,10 @@
 //! within reach) reads its maximum without any trigonometry.
 //!
 //! The fans are widened by a beam on each side, so that a beam is listed for every box whose
-//! bounding circle it could touch ([`NearbyBoxes::nearest_among`] still tests each exactly).
+//! bounding circle it could touch (the caller still tests each box exactly). A box is only its
+//! bounding circle here, so that the beams know nothing of what the boxes are.
 
 use std::f64::consts::{PI, TAU};
-
-use super::nearby::NearbyBoxes;
 
 /// Evenly spaced beams: beam `i` points at `first + i * step` (world angle).
 #[derive(Debug, Clone, Copy)]
@@ -19,8 +18,8 @@ pub struct Fan {
     pub count: usize,
 }
 
-/// For each beam of a [`Fan`], the boxes (indices into [`NearbyBoxes`]) in its direction, in
-/// increasing order.
+/// For each beam of a [`Fan`], the boxes (indices in the order their circles were given) in
+/// its direction, in increasing order.
 #[derive(Debug, Clone)]
 pub struct BeamBoxes {
     /// Beam `i`'s boxes are `boxes[starts[i]..starts[i + 1]]`.
@@ -29,16 +28,19 @@ pub struct BeamBoxes {
 }
 
 impl BeamBoxes {
-    /// Lists the boxes of `nearby` by the beams from `(x, y)` of `fan` that may meet them.
-    pub fn new(nearby: &NearbyBoxes, x: f64, y: f64, fan: Fan) -> BeamBoxes {
+    /// Lists the boxes whose bounding circles (centre and radius) are `circles` by the beams
+    /// from `(x, y)` of `fan` that may meet them.
+    pub fn new(
+        circles: impl Iterator<Item = (f64, f64, f64)>,
+        x: f64,
+        y: f64,
+        fan: Fan,
+    ) -> BeamBoxes {
         let n = fan.count;
         // Each box's beams as (first, last) ranges; at most two (a fan over the full circle
         // may see one box at both of its ends).
-        let ranges: Vec<[(usize, usize); 2]> = (0..nearby.len())
-            .map(|k| {
-                let (cx, cy, radius) = nearby.circle(k);
-                beams_towards(fan, cx - x, cy - y, radius)
-            })
+        let ranges: Vec<[(usize, usize); 2]> = circles
+            .map(|(cx, cy, radius)| beams_towards(fan, cx - x, cy - y, radius))
             .collect();
         let mut counts = vec![0u32; n + 1];
         for (lo, hi) in ranges.iter().flatten().copied() {

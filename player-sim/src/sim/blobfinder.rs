@@ -4,8 +4,8 @@
 //! robot (and what that robot holds), walls included.
 
 use super::Simulation;
+use super::body_pose::on_robot;
 use super::nearby::NearbyBoxes;
-use super::sensors::on_robot;
 use crate::world::BlobfinderSpec;
 
 /// The height Stage gives every seen thing to size its blob, m.

@@ -12,8 +12,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, OnceLock};
 
 use super::RobotState;
+use super::body_pose::body_at;
 use super::box_cells::{BoxCells, DrawnCells};
-use super::sensors::body_at;
 use crate::world::{Pose, World, floor_i64};
 
 /// The robots bucketed by cell; built from one set of poses.

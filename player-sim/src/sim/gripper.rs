@@ -5,8 +5,8 @@
 //! and put it down where the gripper is.
 
 use super::Simulation;
+use super::body_pose::{body_at, on_robot};
 use super::geometry::GroundBox;
-use super::sensors::{body_at, on_robot};
 use crate::world::{GripperSpec, Pose};
 
 /// How far the paddles move in one update, as a part of the full stroke (Stage's).

@@ -6,6 +6,7 @@ mod battery;
 mod beams;
 mod blobfinder;
 mod body_index;
+mod body_pose;
 mod box_cells;
 mod camera;
 mod directions;
@@ -22,18 +23,23 @@ mod scan_caster;
 mod sensors;
 mod shapes;
 #[cfg(test)]
+mod test_halls;
+#[cfg(test)]
 mod test_randoms;
 mod walking;
 mod wall_beams;
+mod wall_box_beams;
 mod wall_boxes;
 mod wall_free;
 mod wall_raster;
 mod wall_tiles;
+mod wall_walk;
 mod wander;
 
 pub use battery::BatteryState;
 pub use blobfinder::{Blob, blobs};
 pub use body_index::BodyIndex;
+pub use body_pose::{body_at, on_robot};
 pub use camera::{Frame, render_camera};
 pub use drivers::{Drivers, NoDrivers};
 pub use geometry::GroundBox;
@@ -43,8 +49,7 @@ pub use noise::Noise;
 pub use odometry::{integrate, odometry_error};
 pub use position_control::goto_velocity;
 pub use sensors::{
-    FiducialHit, RangerReturns, body_at, fiducials, on_robot, ranger_returns, ranger_scan,
-    ranger_scan_exhaustive,
+    FiducialHit, RangerReturns, fiducials, ranger_returns, ranger_scan, ranger_scan_exhaustive,
 };
 pub use walking::WalkerState;
 pub use wall_raster::WallRaster;

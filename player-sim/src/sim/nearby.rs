@@ -13,10 +13,10 @@ use super::body_index::BodyIndex;
 
 mod mounted;
 
+use super::body_pose::body_at;
 use super::box_cells::{BoxCells, Drawn, Placed, RayScene, cell_margin};
 use super::geometry::slab_hit;
 use super::raster_walk::RegionMap;
-use super::sensors::body_at;
 use super::shapes::ray_into_polygons;
 use crate::world::{Polygon, ShapeSlice, slice_at};
 

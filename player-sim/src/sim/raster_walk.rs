@@ -41,9 +41,13 @@
 
 mod regions;
 
-pub(super) use regions::{Both, Listed, Nowhere, RegionMap, Regions, region_of};
+pub(super) use regions::{Both, Listed, Nowhere, REGION_BITS, RegionMap, Regions, region_of};
 
-use super::wall_raster::{WallRaster, quadrant};
+/// Which quarter of directions `(dx, dy)` heads into: an index into a raster's free squares.
+#[inline]
+pub(super) fn quadrant(dx: f64, dy: f64) -> usize {
+    usize::from(dx < 0.0) | usize::from(dy < 0.0) << 1
+}
 
 /// Cells a ray walks through: how far it may jump from a cell (0 on a solid cell).
 pub(super) trait Cells {
@@ -53,40 +57,8 @@ pub(super) trait Cells {
     fn ahead(&self, x: i64, y: i64, q: usize) -> u32;
 }
 
-impl Cells for WallRaster {
-    #[inline]
-    fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
-        WallRaster::ahead(self, x, y, q)
-    }
-}
-
 /// Free squares below this are walked cell by cell.
 const JUMP_FROM: u32 = 2;
-
-impl WallRaster {
-    /// Distance from `(x, y)` along the unit direction `(dx, dy)` to where a ray of a sensor
-    /// reaching `max` meets the first wall cell on Stage's path, if it does (0 when it starts
-    /// in one), with only the walls' regions walked.
-    pub fn cast(&self, x: f64, y: f64, dx: f64, dy: f64, max: f64) -> Option<f64> {
-        self.cast_among(x, y, dx, dy, max, self.regions())
-    }
-
-    /// [`WallRaster::cast`] walking the regions `regions` holds (the walls' and the bodies'
-    /// about the sensor, its own robot's among them: Stage walks every region a body's cells
-    /// lie in).
-    pub(super) fn cast_among(
-        &self,
-        x: f64,
-        y: f64,
-        dx: f64,
-        dy: f64,
-        max: f64,
-        regions: &RegionMap,
-    ) -> Option<f64> {
-        let ray = Ray::new(self.per_metre, (x, y), (dx, dy), max)?;
-        walk(self, regions, &ray, max)
-    }
-}
 
 /// A ray as Stage lays it out: its start in cells, its direction's cosine and sine (the sine
 /// of a ray due east is 1e-12, as Stage makes it), and the whole columns and rows its range

@@ -16,7 +16,6 @@ use super::box_cells::RayScene;
 use super::directions::Directions;
 use super::nearby::NearbyBoxes;
 use super::raster_walk::RegionMap;
-use super::sensors::walls_reach;
 use super::wall_beams::WallBeams;
 use super::wall_free::beams_meeting;
 use super::wall_raster::WallRaster;
@@ -128,8 +127,14 @@ fn boxes_within<'a>(
         .reaching(z)
         .on_raster(sim.world.resolution)
         .walked_in(scene);
-    let by_beam = BeamBoxes::new(&boxes, at.0, at.1, fan);
+    let circles = (0..boxes.len()).map(|k| boxes.circle(k));
+    let by_beam = BeamBoxes::new(circles, at.0, at.1, fan);
     (boxes, by_beam)
+}
+
+/// Do the floorplan's walls stand as high as a beam at `z`?
+pub(super) fn walls_reach(sim: &Simulation, z: f64) -> bool {
+    (0.0..=sim.world.floor_height).contains(&z)
 }
 
 /// The caster of robot `robot`'s sensor at `origin` reaching `max`, with beams `fan` at height

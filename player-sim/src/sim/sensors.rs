@@ -2,36 +2,12 @@
 //! robots; fiducial markers within range, field of view and line of sight.
 
 use super::beams::Fan;
+use super::body_pose::on_robot;
 use super::box_cells::RayScene;
 use super::directions::Directions;
-use super::scan_caster::{Hit, caster, ray_scene};
+use super::scan_caster::{Hit, caster, ray_scene, walls_reach};
 use super::{GroundBox, Simulation, wrap};
 use crate::world::{FiducialSpec, Pose, RangerSpec, slice_at};
-
-/// `pose` (on the robot) composed with the robot's pose.
-pub fn on_robot(robot: Pose, local: Pose) -> Pose {
-    let (s, c) = robot.a.sin_cos();
-    Pose {
-        x: robot.x + c * local.x - s * local.y,
-        y: robot.y + s * local.x + c * local.y,
-        a: wrap(robot.a + local.a),
-    }
-}
-
-/// Where a body shifted by `origin` (Stage's `origin`) lies when its model is at `pose`; the
-/// pose itself, without trigonometry, for the usual unshifted body.
-pub fn body_at(pose: Pose, origin: Pose) -> Pose {
-    if origin == Pose::default() {
-        pose
-    } else {
-        on_robot(pose, origin)
-    }
-}
-
-/// Do the floorplan's walls stand as high as a beam at `z`?
-pub(super) fn walls_reach(sim: &Simulation, z: f64) -> bool {
-    (0.0..=sim.world.floor_height).contains(&z)
-}
 
 /// Distance to the floorplan's walls along a ray, up to `scene`'s range, on Stage's path
 /// through `scene`'s regions.

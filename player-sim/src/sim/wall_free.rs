@@ -145,8 +145,8 @@ pub(super) fn beams_meeting(parts: &[Part], x: f64, y: f64, fan: Fan) -> Vec<boo
 
 #[cfg(test)]
 mod tests {
+    use crate::sim::test_halls::{bordered, walled};
     use crate::sim::test_randoms::randoms;
-    use crate::world::{Floorplan, OccupancyGrid, World};
 
     use super::*;
 
@@ -154,27 +154,10 @@ mod tests {
     fn a_free_reach_holds_no_wall_cell_and_open_space_is_found_free() {
         // A 40 x 40 m hall of 0.5 m pixels with a pillar (x 5..7 m, y 3..5 m: rows run from the
         // north), on a 0.05 m raster.
-        let mut rows = vec![String::from(&"#".repeat(80))];
-        for r in 1..79 {
-            let mut row = vec![b'.'; 80];
-            (row[0], row[79]) = (b'#', b'#');
-            if (30..34).contains(&r) {
-                row[50..54].fill(b'#');
-            }
-            rows.push(String::from_utf8(row).unwrap());
-        }
-        rows.push(rows[0].clone());
-        let rows: Vec<&str> = rows.iter().map(String::as_str).collect();
-        let mut world = World::default();
-        world.resolution = 0.05;
-        world.floor = Some(OccupancyGrid::from_rows(&rows, 0.5, (-20.0, -20.0)));
-        world.floorplan = Some(Floorplan {
-            bitmap: Default::default(),
-            size: [40.0, 40.0],
-            centre: [0.0, 0.0],
-            height: 1.0,
-            color: [0, 0, 0],
+        let rows = bordered(80, 80, |r, c| {
+            (30..34).contains(&r) && (50..54).contains(&c)
         });
+        let world = walled(&rows, 0.5, 0.05);
         let raster = WallRaster::of(&world).expect("walls");
         let mut next = randoms(0xF4EE);
         let mut free = 0;

@@ -12,6 +12,7 @@
 //! wall cell is), so that a ray crosses open space in a few jumps instead of cell by cell: the
 //! cost of a beam grows with the walls it passes near, not with its length in 2 cm cells.
 
+use super::raster_walk::RegionMap;
 use super::wall_boxes::{CellBox, WallBoxes};
 use super::wall_tiles::{CLEARANCE, WallTiles};
 use crate::world::{World, floor_i64};
@@ -45,7 +46,7 @@ pub struct WallRaster {
     /// the column and row differences) to the nearest wall cell, at most [`MAX_CLEARANCE`].
     clearance: Vec<u8>,
     /// For a ray heading into each quarter of directions (east-north, west-north, east-south,
-    /// west-south: [`quadrant`]), the side of the largest square of free cells with this cell
+    /// west-south: `raster_walk::quadrant`), the side of the largest square of free cells with this cell
     /// at its corner and the rest of it that way, at most [`MAX_CLEARANCE`]: a ray moving away
     /// from a wall beside or behind it jumps as far as the walls ahead allow.
     ahead: [Vec<u8>; 4],
@@ -56,7 +57,7 @@ pub struct WallRaster {
     /// tiles, worked out when first read.
     tiles: Option<WallTiles>,
     /// Stage's regions holding a wall cell (`sim/raster_walk.rs`), worked out on the first ray.
-    pub(super) region_map: std::sync::OnceLock<super::raster_walk::RegionMap>,
+    pub(super) region_map: std::sync::OnceLock<RegionMap>,
 }
 
 /// Each run of consecutive indices below `len` where `on` holds, as `run(first, past_last)`.
@@ -96,12 +97,6 @@ pub(super) fn line_cells(a: (i64, i64), b: (i64, i64), mut mark: impl FnMut(i64,
         }
         mark(x, y);
     }
-}
-
-/// Which quarter of directions `(dx, dy)` heads into: an index into [`WallRaster`]'s squares.
-#[inline]
-pub(super) fn quadrant(dx: f64, dy: f64) -> usize {
-    usize::from(dx < 0.0) | usize::from(dy < 0.0) << 1
 }
 
 impl WallRaster {

@@ -172,8 +172,9 @@ impl WallTiles {
 #[cfg(test)]
 mod tests {
     use crate::sim::WallRaster;
+    use crate::sim::test_halls::walled;
     use crate::sim::test_randoms::randoms;
-    use crate::world::{Floorplan, OccupancyGrid, World, floor_i64};
+    use crate::world::floor_i64;
 
     /// Every cell's clearance and free squares, tiled and from the passes, in a 14 x 11 m hall
     /// (2 cm cells: tiles' edges, and walls farther than 255 cells) of random pixel walls and
@@ -194,17 +195,7 @@ mod tests {
                         .collect()
                 })
                 .collect();
-            let grid: Vec<&str> = grid.iter().map(String::as_str).collect();
-            let mut world = World::default();
-            world.resolution = 0.02;
-            world.floor = Some(OccupancyGrid::from_rows(&grid, 0.25, (-7.0, -5.5)));
-            world.floorplan = Some(Floorplan {
-                bitmap: Default::default(),
-                size: [14.0, 11.0],
-                centre: [0.0, 0.0],
-                height: 1.0,
-                color: [0, 0, 0],
-            });
+            let mut world = walled(&grid, 0.25, 0.02);
             let mut point = || [14.0 * next() - 7.0, 11.0 * next() - 5.5];
             world.floor_blocks = vec![vec![point(), point(), point()], vec![point(), point()]];
             let passes = WallRaster::of(&world).expect("walls");

@@ -3,10 +3,8 @@
 //! body mounted on a robot, the sensor itself) has marked a cell, and jumps across the others,
 //! so which regions hold something decides the path of every ray that passes them.
 
-use super::super::wall_raster::WallRaster;
-
 /// Cells along a region's side, as a power of two.
-const REGION_BITS: u32 = 5;
+pub(in crate::sim) const REGION_BITS: u32 = 5;
 
 /// The region (along one axis) of global cell `c`.
 #[inline]
@@ -18,45 +16,6 @@ pub(in crate::sim) fn region_of(c: i64) -> i64 {
 pub(in crate::sim) trait Regions {
     /// Has anything marked a cell of region `(x, y)`?
     fn populated(&self, x: i64, y: i64) -> bool;
-}
-
-impl Regions for WallRaster {
-    #[inline]
-    fn populated(&self, x: i64, y: i64) -> bool {
-        self.regions().populated(x, y)
-    }
-}
-
-impl WallRaster {
-    /// The regions holding a wall cell, worked out on the first ray: a region holds one when
-    /// the free square from its south-west cell to the north-east is smaller than the region
-    /// (beyond the raster's edge this errs towards holding one). A tiled raster (a large hall)
-    /// reads its wall boxes instead, which would otherwise work out every tile here.
-    pub(in crate::sim) fn regions(&self) -> &RegionMap {
-        self.region_map.get_or_init(|| {
-            let (low, high) = self.cell_bounds();
-            let mut map = RegionMap::over(low, high);
-            if self.is_tiled() {
-                for &[x0, y0, x1, y1] in self.boxes.all() {
-                    for y in region_of(y0)..=region_of(y1) {
-                        for x in region_of(x0)..=region_of(x1) {
-                            map.hold(x, y);
-                        }
-                    }
-                }
-                return map;
-            }
-            let side = 1 << REGION_BITS;
-            for y in region_of(low.1)..=region_of(high.1) {
-                for x in region_of(low.0)..=region_of(high.0) {
-                    if self.ahead(x << REGION_BITS, y << REGION_BITS, 0) < side {
-                        map.hold(x, y);
-                    }
-                }
-            }
-            map
-        })
-    }
 }
 
 /// Which regions hold something, over the regions of a rectangle of cells (none beyond it): a

@@ -1,6 +1,7 @@
 use super::*;
+use crate::sim::WallRaster;
+use crate::sim::test_halls::{bordered, walled};
 use crate::sim::test_randoms::randoms;
-use crate::world::{Floorplan, OccupancyGrid, World};
 
 /// A few solid cells, for rays walked by hand.
 struct Dots<F: Fn(i64, i64) -> bool>(F);
@@ -69,30 +70,10 @@ fn an_empty_region_is_jumped_along_the_line_keeping_the_steps() {
 
 /// A 6 x 6 m hall of 0.2 m cells around the origin, walls on Stage's raster of 5 cm.
 fn hall() -> WallRaster {
-    let mut rows = vec![String::from("##############################")];
-    for r in 1..29 {
-        let mut row: Vec<u8> = b"#............................#".to_vec();
-        if (5..20).contains(&r) {
-            row[17] = b'#';
-        }
-        if r % 7 == 0 {
-            row[(r * 5) % 27 + 1] = b'#';
-        }
-        rows.push(String::from_utf8(row).unwrap());
-    }
-    rows.push(rows[0].clone());
-    let rows: Vec<&str> = rows.iter().map(String::as_str).collect();
-    let mut world = World::default();
-    world.resolution = 0.05;
-    world.floor = Some(OccupancyGrid::from_rows(&rows, 0.2, (-3.0, -3.0)));
-    world.floorplan = Some(Floorplan {
-        bitmap: Default::default(),
-        size: [6.0, 6.0],
-        centre: [0.0, 0.0],
-        height: 1.0,
-        color: [0, 0, 0],
+    let rows = bordered(30, 30, |r, c| {
+        (c == 17 && (5..20).contains(&r)) || (r % 7 == 0 && c == (r * 5) % 27 + 1)
     });
-    WallRaster::of(&world).expect("walls")
+    WallRaster::of(&walled(&rows, 0.2, 0.05)).expect("walls")
 }
 
 /// Stage's walk one cell at a time: what the walk's jumps across free cells must keep.
