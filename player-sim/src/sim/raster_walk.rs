@@ -173,20 +173,14 @@ pub(super) fn walk<C: Cells, R: Regions>(
                 known_free = clear >= JUMP_FROM;
                 let (mut i, mut j) = (0, 0);
                 if clear >= JUMP_FROM {
-                    let d = i64::from(clear) - 1;
-                    (i, j) = free_steps(error, ax, ay, d, d);
-                    // Past this region only into regions Stage walks too, and only while the
-                    // cell stepped is the point's (Stage looks the cell up again there).
-                    let to = (cx + sx * i, cy + sy * j);
-                    let same = |a: f64, b: f64| !(a < 0.0 && b > 0.0 || a > 0.0 && b < 0.0);
-                    let through = (i <= room_x && j <= room_y)
-                        || ((cx, cy) == (cell_of(at.0), cell_of(at.1))
-                            && same(at.0, at.0 + (sx * i) as f64)
-                            && same(at.1, at.1 + (sy * j) as f64)
-                            && all_held(regions, region, (region_of(to.0), region_of(to.1))));
-                    if !through {
-                        (i, j) = free_steps(error, ax, ay, d.min(room_x), d.min(room_y));
-                    }
+                    let from = Jump {
+                        error,
+                        at,
+                        own: (cx, cy) == (cell_of(at.0), cell_of(at.1)),
+                        region,
+                        room: (room_x, room_y),
+                    };
+                    (i, j) = free_run(regions, ray, from, i64::from(clear) - 1);
                     if i + j >= left {
                         return None;
                     }
@@ -215,11 +209,76 @@ pub(super) fn walk<C: Cells, R: Regions>(
     None
 }
 
-/// Do `regions` hold every region from `a` to `b` (corners of a rectangle of regions)?
-fn all_held<R: Regions>(regions: &R, a: (i64, i64), b: (i64, i64)) -> bool {
-    let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
-    let (y0, y1) = (a.1.min(b.1), a.1.max(b.1));
-    (y0..=y1).all(|y| (x0..=x1).all(|x| regions.populated(x, y)))
+/// Where a jump across free cells starts: the stepping error, the point, whether the cell
+/// stepped is the point's own, its region and the steps left within it along each axis.
+#[derive(Clone, Copy)]
+struct Jump {
+    error: i64,
+    at: (f64, f64),
+    own: bool,
+    region: (i64, i64),
+    room: (i64, i64),
+}
+
+/// How many columns and rows the stepped path takes from `from` through the free square of
+/// side `d + 1` ahead of it: within its region, and on into each next region the path enters
+/// that Stage walks too, while the cell stepped is the point's (Stage looks the cell up again
+/// from the point in each region it enters) and the point keeps its side of the origin's
+/// column and row (where truncation towards zero moves the cell it is in). A region the path
+/// does not enter is not asked about: the path, not the square, decides what is crossed.
+fn free_run<R: Regions>(regions: &R, ray: &Ray, from: Jump, d: i64) -> (i64, i64) {
+    let (sx, sy) = ray.step;
+    let (ax, ay) = (ray.columns, ray.rows);
+    let (mut limit_x, mut limit_y) = from.room;
+    let (mut i, mut j) = (0, 0);
+    let mut error = from.error;
+    let mut region = from.region;
+    let (kx, ky) = (
+        steps_keeping_sign(from.at.0, sx),
+        steps_keeping_sign(from.at.1, sy),
+    );
+    loop {
+        let (a, b) = free_steps(error, ax, ay, d.min(limit_x) - i, d.min(limit_y) - j);
+        (i, j) = (i + a, j + b);
+        error += 2 * ay * a - 2 * ax * b;
+        if !from.own {
+            return (i, j);
+        }
+        // The pattern stopped where its next step would leave the square, the region, or
+        // (past the first region) the point's side of the origin.
+        let (next, step) = if error < 0 {
+            ((region.0 + sx, region.1), (i + 1, j))
+        } else {
+            ((region.0, region.1 + sy), (i, j + 1))
+        };
+        let edge = if error < 0 {
+            i < d && i == limit_x
+        } else {
+            j < d && j == limit_y
+        };
+        if !edge || step.0 > kx || step.1 > ky || !regions.populated(next.0, next.1) {
+            return (i, j);
+        }
+        region = next;
+        if error < 0 {
+            limit_x += 32;
+        } else {
+            limit_y += 32;
+        }
+        (limit_x, limit_y) = (limit_x.min(kx), limit_y.min(ky));
+    }
+}
+
+/// How many whole cells a point at `v` (in cells) may move by `step` and stay on its side of
+/// 0 (0 itself allowed): where it crosses, truncation towards zero moves the cell it is in.
+#[inline]
+fn steps_keeping_sign(v: f64, step: i64) -> i64 {
+    if v * step as f64 >= 0.0 {
+        i64::MAX / 4
+    } else {
+        // `v + step * k` keeps its sign while k <= |v| (the sum's rounding keeps its sign).
+        v.abs() as i64
+    }
 }
 
 /// The longest start of the stepping pattern from error `error` (a column while it is

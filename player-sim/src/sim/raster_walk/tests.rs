@@ -135,6 +135,20 @@ fn jumps_across_free_cells_keep_the_path_cell_for_cell() {
             walk(&raster, &all, &ray, max),
             stepped(&raster, &all, &ray, max)
         );
+        // And with a random third of the regions about the hall empty: a jump goes on only
+        // into the regions its path enters, whatever lies beside them.
+        let some = AllBut(
+            (-4..4)
+                .flat_map(|y| (-4..4).map(move |x| (x, y)))
+                .filter(|_| next() < 0.33)
+                .collect(),
+        );
+        assert_eq!(
+            walk(&raster, &some, &ray, max),
+            stepped(&raster, &some, &ray, max),
+            "{k}: ({x}, {y}) {dx} {dy} among {:?}",
+            some.0
+        );
         hits += usize::from(want.is_some());
     }
     assert!(hits > 1500, "{hits}");
