@@ -1,23 +1,9 @@
-//! XDR primitives exactly as Player's generated packers apply them.
-//!
-//! Player serialises every C struct member in declaration order with one standard XDR
-//! routine. The rules that matter (and that break implementations most often):
-//!
-//! * every 8- and 16-bit integer is widened to 4 bytes on the wire;
-//! * a variable array carries its count twice: the `x_count` member, then XDR's own length
-//!   prefix ([`Vec<T>`] and [`Opaque`] read and write both);
-//! * byte arrays are packed one byte per element and zero-padded to a multiple of 4
-//!   ([`Opaque`], [`PlayerString`]); all other arrays use 4 or 8 bytes per element;
-//! * fixed arrays (`double cov[6]`) carry no length at all (`[T; N]`).
-//!
-//! Decoding goes through `nom` on a borrowed body slice. The `body` handle passed alongside
-//! lets byte arrays (camera frames, map tiles) be returned as zero-copy slices of the
-//! received buffer instead of copies.
+//! The [`Xdr`] trait, its errors and its arrays: the bottom of the codec, which the byte arrays
+//! ([`super::xdr_bytes`]), the numbers and the views ([`super::xdr_view`]) build on, apart from
+//! [`super::xdr`], which gathers all of them, so that none of them depends on what it gathers.
 
 use bytes::{BufMut, Bytes};
 use nom::error::{ErrorKind, ParseError};
-
-use super::xdr_view::XdrView;
 
 /// The result of decoding one XDR item: the remaining input and the value.
 pub type XdrResult<'a, T> = nom::IResult<&'a [u8], T, XdrError<'a>>;
@@ -177,8 +163,9 @@ pub trait XdrElement: Xdr {
 /// the input after the two words.
 #[inline(always)]
 pub fn counted_length(input: &[u8], element_size: usize) -> XdrResult<'_, usize> {
-    let (after_count, count) = u32::view(input)?;
-    let (rest, length) = u32::view(after_count)?;
+    // Numbers hold no byte array, so the body handle is never used.
+    let (after_count, count) = u32::decode(input, &Bytes::new())?;
+    let (rest, length) = u32::decode(after_count, &Bytes::new())?;
     if length > count {
         return fail(after_count, XdrFault::LengthAboveCount { count, length });
     }
@@ -243,11 +230,6 @@ impl<T: XdrElement + Default + Copy, const N: usize> Xdr for [T; N] {
         self.iter().map(Xdr::encoded_len).sum()
     }
 }
-
-pub use super::xdr_bytes::{
-    FixedBytes, decode_counted_bytes, decode_packed_bytes, encode_counted_bytes,
-    encode_packed_bytes, pad4,
-};
 
 /// Decodes a whole value from `body` and checks nothing was left over.
 ///
