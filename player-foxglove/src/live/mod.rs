@@ -26,6 +26,7 @@
 
 mod channels;
 mod hub;
+pub mod ids;
 pub mod outbox;
 pub mod refusal;
 pub mod server;

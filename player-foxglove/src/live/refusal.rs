@@ -1,7 +1,7 @@
 //! Why a viewer's request is refused: the text of the error `status` it is answered with
 //! (the protocol's own wording, as Foxglove's servers word it), the connection kept.
 
-use super::wire::{ChannelId, SubscriptionId};
+use super::ids::{ChannelId, SubscriptionId};
 
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]

@@ -8,6 +8,7 @@ use bytes::{BufMut, Bytes, BytesMut};
 use serde::Deserialize;
 use serde_json::json;
 
+pub use super::ids::{ChannelId, SubscriptionId};
 use super::refusal::Refusal;
 
 /// The subprotocols a viewer may offer, in the server's order of preference: the spec's name
@@ -20,10 +21,6 @@ pub const MESSAGE_DATA: u8 = 0x01;
 
 /// Opcode, subscription id (u32 LE), log time in ns (u64 LE).
 pub const MESSAGE_HEADER_LEN: usize = 1 + 4 + 8;
-
-/// A client's subscription id (chosen by the client) and a server's channel id.
-pub type SubscriptionId = u32;
-pub type ChannelId = u64;
 
 /// A `status` message's level.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -8,6 +8,7 @@ use std::collections::{BTreeMap, HashMap};
 use bytes::Bytes;
 
 use super::format::{Event, Record};
+pub use super::source::SeekPoint;
 use super::source::{RecordSource, RecordStream, SourceError};
 use crate::capture::Direction;
 use crate::interfaces::player::{self, Player};
@@ -47,16 +48,6 @@ impl ConnectionIndex {
             .and_then(|raw| Banner::parse(raw).ok())
             .map(|b| b.version)
     }
-}
-
-/// Where reading may resume: a record boundary, at `time_ns`. `offset` and `records` are what
-/// the source's stream said of its position there ([`RecordStream::position`]): for a `.prec`
-/// the byte offset and the records before it; a source that seeks by time may leave them 0.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct SeekPoint {
-    pub time_ns: u64,
-    pub offset: u64,
-    pub records: u64,
 }
 
 /// What a pass over a recording found.

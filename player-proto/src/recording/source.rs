@@ -9,7 +9,6 @@ use std::io::{BufReader, Seek, SeekFrom};
 use std::path::{Path, PathBuf};
 
 use super::format::Record;
-use super::index::SeekPoint;
 use super::reader::{ReadError, RecordingReader};
 
 /// Why a source's records cannot be read (any further).
@@ -43,6 +42,16 @@ impl SourceError {
             SourceError::Open { .. } => false,
         }
     }
+}
+
+/// Where reading may resume: a record boundary, at `time_ns`. `offset` and `records` are what
+/// the source's stream said of its position there ([`RecordStream::position`]): for a `.prec`
+/// the byte offset and the records before it; a source that seeks by time may leave them 0.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SeekPoint {
+    pub time_ns: u64,
+    pub offset: u64,
+    pub records: u64,
 }
 
 /// Records in the order they were written, one at a time.

@@ -14,9 +14,11 @@
 use std::io::{self, Write};
 use std::net::TcpStream;
 
+use std::sync::Mutex;
+
 use bytes::{Buf, BytesMut};
 
-use super::state::SessionState;
+use super::queue::OutQueue;
 
 /// The publisher's side of a connection's socket.
 #[derive(Debug, Default)]
@@ -49,18 +51,25 @@ pub(crate) struct WriterTurn {
     pub messages: Vec<std::sync::Arc<crate::message::Message>>,
 }
 
-impl SessionState {
+/// Called through the session ([`super::state::SessionState`]), which lends its lock on this,
+/// its queue and the waking of its writer task: the direct writes need those, not the session.
+impl DirectWrite {
     /// Writes what is sendable now from this thread, in one non-blocking write into `scratch`
     /// (reused between connections), or wakes the writer task when it has the socket or the
     /// socket would not take it all.
-    pub fn flush_now(&self, scratch: &mut BytesMut) {
-        let mut direct = self.direct.lock().expect("direct write");
+    pub fn flush_now(
+        this: &Mutex<DirectWrite>,
+        queue: &Mutex<OutQueue>,
+        wake_writer: impl Fn(),
+        scratch: &mut BytesMut,
+    ) {
+        let mut direct = this.lock().expect("direct write");
         if direct.writer_has_it || direct.socket.is_none() {
             drop(direct);
-            self.wake();
+            wake_writer();
             return;
         }
-        let ready = self.queue.lock().expect("queue").take_sendable();
+        let ready = queue.lock().expect("queue").take_sendable();
         if ready.is_empty() {
             return;
         }
@@ -93,28 +102,28 @@ impl SessionState {
             direct.leftover.extend_from_slice(scratch);
             direct.writer_has_it = true;
             drop(direct);
-            self.wake();
+            wake_writer();
         }
     }
 
     /// The writer task takes the socket: what a publisher left over, then what is sendable.
-    pub fn writer_takes(&self) -> WriterTurn {
-        let mut direct = self.direct.lock().expect("direct write");
+    pub fn writer_takes(this: &Mutex<DirectWrite>, queue: &Mutex<OutQueue>) -> WriterTurn {
+        let mut direct = this.lock().expect("direct write");
         direct.writer_has_it = true;
         WriterTurn {
             leftover: std::mem::take(&mut direct.leftover),
-            messages: self.queue.lock().expect("queue").take_sendable(),
+            messages: queue.lock().expect("queue").take_sendable(),
         }
     }
 
     /// The writer task has written its turn: the publisher may write again.
-    pub fn writer_done(&self) {
-        self.direct.lock().expect("direct write").writer_has_it = false;
+    pub fn writer_done(this: &Mutex<DirectWrite>) {
+        this.lock().expect("direct write").writer_has_it = false;
     }
 
     /// Lets go of the publisher's handle on the socket, so that the connection closes when
     /// its session ends, whoever still holds the session.
-    pub fn drop_direct_socket(&self) {
-        self.direct.lock().expect("direct write").socket = None;
+    pub fn drop_socket(this: &Mutex<DirectWrite>) {
+        this.lock().expect("direct write").socket = None;
     }
 }

@@ -5,11 +5,12 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Condvar, Mutex, MutexGuard, Weak};
 use std::time::Instant;
 
+use bytes::BytesMut;
 use tokio::sync::Notify;
 
 use super::control::{CommandGate, Peer};
 use super::device::Device;
-use super::direct::DirectWrite;
+use super::direct::{DirectWrite, WriterTurn};
 use super::queue::OutQueue;
 use crate::delivery::ReplaceRule;
 use crate::message::Message;
@@ -103,6 +104,26 @@ impl SessionState {
         self.closed.store(true, Ordering::Release);
         self.drop_direct_socket();
         self.wake_writer.notify_one();
+    }
+
+    /// See [`DirectWrite::flush_now`].
+    pub fn flush_now(&self, scratch: &mut BytesMut) {
+        DirectWrite::flush_now(&self.direct, &self.queue, || self.wake(), scratch);
+    }
+
+    /// See [`DirectWrite::writer_takes`].
+    pub fn writer_takes(&self) -> WriterTurn {
+        DirectWrite::writer_takes(&self.direct, &self.queue)
+    }
+
+    /// See [`DirectWrite::writer_done`].
+    pub fn writer_done(&self) {
+        DirectWrite::writer_done(&self.direct);
+    }
+
+    /// See [`DirectWrite::drop_socket`].
+    pub fn drop_direct_socket(&self) {
+        DirectWrite::drop_socket(&self.direct);
     }
 }
 

@@ -10,6 +10,7 @@ mod serde_impls;
 pub mod strings;
 pub mod xdr;
 pub mod xdr_bytes;
+mod xdr_codec;
 mod xdr_numbers;
 pub mod xdr_view;
 

@@ -6,8 +6,7 @@
 use bytes::{BufMut, Bytes};
 
 use super::strings::{Opaque, PlayerString};
-use super::xdr::{Xdr, XdrFault, XdrResult, fail};
-use super::xdr_view::{view_counted_bytes, view_packed_bytes};
+use super::xdr_codec::{Xdr, XdrFault, XdrResult, counted_length, fail};
 
 /// Bytes needed to pad `len` up to the next multiple of 4.
 #[inline]
@@ -50,6 +49,36 @@ pub fn encode_packed_bytes<B: BufMut>(bytes: &[u8], out: &mut B) {
     out.put_u32(n);
     out.put_slice(bytes);
     out.put_bytes(0, pad4(bytes.len()));
+}
+
+/// Counted bytes (`uint8_t *x` with `x_count`): count, length, bytes, padding — the same checks
+/// as [`decode_counted_bytes`], returning the bytes in place.
+#[inline(always)]
+pub fn view_counted_bytes(input: &[u8]) -> XdrResult<'_, &[u8]> {
+    let (rest, len) = counted_length(input, 1)?;
+    // The length was read 4 bytes in: where a padding that does not fit is reported.
+    view_packed_bytes(&input[4..], rest, len)
+}
+
+/// `len` packed bytes and their padding from `rest`; `length_at` is where the length was read,
+/// for the error's offset.
+#[inline(always)]
+pub fn view_packed_bytes<'a>(
+    length_at: &'a [u8],
+    rest: &'a [u8],
+    len: usize,
+) -> XdrResult<'a, &'a [u8]> {
+    let padded = len.saturating_add(pad4(len));
+    if padded > rest.len() {
+        return fail(
+            length_at,
+            XdrFault::LengthBeyondBody {
+                length: u32::try_from(len).unwrap_or(u32::MAX),
+                remaining: rest.len(),
+            },
+        );
+    }
+    Ok((&rest[padded..], &rest[..len]))
 }
 
 /// A zero-copy slice of `body` when `part` lies inside it, a copy otherwise.

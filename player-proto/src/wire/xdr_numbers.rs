@@ -3,7 +3,7 @@
 
 use bytes::{BufMut, Bytes};
 
-use super::xdr::{Xdr, XdrElement, XdrFault, XdrResult, fail};
+use super::xdr_codec::{Xdr, XdrElement, XdrFault, XdrResult, fail};
 
 /// The next `N` bytes as an array. Scalars are read with this rather than nom's generic
 /// number parsers, which assemble values byte by byte through trait calls: for a struct of

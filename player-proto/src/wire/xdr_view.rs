@@ -20,8 +20,9 @@ use std::marker::PhantomData;
 use bytes::Bytes;
 
 use super::strings::{Opaque, PlayerString};
-use super::xdr::{Xdr, XdrElement, XdrFault, XdrResult, counted_length, fail};
 use super::xdr_bytes::{FixedBytes, pad4};
+pub use super::xdr_bytes::{view_counted_bytes, view_packed_bytes};
+use super::xdr_codec::{Xdr, XdrElement, XdrFault, XdrResult, counted_length, fail};
 
 /// The borrowed reading of `T` from bytes that live for `'a`.
 pub type View<'a, T> = <T as XdrView>::View<'a>;
@@ -110,36 +111,6 @@ impl<T: XdrElement + XdrView + Default + Copy + fmt::Debug, const N: usize> XdrV
     fn to_owned_value(view: Self) -> Self {
         view
     }
-}
-
-/// Counted bytes (`uint8_t *x` with `x_count`): count, length, bytes, padding — the same checks
-/// as [`super::xdr::decode_counted_bytes`], returning the bytes in place.
-#[inline(always)]
-pub fn view_counted_bytes(input: &[u8]) -> XdrResult<'_, &[u8]> {
-    let (rest, len) = counted_length(input, 1)?;
-    // The length was read 4 bytes in: where a padding that does not fit is reported.
-    view_packed_bytes(&input[4..], rest, len)
-}
-
-/// `len` packed bytes and their padding from `rest`; `length_at` is where the length was read,
-/// for the error's offset.
-#[inline(always)]
-pub fn view_packed_bytes<'a>(
-    length_at: &'a [u8],
-    rest: &'a [u8],
-    len: usize,
-) -> XdrResult<'a, &'a [u8]> {
-    let padded = len.saturating_add(pad4(len));
-    if padded > rest.len() {
-        return fail(
-            length_at,
-            XdrFault::LengthBeyondBody {
-                length: u32::try_from(len).unwrap_or(u32::MAX),
-                remaining: rest.len(),
-            },
-        );
-    }
-    Ok((&rest[padded..], &rest[..len]))
 }
 
 impl XdrView for Opaque {

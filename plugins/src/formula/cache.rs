@@ -14,7 +14,7 @@ use std::sync::{Mutex, OnceLock};
 
 use framework::scene::{Pixels, Rgba};
 
-use super::typeset::FormulaError;
+use super::error::FormulaError;
 
 /// More distinct formulas than a classroom writes; a plugin typesetting a new number every
 /// frame only turns the oldest over.

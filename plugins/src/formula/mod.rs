@@ -2,5 +2,7 @@
 //! `libpv3d_formula`, a formula label that follows its robot ([`label`]). Each formula is
 //! typeset once per process ([`cache`]).
 pub mod cache;
+pub mod error;
 pub mod label;
+pub mod resolution;
 pub mod typeset;

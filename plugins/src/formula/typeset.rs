@@ -10,40 +10,8 @@ use std::sync::OnceLock;
 use framework::scene::{PixelFormat, Pixels, Rgba};
 use latex_rust::{Dim, MathFont, PngBackground, PngOptions};
 
-/// Raster resolution of a formula by default: 12 pt at this many dots per inch is about 30
-/// pixels to the em, sharp on a label a few decimetres high.
-pub const DEFAULT_DPI: u32 = 180;
-/// The highest resolution accepted; the typesetter refuses more than 2400.
-pub const MAX_DPI: u32 = 1200;
-/// The em of a typeset formula, points: the typesetter's own default, which the resolutions
-/// here are reckoned in.
-pub const FONT_SIZE_PT: u32 = 12;
-
-/// The resolution at which a formula's em is `em_px` pixels: for labels on screen, whose size
-/// is given in pixels rather than in metres.
-pub fn dpi_for_em(em_px: f32) -> u32 {
-    let dpi = (em_px * 72.0 / FONT_SIZE_PT as f32).round();
-    if dpi.is_finite() {
-        (dpi as u32).clamp(1, MAX_DPI)
-    } else {
-        DEFAULT_DPI
-    }
-}
-
-/// Why a formula gave no picture.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum FormulaError {
-    #[error("{text:?} is not math: write it between dollar signs, as $v = \\omega r$")]
-    NotMath { text: String },
-    #[error("the formula {latex:?} cannot be typeset: {reason}")]
-    Typeset { latex: String, reason: String },
-    #[error("the math font could not be loaded: {0}")]
-    Font(String),
-    #[error("the typeset formula could not be read back: {0}")]
-    Decode(String),
-    #[error("a resolution of {0} dpi is not between 1 and {MAX_DPI}")]
-    BadResolution(u32),
-}
+pub use super::error::FormulaError;
+pub use super::resolution::{DEFAULT_DPI, FONT_SIZE_PT, MAX_DPI, dpi_for_em};
 
 /// The math between a label's dollar signs (`$…$`), or `None` for plain text.
 pub fn math_of(text: &str) -> Option<&str> {
@@ -160,14 +128,6 @@ mod tests {
             typeset("$x$", Rgba::WHITE, 0),
             Err(FormulaError::BadResolution(0))
         ));
-    }
-
-    #[test]
-    fn an_em_in_pixels_gives_the_resolution() {
-        assert_eq!(dpi_for_em(30.0), 180, "12 pt at 180 dpi is 30 pixels");
-        assert_eq!(dpi_for_em(0.0), 1);
-        assert_eq!(dpi_for_em(1e9), MAX_DPI);
-        assert_eq!(dpi_for_em(f32::NAN), DEFAULT_DPI);
     }
 
     #[test]

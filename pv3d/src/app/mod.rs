@@ -3,6 +3,7 @@
 
 pub mod builder;
 pub mod command_line;
+mod device_gone;
 pub mod formula_textures;
 pub mod frame_count;
 pub mod frame_times;

@@ -12,8 +12,8 @@ use player_proto::interfaces::power::Power;
 use player_proto::message::Body;
 use player_proto::wire::{DevAddr, Interface};
 
+use super::device_gone::{GONE, GONE_COLOR};
 use super::listing;
-use super::viewer::{GONE, GONE_COLOR};
 use crate::composition::FoundDevice;
 use crate::robots::RobotManager;
 

@@ -20,7 +20,6 @@ mod queries;
 mod reactions;
 mod speech;
 
-pub(crate) use device_presence::{GONE, GONE_COLOR};
 pub use editor::EditError;
 
 use std::sync::Arc;

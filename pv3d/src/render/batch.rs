@@ -1,31 +1,14 @@
 //! Turning the scene into a few big vertex arrays in world space, so the whole scene draws in
 //! four GL calls however many robots there are. Buffers are reused from frame to frame.
 
-use bytemuck::{Pod, Zeroable};
 use framework::scene::{
     Facing, FilterChain, FilteredPicture, ImageQuad, Label, Pixels, Sampling, Scene, Vertex,
     VirtualView,
 };
 use glam::Affine3A;
 
+pub use super::gpu_vertex::{GpuMeshVertex, GpuVertex};
 use super::screen_detail::{FanOut, ScreenDetail, Simplifier};
-
-/// A coloured vertex as the GPU reads it: 16 bytes.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq, Pod, Zeroable)]
-pub struct GpuVertex {
-    pub pos: [f32; 3],
-    pub color: [u8; 4],
-}
-
-/// A lit vertex as the GPU reads it: 28 bytes.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq, Pod, Zeroable)]
-pub struct GpuMeshVertex {
-    pub pos: [f32; 3],
-    pub normal: [f32; 3],
-    pub color: [u8; 4],
-}
 
 /// A picture placed in world space: its corners (counter-clockwise from row 0, column 0)
 /// with their texture coordinates. The pixels are shared with the scene, not copied.

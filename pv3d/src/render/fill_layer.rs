@@ -11,8 +11,7 @@
 
 use eframe::glow::{self, HasContext};
 
-use super::gl_error::GlError;
-use super::gl_renderer::RendererError;
+use super::gl_error::{GlError, RendererError};
 use super::gl_state::SavedState;
 use super::shader::{glsl_header, link_program};
 

@@ -11,6 +11,7 @@ use super::batch::{GpuMeshVertex, GpuVertex, SceneBatch};
 use super::billboard::BillboardAxes;
 use super::fill_layer::FillLayer;
 use super::gl_error::GlError;
+pub use super::gl_error::RendererError;
 use super::image_quads::ImageRenderer;
 use super::shader::{glsl_header, link_program};
 
@@ -91,11 +92,6 @@ struct Buffer {
     vbo: glow::Buffer,
     count: i32,
 }
-
-/// Why the renderer could not be created.
-#[derive(Debug, thiserror::Error)]
-#[error("OpenGL setup failed: {0}")]
-pub struct RendererError(#[from] pub GlError);
 
 /// Draws a [`SceneBatch`] with glow.
 pub struct SceneRenderer {

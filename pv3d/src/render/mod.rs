@@ -10,6 +10,7 @@ pub mod filtered_pictures;
 pub mod gl_error;
 pub mod gl_renderer;
 pub mod gl_state;
+pub mod gpu_vertex;
 pub mod grid_mipmaps;
 pub mod image_quads;
 pub mod kernels;

@@ -1,10 +1,8 @@
 //! Player servers: the shared client per server and plugins' access to their devices.
 
-mod device_link;
 mod device_links;
 mod manager;
 pub mod recording;
 
-pub use device_link::ClientDevice;
-pub use device_links::LinkKey;
+pub use device_links::{ClientDevice, LinkKey};
 pub use manager::{RobotManager, RobotOptions};

@@ -3,18 +3,11 @@
 //! — the item tree and the status panel say "device gone" — and made again, state kept, when
 //! their device comes back; new devices get their handlers' plugins.
 
-use eframe::egui;
 use framework::config::DeviceRef;
 use framework::registry::Metadata;
 
 use super::Viewer;
 use crate::composition::{FoundDevice, PluginInstance, write_back};
-
-/// What the item tree and the status panel say of a plugin whose device went away.
-pub(crate) const GONE: &str = "device gone";
-
-/// The colour of "device gone": a warning, not an error — the plugin resumes by itself.
-pub(crate) const GONE_COLOR: egui::Color32 = egui::Color32::from_rgb(230, 150, 70);
 
 /// A plugin whose device went away: cleaned and dropped, kept as the configuration it saved
 /// so that it resumes where it was.

@@ -8,8 +8,8 @@ use eframe::egui::{self, Ui};
 use framework::registry::Metadata;
 
 use super::Viewer;
-use super::device_presence::{GONE, GONE_COLOR};
 use super::math_title;
+use crate::app::device_gone::{GONE, GONE_COLOR};
 use crate::app::listing::{
     Entry, FIND_FROM, LISTED_AT_MOST, Listing, list, matches, summary, thousands,
 };

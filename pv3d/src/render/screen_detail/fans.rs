@@ -6,7 +6,7 @@
 use framework::scene::{Fan, Rgba};
 use glam::Affine3A;
 
-use super::super::batch::GpuVertex;
+use super::super::gpu_vertex::GpuVertex;
 use super::{ScreenDetail, Simplifier};
 
 /// Where a fan's pieces go.

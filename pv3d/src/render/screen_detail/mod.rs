@@ -11,7 +11,7 @@
 
 use glam::{Mat4, Vec2, Vec3, Vec4Swizzles};
 
-use super::batch::GpuVertex;
+use super::gpu_vertex::GpuVertex;
 
 mod fans;
 pub use fans::FanOut;
