@@ -114,6 +114,28 @@ impl Ray {
         };
         cells / self.per_metre
     }
+
+    /// Cells from the start to `(x, y)` along the axis with more steps.
+    #[inline]
+    fn along(&self, (x, y): (f64, f64)) -> f64 {
+        if self.columns > self.rows {
+            (x - self.start.0).abs()
+        } else {
+            (y - self.start.1).abs()
+        }
+    }
+
+    /// Cells along the axis with more steps within which a point is surely within `stop`
+    /// metres: a hair less than the exact bound, so that only a point near it needs
+    /// [`Ray::distance`]'s divisions (a ray crossing a hall's empty regions asks at each).
+    fn surely_within(&self, stop: f64) -> f64 {
+        let slope = if self.columns > self.rows {
+            self.cos
+        } else {
+            self.sin
+        };
+        stop * self.per_metre * slope.abs() * (1.0 - 1e-9)
+    }
 }
 
 /// The cell a point `v` (in cells) is looked up in: truncated towards zero.
@@ -138,6 +160,7 @@ pub(super) fn walk<C: Cells, R: Regions>(
     let mut error = ay - ax;
     let mut left = ax + ay;
     let mut crossings: Option<Crossings> = None;
+    let surely_within = ray.surely_within(stop);
     while left > 0 {
         let (mut cx, mut cy) = (cell_of(at.0), cell_of(at.1));
         let region = (region_of(cx), region_of(cy));
@@ -202,7 +225,7 @@ pub(super) fn walk<C: Cells, R: Regions>(
             at = to;
             left = (left as f64 - moved) as i64;
         }
-        if ray.distance(at) > stop {
+        if ray.along(at) > surely_within && ray.distance(at) > stop {
             return None;
         }
     }
