@@ -116,11 +116,9 @@ fn closing_ends_the_connection_even_on_the_shared_thread() {
     };
     let client = Client::spawn("127.0.0.1", port, options).unwrap();
     *slot.lock().unwrap() = Some(client);
-    // The next state change (the handshake) runs the notifier, which closes the client.
-    assert!(
-        s.wait_for_connections(Duration::from_secs(3), |n| n == 1)
-            .is_some()
-    );
+    // The next state change (the handshake, so the server took the connection) runs the
+    // notifier, which closes the client. The server's count is 1 only for that moment: on a
+    // loaded machine it can go back to 0 before a waiter for 1 looks (a fresh-clone CI run).
     wait_for("the client dropped itself", Duration::from_secs(3), || {
         slot.lock().unwrap().is_none()
     });
