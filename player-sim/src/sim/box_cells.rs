@@ -268,93 +268,28 @@ impl BoxCells {
 }
 
 impl Cells for BoxCells {
-    /// Inside the grid: 0 on the outline, else 1 (walked cell by cell); outside, how far
-    /// outside (the ray jumps to the grid).
-    fn ahead(&self, x: i64, y: i64, _: usize) -> u32 {
+    /// Inside the grid: 0 on the outline, else 1 (walked cell by cell). Outside, the square
+    /// ahead is free as far as it misses the grid along either axis: up to the grid's nearer
+    /// edge along an axis the ray heads towards it, without end along one where the grid lies
+    /// behind (a ray past a body, or beside it heading away, jumps to its stop).
+    fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
         let (c, r) = (x - self.first.0, y - self.first.1);
         if c >= 0 && r >= 0 && c < self.width && r < self.height {
             return u32::from(!self.solid[(r * self.width + c) as usize]);
         }
-        let outside = |v: i64, n: i64| {
-            if v < 0 { -v } else { (v - n + 1).max(0) }
+        // Free cells from `v` the way the ray heads along an axis of `n` cells.
+        let free = |v: i64, n: i64, back: bool| match (v < 0, v >= n, back) {
+            (true, _, false) => -v,
+            (_, true, true) => v - n + 1,
+            (false, false, _) => 0,
+            _ => i64::MAX,
         };
-        outside(c, self.width)
-            .max(outside(r, self.height))
+        let (west, south) = (q & 1 == 1, q & 2 == 2);
+        free(c, self.width, west)
+            .max(free(r, self.height, south))
             .clamp(1, i64::from(u32::MAX)) as u32
     }
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn leg(x: f64, y: f64) -> Placed<'static> {
-        Placed {
-            x,
-            y,
-            sin: 0.0,
-            cos: 1.0,
-            half_length: 0.015,
-            half_width: 0.015,
-            shape: &[],
-        }
-    }
-
-    #[test]
-    fn a_leg_is_met_on_its_cells_not_its_outline() {
-        // A 3 cm leg from 1.985 to 2.015 m: cells 99 to 100 of 2 cm (1.98 to 2.02 m). With
-        // nothing else about, Stage's ray jumps the empty regions to the leg's (from x = 96
-        // cells, 1.92 m) and walks on in whole cells from there: it meets cell 99 at x = 99,
-        // 98.5 cells (1.97 m) from its start half a cell east of 0.
-        let l = leg(2.0, 0.0);
-        let d = l
-            .cast_cells(0.02, (0.01, 0.0), (1.0, 0.0), 8.0, None)
-            .unwrap();
-        assert!((d.unwrap() - 1.97).abs() < 1e-9, "{d:?}");
-        // A beam passing 1.5 cm north of the leg's edge still meets its cell row (0 to 2 cm
-        // holds the edge at 1.5 cm; the beam at 3 cm does not).
-        let beside = l
-            .cast_cells(0.02, (0.01, 0.019), (1.0, 0.0), 8.0, None)
-            .unwrap();
-        assert!(beside.is_some());
-        let clear = l
-            .cast_cells(0.02, (0.01, 0.041), (1.0, 0.0), 8.0, None)
-            .unwrap();
-        assert_eq!(clear, None);
-        // Away from it, or beyond the reach: nothing.
-        assert_eq!(
-            l.cast_cells(0.02, (0.01, 0.0), (-1.0, 0.0), 8.0, None)
-                .unwrap(),
-            None
-        );
-        assert_eq!(
-            l.cast_cells(0.02, (0.01, 0.0), (1.0, 0.0), 1.0, None)
-                .unwrap(),
-            None
-        );
-    }
-
-    #[test]
-    fn only_the_outline_is_solid() {
-        let b = Placed {
-            half_length: 0.5,
-            half_width: 0.5,
-            ..leg(0.0, 0.0)
-        };
-        // From inside, the far side.
-        let d = b
-            .cast_cells(0.02, (0.01, 0.01), (1.0, 0.0), 8.0, None)
-            .unwrap();
-        assert!((d.unwrap() - 0.49).abs() < 0.021, "{d:?}");
-        // A box too large for a raster is cast exactly by the caller.
-        let hall = Placed {
-            half_length: 500.0,
-            half_width: 500.0,
-            ..b
-        };
-        assert!(
-            hall.cast_cells(0.02, (0.0, 0.0), (1.0, 0.0), 8.0, None)
-                .is_none()
-        );
-    }
-}
+mod tests;
