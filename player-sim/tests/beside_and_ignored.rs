@@ -95,7 +95,7 @@ fn the_program_runs_such_a_world_and_says_what_it_ignores_in_one_line() {
         "world property gui_disable",
         "window (the Stage GUI)",
         "bot property gui_nose;",
-        "a blinkenlight on a robot;",
+        "a blinkenlight's light (its body is solid);",
         "floorplan property gui_move",
     ] {
         assert!(summary.contains(said), "{said} in {summary}");

@@ -91,7 +91,7 @@ fn syntax_errors_and_unsupported_parts_are_reported_with_positions() {
         "{notes}"
     );
     assert!(
-        notes.contains("ignored: a blinkenlight on a robot at"),
+        notes.contains("ignored: a blinkenlight's light (its body is solid) at"),
         "{notes}"
     );
     assert!(

@@ -65,32 +65,8 @@ impl Placed<'_> {
         (floor_i64(x * per_metre), floor_i64(y * per_metre))
     }
 
-    /// Adds the regions of Stage's raster (`resolution`) the box's cells lie in: those its
-    /// corners' cells span (every one of them, for a box smaller than a region).
-    pub(super) fn add_regions(&self, resolution: f64, regions: &mut RegionMap) {
-        let per_metre = 1.0 / resolution;
-        if !(per_metre.is_finite() && per_metre > 0.0) {
-            return;
-        }
-        let corners = self.corner_cells(per_metre);
-        let (mut low, mut high) = ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN));
-        for &(x, y) in corners.iter().flatten() {
-            low = (low.0.min(x), low.1.min(y));
-            high = (high.0.max(x), high.1.max(y));
-        }
-        // A hall-sized box is skipped: its regions would be too many to list.
-        if low.0 > high.0 || (high.0 - low.0).max(high.1 - low.1) > 4 * 32 {
-            return;
-        }
-        for y in (low.1 >> 5)..=(high.1 >> 5) {
-            for x in (low.0 >> 5)..=(high.0 >> 5) {
-                regions.hold(x, y);
-            }
-        }
-    }
-
     /// The corners of each block in world cells.
-    fn corner_cells(&self, per_metre: f64) -> Vec<Vec<(i64, i64)>> {
+    pub(super) fn corner_cells(&self, per_metre: f64) -> Vec<Vec<(i64, i64)>> {
         if self.shape.is_empty() {
             let (h, w) = (self.half_length, self.half_width);
             return vec![

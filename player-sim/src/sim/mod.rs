@@ -8,6 +8,7 @@ mod blobfinder;
 mod body_index;
 mod body_pose;
 mod box_cells;
+mod box_regions;
 mod camera;
 mod directions;
 mod drivers;

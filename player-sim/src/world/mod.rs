@@ -6,6 +6,7 @@
 
 mod battery;
 mod bitmap;
+mod blinkenlight;
 mod blobfinder;
 mod blocks;
 mod box_children;

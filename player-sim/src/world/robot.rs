@@ -2,6 +2,7 @@
 //! model inside the position is read with the two poses composed, and raised by the heights
 //! of the models it stands on, as Stage stacks children on their parent's top).
 
+use super::blinkenlight::{default_size, is_blinkenlight};
 use super::blocks::{has_blocks, model_blocks};
 use super::gripper::gripper;
 use super::models::Model;
@@ -107,10 +108,13 @@ impl World {
             .filter(|n| n.len() >= 4)
             .map_or(0.0, |n| n[2]);
         let mut size_z = 0.0;
-        // A plain model is solid (its blocks, else its box), as is a ranger given blocks.
-        let solid = child.kind == "model" || (child.kind == "ranger" && has_blocks(child));
+        // A plain model is solid (its blocks, else its box), as are a blinkenlight (Stage's
+        // 2 cm box) and a ranger given blocks.
+        let solid = child.kind == "model"
+            || is_blinkenlight(child)
+            || (child.kind == "ranger" && has_blocks(child));
         if solid {
-            let size = size_of(child, [0.0, 0.0, 0.0])?;
+            let size = size_of(child, default_size(child))?;
             robot.mounted_bodies.push(MountedBody {
                 pose: compose(pose, origin_of(child)?),
                 size,
@@ -138,6 +142,11 @@ impl World {
             }
             "gripper" => robot.grippers.push(gripper(child, pose)?),
             "model" => size_z = size_of(child, [0.0, 0.0, 0.0])?[2],
+            // Its light blinks in Stage's window only; its body is mounted above.
+            "blinkenlight" => {
+                self.ignore("a blinkenlight's light (its body is solid)", &child.pos);
+                size_z = size_of(child, default_size(child))?[2];
+            }
             other => {
                 self.ignore(&format!("a {other} on a robot"), &child.pos);
                 return Ok(());
