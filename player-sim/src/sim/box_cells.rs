@@ -267,5 +267,21 @@ impl Cells for BoxCells {
     }
 }
 
+/// The tests' small body: a 3 cm square leg, unturned, centred on `(x, y)`.
+#[cfg(test)]
+impl Placed<'static> {
+    pub(super) fn leg(x: f64, y: f64) -> Placed<'static> {
+        Placed {
+            x,
+            y,
+            sin: 0.0,
+            cos: 1.0,
+            half_length: 0.015,
+            half_width: 0.015,
+            shape: &[],
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests;

@@ -60,18 +60,6 @@ mod tests {
     use super::*;
     use crate::sim::raster_walk::Regions;
 
-    fn leg(x: f64, y: f64) -> Placed<'static> {
-        Placed {
-            x,
-            y,
-            sin: 0.0,
-            cos: 1.0,
-            half_length: 0.015,
-            half_width: 0.015,
-            shape: &[],
-        }
-    }
-
     #[test]
     fn a_turned_box_holds_only_the_regions_its_outline_crosses() {
         // A bar turned by -45 degrees across the corner where four regions of 32 cells meet
@@ -93,7 +81,7 @@ mod tests {
         assert!(!regions.populated(1, 1));
         // A box within one region holds it.
         let mut one = RegionMap::over((0, 0), (95, 95));
-        leg(40.0, 40.0).add_regions(1.0, &mut one);
+        Placed::leg(40.0, 40.0).add_regions(1.0, &mut one);
         assert!(one.populated(1, 1) && !one.populated(0, 0));
     }
 }

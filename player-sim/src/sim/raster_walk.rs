@@ -33,11 +33,12 @@
 //! rows ahead is free, and the path's place after those is computed at once from the stepping
 //! error ([`free_steps`]) rather than cell by cell. Both walks visit the same cells.
 //!
-//! A jump that would pass a region not walked is cut at the region's edge, and the cell it
-//! is cut at lies within the free square it jumped from: free. When that cell's next step
-//! leaves for a region not walked, the step is all the walk takes from it whatever its own
-//! free square, so that cell is not read: in the cave about one read a ray of 9.7 (most are
-//! cache misses in its 800 × 800 raster), the path, its steps and its readings unchanged.
+//! A jump goes on into each next region its path enters that Stage walks too, while the cell
+//! stepped is the point's ([`free_run`]); it is cut at the edge of a region not walked, and
+//! the cell it is cut at lies within the free square it jumped from: free. When that cell's
+//! next step leaves for a region not walked, the step is all the walk takes from it whatever
+//! its own free square, so that cell is not read. In the cave a ray reads about 7.6 cells of
+//! the raster (most are cache misses in its 800 × 800 raster).
 
 mod regions;
 
@@ -105,17 +106,8 @@ impl Ray {
         })
     }
 
-    /// Metres from the start to `(x, y)` cells, counted along the axis with more steps.
-    fn distance(&self, (x, y): (f64, f64)) -> f64 {
-        let cells = if self.columns > self.rows {
-            ((x - self.start.0) / self.cos).abs()
-        } else {
-            ((y - self.start.1) / self.sin).abs()
-        };
-        cells / self.per_metre
-    }
-
-    /// Cells from the start to `(x, y)` along the axis with more steps.
+    /// Cells from the start to `(x, y)` along the axis with more steps, the one distances
+    /// are counted along.
     #[inline]
     fn along(&self, (x, y): (f64, f64)) -> f64 {
         if self.columns > self.rows {
@@ -125,16 +117,25 @@ impl Ray {
         }
     }
 
+    /// That axis's share of the direction: the cosine or the sine, without sign.
+    fn share(&self) -> f64 {
+        if self.columns > self.rows {
+            self.cos.abs()
+        } else {
+            self.sin.abs()
+        }
+    }
+
+    /// Metres from the start to `(x, y)` cells, counted along the axis with more steps.
+    fn distance(&self, at: (f64, f64)) -> f64 {
+        self.along(at) / self.share() / self.per_metre
+    }
+
     /// Cells along the axis with more steps within which a point is surely within `stop`
     /// metres: a hair less than the exact bound, so that only a point near it needs
     /// [`Ray::distance`]'s divisions (a ray crossing a hall's empty regions asks at each).
     fn surely_within(&self, stop: f64) -> f64 {
-        let slope = if self.columns > self.rows {
-            self.cos
-        } else {
-            self.sin
-        };
-        stop * self.per_metre * slope.abs() * (1.0 - 1e-9)
+        stop * self.per_metre * self.share() * (1.0 - 1e-9)
     }
 }
 
@@ -267,28 +268,25 @@ fn free_run<R: Regions>(regions: &R, ray: &Ray, from: Jump, d: i64) -> (i64, i64
         if !from.own {
             return (i, j);
         }
-        // The pattern stopped where its next step would leave the square, the region, or
-        // (past the first region) the point's side of the origin.
-        let (next, step) = if error < 0 {
-            ((region.0 + sx, region.1), (i + 1, j))
+        // The pattern stopped where its next step (a column while the error is negative, else
+        // a row) would leave the square, the region, or (past the first region) the point's
+        // side of the origin.
+        let column = error < 0;
+        let (next, step, edge) = if column {
+            ((region.0 + sx, region.1), (i + 1, j), i < d && i == limit_x)
         } else {
-            ((region.0, region.1 + sy), (i, j + 1))
-        };
-        let edge = if error < 0 {
-            i < d && i == limit_x
-        } else {
-            j < d && j == limit_y
+            ((region.0, region.1 + sy), (i, j + 1), j < d && j == limit_y)
         };
         if !edge || step.0 > kx || step.1 > ky || !regions.populated(next.0, next.1) {
             return (i, j);
         }
         region = next;
-        if error < 0 {
-            limit_x += 32;
+        let (x, y) = if column {
+            (limit_x + 32, limit_y)
         } else {
-            limit_y += 32;
-        }
-        (limit_x, limit_y) = (limit_x.min(kx), limit_y.min(ky));
+            (limit_x, limit_y + 32)
+        };
+        (limit_x, limit_y) = (x.min(kx), y.min(ky));
     }
 }
 

@@ -23,32 +23,34 @@ pub(super) struct WallBoxes {
     members: Vec<u32>,
 }
 
+/// `boxes` with those of the same span across axis `axis` (0: x, 1: y) that touch or overlap
+/// along it merged into one.
+fn merged_along(mut boxes: Vec<CellBox>, axis: usize) -> Vec<CellBox> {
+    let (low, high, across_low, across_high) = (axis, axis + 2, 1 - axis, 3 - axis);
+    boxes.sort_unstable_by_key(|b| (b[across_low], b[across_high], b[low]));
+    let mut merged: Vec<CellBox> = Vec::with_capacity(boxes.len());
+    for b in boxes {
+        match merged.last_mut() {
+            Some(m)
+                if m[across_low] == b[across_low]
+                    && m[across_high] == b[across_high]
+                    && b[low] <= m[high] + 1 =>
+            {
+                m[high] = m[high].max(b[high])
+            }
+            _ => merged.push(b),
+        }
+    }
+    merged
+}
+
 impl WallBoxes {
     /// The boxes `boxes`, which together hold exactly the wall cells, merged: boxes of the same
     /// rows in touching columns (a drawn line's cells), then of the same columns in touching
     /// rows (a bitmap's pixel rows into walls). The merged boxes hold the same cells.
     pub(super) fn new(mut boxes: Vec<CellBox>) -> WallBoxes {
         boxes.retain(|b| b[0] <= b[2] && b[1] <= b[3]);
-        boxes.sort_unstable_by_key(|&[x0, y0, _, y1]| (y0, y1, x0));
-        let mut rows: Vec<CellBox> = Vec::with_capacity(boxes.len());
-        for b in boxes {
-            match rows.last_mut() {
-                Some(m) if m[1] == b[1] && m[3] == b[3] && b[0] <= m[2] + 1 => {
-                    m[2] = m[2].max(b[2])
-                }
-                _ => rows.push(b),
-            }
-        }
-        rows.sort_unstable_by_key(|&[x0, y0, x1, _]| (x0, x1, y0));
-        let mut merged: Vec<CellBox> = Vec::with_capacity(rows.len());
-        for b in rows {
-            match merged.last_mut() {
-                Some(m) if m[0] == b[0] && m[2] == b[2] && b[1] <= m[3] + 1 => {
-                    m[3] = m[3].max(b[3])
-                }
-                _ => merged.push(b),
-            }
-        }
+        let merged = merged_along(merged_along(boxes, 0), 1);
         let Some(low) = merged
             .iter()
             .map(|b| (b[0], b[1]))

@@ -1,24 +1,12 @@
 use super::*;
 
-fn leg(x: f64, y: f64) -> Placed<'static> {
-    Placed {
-        x,
-        y,
-        sin: 0.0,
-        cos: 1.0,
-        half_length: 0.015,
-        half_width: 0.015,
-        shape: &[],
-    }
-}
-
 #[test]
 fn a_leg_is_met_on_its_cells_not_its_outline() {
     // A 3 cm leg from 1.985 to 2.015 m: cells 99 to 100 of 2 cm (1.98 to 2.02 m). With
     // nothing else about, Stage's ray jumps the empty regions to the leg's (from x = 96
     // cells, 1.92 m) and walks on in whole cells from there: it meets cell 99 at x = 99,
     // 98.5 cells (1.97 m) from its start half a cell east of 0.
-    let l = leg(2.0, 0.0);
+    let l = Placed::leg(2.0, 0.0);
     let d = l
         .cast_cells(0.02, (0.01, 0.0), (1.0, 0.0), 8.0, None)
         .unwrap();
@@ -51,7 +39,7 @@ fn only_the_outline_is_solid() {
     let b = Placed {
         half_length: 0.5,
         half_width: 0.5,
-        ..leg(0.0, 0.0)
+        ..Placed::leg(0.0, 0.0)
     };
     // From inside, the far side.
     let d = b
