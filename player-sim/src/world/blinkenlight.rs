@@ -6,9 +6,10 @@
 //! Rangers at its height meet it, and at any height its cells make their region one Stage's
 //! rays walk cell by cell rather than jump: a laser passing the robot's own light steps on
 //! from where it was, rather than starting again where its line leaves the region, and its
-//! stepped path (and so which table leg it grazes) is Stage's. In uoa_robotics_lab, at one of the golden poses, the
-//! robot's lights alone hold a region its laser crosses: without them 18 laser beams and a
-//! sonar's took another path through the tables' legs, some over 3 m off Stage's readings.
+//! stepped path (and so which table leg it grazes) is Stage's. In uoa_robotics_lab, at one of
+//! the golden poses, the robot's lights alone hold a region its laser crosses: without them 18
+//! laser beams and a sonar's took another path through the tables' legs, some over 3 m off
+//! Stage's readings.
 
 use super::models::Model;
 
