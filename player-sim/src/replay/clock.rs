@@ -194,7 +194,10 @@ impl Clock {
                 state.position_at_anchor = due.min(self.duration);
                 state.step_to_next = false;
             }
-            if state.position(self.duration) >= due {
+            // Read once: the position moves on while playing, and the wait below is counted
+            // from the very position found short of `due` here.
+            let position = state.position(self.duration);
+            if position >= due {
                 state.step_to_next = false;
                 return Wake::Due;
             }
@@ -208,7 +211,7 @@ impl Clock {
             }
             let mut wait = until - now;
             if state.playing {
-                let left = (due - state.position(self.duration)) as f64 / state.speed / NS_PER_S;
+                let left = (due - position) as f64 / state.speed / NS_PER_S;
                 wait = wait.min(Duration::from_secs_f64(left));
             }
             state = self.changed.wait_timeout(state, wait).expect("clock").0;
