@@ -10,6 +10,7 @@ mod body_pose;
 mod box_cells;
 mod box_regions;
 mod camera;
+mod cell_blocks;
 mod directions;
 mod drivers;
 mod geometry;

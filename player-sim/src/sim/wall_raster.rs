@@ -12,6 +12,7 @@
 //! wall cell is), so that a ray crosses open space in a few jumps instead of cell by cell: the
 //! cost of a beam grows with the walls it passes near, not with its length in 2 cm cells.
 
+use super::cell_blocks::CellBlocks;
 use super::raster_walk::RegionMap;
 use super::wall_boxes::{CellBox, WallBoxes};
 use super::wall_tiles::{CLEARANCE, WallTiles};
@@ -48,8 +49,9 @@ pub struct WallRaster {
     /// For a ray heading into each quarter of directions (east-north, west-north, east-south,
     /// west-south: `raster_walk::quadrant`), the side of the largest square of free cells with this cell
     /// at its corner and the rest of it that way, at most [`MAX_CLEARANCE`]: a ray moving away
-    /// from a wall beside or behind it jumps as far as the walls ahead allow.
-    ahead: [Vec<u8>; 4],
+    /// from a wall beside or behind it jumps as far as the walls ahead allow. In blocks, not
+    /// rows: a ray's last reads before a wall lie close together.
+    ahead: [CellBlocks; 4],
     /// Boxes holding exactly the wall cells: for a scan to tell which beams may meet a wall,
     /// and for the tiles.
     pub(super) boxes: WallBoxes,
@@ -283,7 +285,10 @@ impl WallRaster {
         self.ahead = std::thread::scope(|scope| {
             let quarters =
                 [0, 1, 2, 3].map(|q| scope.spawn(move || raster.squares(q & 1 == 1, q & 2 == 2)));
-            quarters.map(|quarter| quarter.join().expect("a raster thread"))
+            quarters.map(|quarter| {
+                let rows = quarter.join().expect("a raster thread");
+                CellBlocks::from_rows(&rows, raster.width)
+            })
         });
     }
 
@@ -369,7 +374,7 @@ impl WallRaster {
             if let Some(tiles) = &self.tiles {
                 return u32::from(tiles.get(q, c, r, &self.boxes));
             }
-            return u32::from(self.ahead[q][r * self.width + c]);
+            return u32::from(self.ahead[q].get(c, r));
         }
         self.outside(x, y)
     }
