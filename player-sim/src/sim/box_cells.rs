@@ -161,19 +161,31 @@ impl BoxCells {
 
 /// The cells of every robot's body and mounted bodies for one set of poses, each drawn the
 /// first time any scan's ray needs it (`BodyIndex`): in the swarm a robot is seen by a dozen
-/// scans a step, and each drew its cells anew.
+/// scans a step, and each drew its cells anew. With them, the regions each body holds
+/// ([`Placed::region_list`]), listed the first time a scan's reach takes it in.
 #[derive(Debug, Default)]
-pub(super) struct DrawnCells(Vec<OnceLock<Option<BoxCells>>>);
+pub(super) struct DrawnCells {
+    cells: Vec<OnceLock<Option<BoxCells>>>,
+    regions: Vec<OnceLock<Vec<(i64, i64)>>>,
+}
 
 impl DrawnCells {
     /// `count` bodies, none drawn.
     pub(super) fn new(count: usize) -> DrawnCells {
-        DrawnCells((0..count).map(|_| OnceLock::new()).collect())
+        DrawnCells {
+            cells: (0..count).map(|_| OnceLock::new()).collect(),
+            regions: (0..count).map(|_| OnceLock::new()).collect(),
+        }
     }
 
     /// Body `k`'s cells, once drawn.
     pub(super) fn get(&self, k: usize) -> Option<&OnceLock<Option<BoxCells>>> {
-        self.0.get(k)
+        self.cells.get(k)
+    }
+
+    /// Body `k`'s regions, once listed.
+    pub(super) fn regions(&self, k: usize) -> Option<&OnceLock<Vec<(i64, i64)>>> {
+        self.regions.get(k)
     }
 }
 
@@ -199,14 +211,14 @@ impl<'b> Drawn<'b> {
 /// A copy draws its cells anew: they are a cache of the poses.
 impl Clone for DrawnCells {
     fn clone(&self) -> DrawnCells {
-        DrawnCells::new(self.0.len())
+        DrawnCells::new(self.cells.len())
     }
 }
 
 /// The cells are a function of the poses, which the index compares.
 impl PartialEq for DrawnCells {
     fn eq(&self, other: &DrawnCells) -> bool {
-        self.0.len() == other.0.len()
+        self.cells.len() == other.cells.len()
     }
 }
 

@@ -13,6 +13,22 @@ use super::wall_raster::line_cells;
 impl Placed<'_> {
     /// Adds the regions of Stage's raster (`resolution`) the box's outline cells lie in.
     pub(super) fn add_regions(&self, resolution: f64, regions: &mut RegionMap) {
+        self.each_region(resolution, |x, y| regions.hold(x, y));
+    }
+
+    /// The regions [`Placed::add_regions`] adds, listed once each: a robot's, kept for every
+    /// scan of a step (each scan held the regions of every body within its reach anew, a
+    /// tenth of the cave's run).
+    pub(super) fn region_list(&self, resolution: f64) -> Vec<(i64, i64)> {
+        let mut list = Vec::new();
+        self.each_region(resolution, |x, y| list.push((x, y)));
+        list.sort_unstable();
+        list.dedup();
+        list
+    }
+
+    /// Calls `hold` with each region the box's outline cells lie in (some more than once).
+    fn each_region(&self, resolution: f64, mut hold: impl FnMut(i64, i64)) {
         let per_metre = 1.0 / resolution;
         if !(per_metre.is_finite() && per_metre > 0.0) {
             return;
@@ -29,7 +45,7 @@ impl Placed<'_> {
         }
         for polygon in &corners {
             for (k, &a) in polygon.iter().enumerate() {
-                hold_edge(a, polygon[(k + 1) % polygon.len()], regions);
+                hold_edge(a, polygon[(k + 1) % polygon.len()], &mut hold);
             }
         }
     }
@@ -39,7 +55,7 @@ impl Placed<'_> {
 /// from `a` to `b` a column or a row at a time, within the rectangle of its ends: an edge
 /// with its ends in one row (or column) of regions crosses each region between them, and only
 /// one across a region's corner needs its cells walked.
-fn hold_edge(a: (i64, i64), b: (i64, i64), regions: &mut RegionMap) {
+fn hold_edge(a: (i64, i64), b: (i64, i64), hold: &mut impl FnMut(i64, i64)) {
     let (ra, rb) = (
         (region_of(a.0), region_of(a.1)),
         (region_of(b.0), region_of(b.1)),
@@ -47,11 +63,11 @@ fn hold_edge(a: (i64, i64), b: (i64, i64), regions: &mut RegionMap) {
     if ra.0 == rb.0 || ra.1 == rb.1 {
         for y in ra.1.min(rb.1)..=ra.1.max(rb.1) {
             for x in ra.0.min(rb.0)..=ra.0.max(rb.0) {
-                regions.hold(x, y);
+                hold(x, y);
             }
         }
     } else {
-        line_cells(a, b, |x, y| regions.hold(region_of(x), region_of(y)));
+        line_cells(a, b, |x, y| hold(region_of(x), region_of(y)));
     }
 }
 
@@ -83,5 +99,8 @@ mod tests {
         let mut one = RegionMap::over((0, 0), (95, 95));
         Placed::leg(40.0, 40.0).add_regions(1.0, &mut one);
         assert!(one.populated(1, 1) && !one.populated(0, 0));
+        // Listed, the same regions once each.
+        assert_eq!(bar.region_list(1.0), [(0, 0), (0, 1), (1, 0)]);
+        assert_eq!(Placed::leg(40.0, 40.0).region_list(1.0), [(1, 1)]);
     }
 }

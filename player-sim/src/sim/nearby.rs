@@ -12,6 +12,8 @@ use std::sync::Arc;
 use super::body_index::BodyIndex;
 
 mod mounted;
+mod narrowed;
+mod nearest;
 
 use super::body_pose::body_at;
 use super::box_cells::{BoxCells, Drawn, Placed, RayScene, cell_margin};
@@ -47,10 +49,19 @@ pub struct SolidBox<'a> {
     /// A robot's body or mounted body: which of the robots' index's bodies, whose cells are
     /// drawn once for every scan ([`NO_BODY`]: an obstacle, or a body cut by height).
     body: u32,
+    /// Whose it is: a robot's (its body, or mounted on it) or an obstacle.
+    owner: Owner,
 }
 
 /// [`SolidBox::body`] of a box whose cells each scan draws for itself.
 const NO_BODY: u32 = u32::MAX;
+
+/// Whose a box is: the robot it is the body of or is mounted on, or which obstacle it is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Owner {
+    Robot(u32),
+    Obstacle(u32),
+}
 
 impl SolidBox<'_> {
     /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box, if ahead: its
@@ -171,7 +182,7 @@ impl<'a> NearbyBoxes<'a> {
                 let (state, spec) = (&sim.robots[i], &sim.world.robots[i]);
                 let body = body_at(state.pose, spec.origin);
                 (
-                    (body, i as u32),
+                    (body, i as u32, Owner::Robot(i as u32)),
                     Some(index.trig(i)[1]),
                     spec.size,
                     spec.color,
@@ -185,11 +196,11 @@ impl<'a> NearbyBoxes<'a> {
             .iter()
             .enumerate()
             .filter(|(k, _)| !sim.holds(except, *k))
-            .map(|(_, o)| {
+            .map(|(k, o)| {
                 let body = body_at(o.pose, o.origin);
                 let shape = (&o.shape[..], &o.shape_slices[..]);
                 (
-                    (body, NO_BODY),
+                    (body, NO_BODY, Owner::Obstacle(k as u32)),
                     None,
                     o.size,
                     o.color,
@@ -198,7 +209,7 @@ impl<'a> NearbyBoxes<'a> {
                 )
             });
         boxes.extend(robots.chain(obstacles).filter_map(
-            |((pose, body), trig, size, color, ranger_return, (shape, slices))| {
+            |((pose, body, owner), trig, size, color, ranger_return, (shape, slices))| {
                 // Squares, not `hypot`: every sensor asks this of the robots around it.
                 let radius = (size[0] * size[0] + size[1] * size[1]).sqrt() / 2.0
                     + cell_margin(sim.world.resolution);
@@ -223,6 +234,7 @@ impl<'a> NearbyBoxes<'a> {
                         resolution: 0.0,
                         // A body cut by height has cells of its own for each height.
                         body: if slices.is_empty() { body } else { NO_BODY },
+                        owner,
                     }
                 })
             },
@@ -278,7 +290,16 @@ impl<'a> NearbyBoxes<'a> {
     /// Holds in `regions` those of Stage's raster of `resolution` the boxes' cells lie in.
     pub(super) fn hold_regions(&self, resolution: f64, regions: &mut RegionMap) {
         for b in &self.boxes {
-            b.placed().add_regions(resolution, regions);
+            let index = self.index.as_ref().filter(|_| b.body != NO_BODY);
+            match index.and_then(|index| index.held_regions(b.body as usize)) {
+                Some(listed) => {
+                    let listed = listed.get_or_init(|| b.placed().region_list(resolution));
+                    for &(x, y) in listed {
+                        regions.hold(x, y);
+                    }
+                }
+                None => b.placed().add_regions(resolution, regions),
+            }
         }
     }
 
@@ -306,109 +327,4 @@ impl<'a> NearbyBoxes<'a> {
         let b = &self.boxes[k];
         (b.x, b.y, b.radius)
     }
-
-    /// [`NearbyBoxes::nearest_along`] among the boxes `candidates` lists (indices, in
-    /// increasing order): those the scan's per-beam lists (`sim/beams.rs`) have in the ray's
-    /// direction.
-    pub fn nearest_among(
-        &self,
-        candidates: &[u32],
-        (x, y): (f64, f64),
-        (dx, dy): (f64, f64),
-        max: f64,
-        counts: impl Fn(&SolidBox<'a>) -> bool,
-    ) -> Option<(f64, &SolidBox<'a>)> {
-        let listed = candidates
-            .iter()
-            .map(|&k| (&self.boxes[k as usize], self.drawn(k as usize)));
-        nearest_of(
-            listed.filter(|(b, _)| counts(b)),
-            self.scene.as_ref(),
-            (x, y),
-            (dx, dy),
-            max,
-        )
-    }
-
-    /// The nearest box along the ray from `(x, y)` at `angle`, within `max`: (distance, box).
-    pub fn nearest(&self, x: f64, y: f64, angle: f64, max: f64) -> Option<(f64, &SolidBox<'a>)> {
-        self.nearest_where(x, y, angle, max, |_| true)
-    }
-
-    /// [`NearbyBoxes::nearest`] among the boxes `counts` accepts.
-    pub fn nearest_where(
-        &self,
-        x: f64,
-        y: f64,
-        angle: f64,
-        max: f64,
-        counts: impl Fn(&SolidBox<'a>) -> bool,
-    ) -> Option<(f64, &SolidBox<'a>)> {
-        let (dy, dx) = angle.sin_cos();
-        self.nearest_along(x, y, dx, dy, max, counts)
-    }
-
-    /// [`NearbyBoxes::nearest_where`] along the unit direction `(dx, dy)`.
-    pub fn nearest_along(
-        &self,
-        x: f64,
-        y: f64,
-        dx: f64,
-        dy: f64,
-        max: f64,
-        counts: impl Fn(&SolidBox<'a>) -> bool,
-    ) -> Option<(f64, &SolidBox<'a>)> {
-        nearest_of(
-            self.boxes
-                .iter()
-                .enumerate()
-                .map(|(k, b)| (b, self.drawn(k)))
-                .filter(|(b, _)| counts(b)),
-            self.scene.as_ref(),
-            (x, y),
-            (dx, dy),
-            max,
-        )
-    }
-
-    /// Every box along the ray within `max`, in no particular order: (distance, box).
-    pub fn all_along(
-        &self,
-        x: f64,
-        y: f64,
-        angle: f64,
-        max: f64,
-    ) -> impl Iterator<Item = (f64, &SolidBox<'a>)> {
-        let (dy, dx) = angle.sin_cos();
-        self.boxes
-            .iter()
-            .filter(move |b| b.may_hit(x, y, dx, dy, max))
-            .filter_map(move |b| {
-                b.hit(None, None, x, y, dx, dy)
-                    .filter(|&d| d <= max)
-                    .map(|d| (d, b))
-            })
-    }
-}
-
-/// The nearest of `boxes` along the ray from `(x, y)` in the unit direction `(dx, dy)`, within
-/// `max`; each box's cheap bounding test is made against the nearest hit so far.
-fn nearest_of<'b, 'a: 'b>(
-    boxes: impl Iterator<Item = (&'b SolidBox<'a>, Option<Drawn<'b>>)>,
-    scene: Option<&RayScene>,
-    (x, y): (f64, f64),
-    (dx, dy): (f64, f64),
-    max: f64,
-) -> Option<(f64, &'b SolidBox<'a>)> {
-    let mut best: Option<(f64, &SolidBox<'a>)> = None;
-    for (b, cells) in boxes {
-        let limit = best.map_or(max, |(d, _)| d);
-        if !b.may_hit(x, y, dx, dy, limit) {
-            continue;
-        }
-        if let Some(d) = b.hit(cells, scene, x, y, dx, dy).filter(|&d| d <= limit) {
-            best = Some((d, b));
-        }
-    }
-    best
 }

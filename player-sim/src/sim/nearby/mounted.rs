@@ -4,7 +4,7 @@
 
 use std::sync::Arc;
 
-use super::{NO_BODY, NearbyBoxes, SolidBox};
+use super::{NO_BODY, NearbyBoxes, Owner, SolidBox};
 use crate::sim::BodyIndex;
 use crate::sim::Simulation;
 use crate::sim::box_cells::cell_margin;
@@ -82,6 +82,7 @@ impl<'a> NearbyBoxes<'a> {
                         .ok()
                         .filter(|_| same)
                         .unwrap_or(NO_BODY),
+                    owner: Owner::Robot(i as u32),
                 });
             }
         }
