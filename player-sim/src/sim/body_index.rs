@@ -12,6 +12,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, OnceLock};
 
 use super::RobotState;
+use super::body_places::{Place, places};
 use super::body_pose::body_at;
 use super::box_cells::{BoxCells, DrawnCells};
 use crate::world::{Pose, World, floor_i64};
@@ -39,6 +40,8 @@ pub struct BodyIndex {
     mounted: Vec<u32>,
     /// The bodies' cells on the world's raster, drawn once for every scan of these poses.
     drawn: DrawnCells,
+    /// Where each body lies (numbered as `drawn`'s): placed once for every scan.
+    places: Vec<Place>,
 }
 
 impl BodyIndex {
@@ -88,7 +91,7 @@ impl BodyIndex {
         } else {
             (1, 1)
         };
-        let trig = robots
+        let trig: Vec<[(f64, f64); 2]> = robots
             .iter()
             .zip(&world.robots)
             .map(|(state, spec)| {
@@ -107,7 +110,9 @@ impl BodyIndex {
             mounted.push((bodies - world.robots.len()) as u32);
             bodies += spec.mounted_bodies.len();
         }
+        let places = places(world, robots, &trig);
         let mut index = BodyIndex {
+            places,
             trig,
             mounted,
             drawn: DrawnCells::new(bodies),
@@ -151,6 +156,11 @@ impl BodyIndex {
     /// poses.
     pub(super) fn drawn(&self, k: usize) -> Option<&OnceLock<Option<BoxCells>>> {
         self.drawn.get(k)
+    }
+
+    /// Where body `k` (numbered as in [`BodyIndex::drawn`]) lies.
+    pub(super) fn place(&self, k: usize) -> Place {
+        self.places[k]
     }
 
     /// Where the regions body `k` (numbered as in [`BodyIndex::drawn`]) holds are listed, once

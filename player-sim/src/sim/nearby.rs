@@ -12,13 +12,11 @@ use std::sync::Arc;
 use super::body_index::BodyIndex;
 
 mod mounted;
-mod narrowed;
 mod nearest;
 
-use super::body_pose::body_at;
+use super::body_places::obstacle_place;
 use super::box_cells::{BoxCells, Drawn, Placed, RayScene, cell_margin};
 use super::geometry::slab_hit;
-use super::raster_walk::RegionMap;
 use super::shapes::ray_into_polygons;
 use crate::world::{Polygon, ShapeSlice, slice_at};
 
@@ -49,19 +47,10 @@ pub struct SolidBox<'a> {
     /// A robot's body or mounted body: which of the robots' index's bodies, whose cells are
     /// drawn once for every scan ([`NO_BODY`]: an obstacle, or a body cut by height).
     body: u32,
-    /// Whose it is: a robot's (its body, or mounted on it) or an obstacle.
-    owner: Owner,
 }
 
 /// [`SolidBox::body`] of a box whose cells each scan draws for itself.
 const NO_BODY: u32 = u32::MAX;
-
-/// Whose a box is: the robot it is the body of or is mounted on, or which obstacle it is.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Owner {
-    Robot(u32),
-    Obstacle(u32),
-}
 
 impl SolidBox<'_> {
     /// Where the ray from `(x, y)` along the unit `(dx, dy)` enters the box, if ahead: its
@@ -174,57 +163,48 @@ impl<'a> NearbyBoxes<'a> {
         index.near(x, y, reach, &mut near);
         // At most every robot asked and every obstacle: one allocation, not a doubling series.
         let mut boxes = Vec::with_capacity(near.len() + sim.world.obstacles.len());
+        // The robots placed once for every scan by the index.
         let robots = near
             .iter()
             .copied()
             .filter(move |&i| Some(i) != except)
             .map(|i| {
-                let (state, spec) = (&sim.robots[i], &sim.world.robots[i]);
-                let body = body_at(state.pose, spec.origin);
+                let spec = &sim.world.robots[i];
+                let shape = (&spec.shape[..], &spec.shape_slices[..]);
                 (
-                    (body, i as u32, Owner::Robot(i as u32)),
-                    Some(index.trig(i)[1]),
+                    index.place(i),
+                    i as u32,
                     spec.size,
                     spec.color,
                     spec.ranger_return,
-                    (&spec.shape[..], &spec.shape_slices[..]),
+                    shape,
                 )
             });
+        let resolution = sim.world.resolution;
         let obstacles = sim
             .world
             .obstacles
             .iter()
             .enumerate()
             .filter(|(k, _)| !sim.holds(except, *k))
-            .map(|(k, o)| {
-                let body = body_at(o.pose, o.origin);
+            .map(|(_, o)| {
+                let place = obstacle_place(o, resolution);
                 let shape = (&o.shape[..], &o.shape_slices[..]);
-                (
-                    (body, NO_BODY, Owner::Obstacle(k as u32)),
-                    None,
-                    o.size,
-                    o.color,
-                    o.ranger_return,
-                    shape,
-                )
+                (place, NO_BODY, o.size, o.color, o.ranger_return, shape)
             });
-        boxes.extend(robots.chain(obstacles).filter_map(
-            |((pose, body, owner), trig, size, color, ranger_return, (shape, slices))| {
-                // Squares, not `hypot`: every sensor asks this of the robots around it.
-                let radius = (size[0] * size[0] + size[1] * size[1]).sqrt() / 2.0
-                    + cell_margin(sim.world.resolution);
-                let (ex, ey) = (pose.x - x, pose.y - y);
-                let within = reach + radius;
-                (within >= 0.0 && ex * ex + ey * ey <= within * within).then(|| {
-                    let (sin, cos) = trig.unwrap_or_else(|| pose.a.sin_cos());
-                    SolidBox {
-                        x: pose.x,
-                        y: pose.y,
-                        sin,
-                        cos,
+        boxes.extend(
+            robots
+                .chain(obstacles)
+                .filter(|(place, ..)| place.within((x, y), reach))
+                .map(
+                    |(place, body, size, color, ranger_return, (shape, slices))| SolidBox {
+                        x: place.x,
+                        y: place.y,
+                        sin: place.sin,
+                        cos: place.cos,
                         half_length: size[0] / 2.0,
                         half_width: size[1] / 2.0,
-                        radius,
+                        radius: place.radius,
                         height: size[2],
                         bottom: 0.0,
                         color,
@@ -234,11 +214,9 @@ impl<'a> NearbyBoxes<'a> {
                         resolution: 0.0,
                         // A body cut by height has cells of its own for each height.
                         body: if slices.is_empty() { body } else { NO_BODY },
-                        owner,
-                    }
-                })
-            },
-        ));
+                    },
+                ),
+        );
         NearbyBoxes {
             boxes,
             cells: Vec::new(),
@@ -285,22 +263,6 @@ impl<'a> NearbyBoxes<'a> {
     pub(super) fn walked_in(mut self, scene: RayScene) -> Self {
         self.scene = Some(scene);
         self
-    }
-
-    /// Holds in `regions` those of Stage's raster of `resolution` the boxes' cells lie in.
-    pub(super) fn hold_regions(&self, resolution: f64, regions: &mut RegionMap) {
-        for b in &self.boxes {
-            let index = self.index.as_ref().filter(|_| b.body != NO_BODY);
-            match index.and_then(|index| index.held_regions(b.body as usize)) {
-                Some(listed) => {
-                    let listed = listed.get_or_init(|| b.placed().region_list(resolution));
-                    for &(x, y) in listed {
-                        regions.hold(x, y);
-                    }
-                }
-                None => b.placed().add_regions(resolution, regions),
-            }
-        }
     }
 
     /// Where box `k`'s cells are drawn; `None` unless [`NearbyBoxes::on_raster`].

@@ -16,10 +16,10 @@ use super::box_cells::RayScene;
 use super::directions::Directions;
 use super::nearby::NearbyBoxes;
 use super::raster_walk::RegionMap;
+use super::ray_scene::ray_scene;
 use super::wall_beams::WallBeams;
 use super::wall_free::beams_meeting;
 use super::wall_raster::WallRaster;
-use crate::world::floor_i64;
 use crate::world::{OccupancyGrid, Pose};
 
 /// What a beam hit: its distance, and the `ranger_return` of the thing hit.
@@ -88,51 +88,18 @@ fn walls_seen(
     })
 }
 
-/// How a sensor at `at` reaching `reach` walks its rays (`sim/raster_walk.rs`): the regions of
-/// Stage's raster within its reach that hold a wall or a body (its own robot and what that
-/// carries among them). Stage walks those regions cell by cell, so its rays' paths depend on
-/// them.
-pub(super) fn ray_scene(sim: &Simulation, at: (f64, f64), reach: f64) -> RayScene {
-    scene_and_boxes(sim, at, reach).0
-}
-
-/// [`ray_scene`], and the boxes whose regions it holds: every box within the reach, its own
-/// robot's among them, for the scan's rays to be narrowed to ([`NearbyBoxes::narrowed`]).
-fn scene_and_boxes(sim: &Simulation, at: (f64, f64), reach: f64) -> (RayScene, NearbyBoxes<'_>) {
-    let resolution = sim.world.resolution;
-    let span = |v: f64, s: f64| floor_i64((v + s * reach) / resolution) + 64 * s as i64;
-    let (low, high) = (
-        (span(at.0, -1.0), span(at.1, -1.0)),
-        (span(at.0, 1.0), span(at.1, 1.0)),
-    );
-    let mut regions = RegionMap::over(low, high);
-    if let Some(raster) = sim.wall_raster() {
-        regions.hold_all(raster.regions());
-    }
-    let boxes =
-        NearbyBoxes::around(sim, None, at.0, at.1, reach).with_mounted(sim, None, at, reach);
-    boxes.hold_regions(resolution, &mut regions);
-    let scene = RayScene {
-        range: reach,
-        regions,
-    };
-    (scene, boxes)
-}
-
-/// The boxes of `all` (the scan's, [`scene_and_boxes`]) a sensor of robot `robot` at `at`
-/// sees within `reach` at height `z`, and each beam's share of them; rays walk to them as in
-/// `scene`.
+/// The boxes a sensor at `at` sees within `reach` at height `z`, and each beam's share of them;
+/// rays walk to them as in `scene`.
 fn boxes_within<'a>(
     sim: &'a Simulation,
-    all: &NearbyBoxes<'a>,
     robot: usize,
     (at, reach): ((f64, f64), f64),
     fan: Fan,
     z: f64,
     scene: RayScene,
 ) -> (NearbyBoxes<'a>, BeamBoxes) {
-    let boxes = all
-        .narrowed(sim, robot, at, reach)
+    let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, reach)
+        .with_mounted(sim, Some(robot), at, reach)
         .reaching(z)
         .on_raster(sim.world.resolution)
         .walked_in(scene);
@@ -163,7 +130,7 @@ pub(super) fn caster(
         .flatten();
     let (walls, wall_beams) = seen.map_or((None, None), |(walls, beams)| (Some(walls), beams));
     let directions = sim.fan_directions.of(robot, fan);
-    let (scene, all) = scene_and_boxes(sim, at, max);
+    let scene = ray_scene(sim, at, max);
     let regions = scene.regions.clone();
     let wall_along =
         move |(dx, dy): (f64, f64)| walls.and_then(|w| w.cast(at.0, at.1, dx, dy, max, &regions));
@@ -180,7 +147,7 @@ pub(super) fn caster(
         .iter()
         .try_fold(0.0f64, |far, wall| wall.map(|d| far.max(d)))
         .map_or(max, |far| far.min(max));
-    let (boxes, by_beam) = boxes_within(sim, &all, robot, (at, reach), fan, z, scene.clone());
+    let (boxes, by_beam) = boxes_within(sim, robot, (at, reach), fan, z, scene.clone());
     let everything = OnceCell::new();
     let floor_return = sim.world.floor_ranger_return;
     move |beam, angle| {
@@ -190,7 +157,7 @@ pub(super) fn caster(
             (fan_walls[beam], &boxes, by_beam.of(beam))
         } else {
             let (all, by_beam) = everything
-                .get_or_init(|| boxes_within(sim, &all, robot, (at, max), fan, z, scene.clone()));
+                .get_or_init(|| boxes_within(sim, robot, (at, max), fan, z, scene.clone()));
             // Turned off its fan's direction: walked whether or not the fan's beam may meet
             // a wall.
             (wall_along(direction), all, by_beam.of(beam))

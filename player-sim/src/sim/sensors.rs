@@ -5,7 +5,8 @@ use super::beams::Fan;
 use super::body_pose::on_robot;
 use super::box_cells::RayScene;
 use super::directions::Directions;
-use super::scan_caster::{Hit, caster, ray_scene, walls_reach};
+use super::ray_scene::ray_scene;
+use super::scan_caster::{Hit, caster, walls_reach};
 use super::{GroundBox, Simulation, wrap};
 use crate::world::{FiducialSpec, Pose, RangerSpec, slice_at};
 

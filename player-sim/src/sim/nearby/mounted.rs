@@ -4,11 +4,9 @@
 
 use std::sync::Arc;
 
-use super::{NO_BODY, NearbyBoxes, Owner, SolidBox};
+use super::{NO_BODY, NearbyBoxes, SolidBox};
 use crate::sim::BodyIndex;
 use crate::sim::Simulation;
-use crate::sim::box_cells::cell_margin;
-use crate::world::Pose;
 
 impl<'a> NearbyBoxes<'a> {
     /// Were the robots asked of `index` (or of none)?
@@ -40,37 +38,22 @@ impl<'a> NearbyBoxes<'a> {
         // The mounted bodies' cells drawn by the index the robots were asked of.
         let same = self.same_index(&index);
         for i in near.into_iter().filter(|&i| Some(i) != except) {
-            let (state, spec) = (&sim.robots[i], &sim.world.robots[i]);
-            let [(s, c), _] = index.trig(i);
+            let spec = &sim.world.robots[i];
             for (k, body) in spec.mounted_bodies.iter().enumerate() {
-                // `on_robot`, with the robot's sine and cosine taken once for the step.
-                let p = state.pose;
-                let pose = Pose {
-                    x: p.x + c * body.pose.x - s * body.pose.y,
-                    y: p.y + s * body.pose.x + c * body.pose.y,
-                    a: p.a + body.pose.a,
-                };
-                // Squares, not `hypot`: every scan asks this of the robots around it.
-                let radius = (body.size[0] * body.size[0] + body.size[1] * body.size[1]).sqrt()
-                    / 2.0
-                    + cell_margin(sim.world.resolution);
-                let (ex, ey, within) = (pose.x - x, pose.y - y, reach + radius);
-                if !(within >= 0.0 && ex * ex + ey * ey <= within * within) {
+                // Placed once for every scan by the index.
+                let number = index.mounted_body(i, k);
+                let place = index.place(number);
+                if !place.within((x, y), reach) {
                     continue;
                 }
-                let (sin, cos) = if body.pose.a == 0.0 {
-                    (s, c)
-                } else {
-                    pose.a.sin_cos()
-                };
                 self.boxes.push(SolidBox {
-                    x: pose.x,
-                    y: pose.y,
-                    sin,
-                    cos,
+                    x: place.x,
+                    y: place.y,
+                    sin: place.sin,
+                    cos: place.cos,
                     half_length: body.size[0] / 2.0,
                     half_width: body.size[1] / 2.0,
-                    radius,
+                    radius: place.radius,
                     height: body.bottom + body.size[2],
                     bottom: body.bottom,
                     color: spec.color,
@@ -78,11 +61,10 @@ impl<'a> NearbyBoxes<'a> {
                     shape: &body.shape,
                     slices: &[],
                     resolution: 0.0,
-                    body: u32::try_from(index.mounted_body(i, k))
+                    body: u32::try_from(number)
                         .ok()
                         .filter(|_| same)
                         .unwrap_or(NO_BODY),
-                    owner: Owner::Robot(i as u32),
                 });
             }
         }
