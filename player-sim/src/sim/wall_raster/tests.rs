@@ -50,3 +50,37 @@ fn a_line_is_four_connected_and_ends_at_both_ends() {
     assert_eq!(walls.len(), 12 + 7 + 1);
     assert!(walls.contains(&(-5, -5)) && walls.contains(&(7, 2)));
 }
+
+/// A region holds a wall when one of its cells is a wall, and only then: the regions are told
+/// from their corner cells' squares, and the raster's first cell lies on no region's corner.
+#[test]
+fn the_walls_regions_are_those_holding_a_wall_cell() {
+    use crate::sim::raster_walk::{Regions, region_of};
+    use crate::sim::test_randoms::randoms;
+    let mut next = randoms(0x4E61);
+    for _ in 0..20 {
+        let mut r = WallRaster {
+            first: (-70, -70),
+            width: 140,
+            height: 140,
+            clearance: vec![MAX_CLEARANCE; 140 * 140],
+            ..raster_of(&[])
+        };
+        // Regions -2 to 1 each way lie wholly within the raster.
+        let walls: Vec<(i64, i64)> = (0..6)
+            .map(|_| ((next() * 128.0) as i64 - 64, (next() * 128.0) as i64 - 64))
+            .collect();
+        for &(x, y) in &walls {
+            r.mark(x, y);
+        }
+        r.count_clearance();
+        for ry in -2..2 {
+            for rx in -2..2 {
+                let held = walls
+                    .iter()
+                    .any(|&(x, y)| (region_of(x), region_of(y)) == (rx, ry));
+                assert_eq!(r.regions().populated(rx, ry), held, "region ({rx}, {ry})");
+            }
+        }
+    }
+}
