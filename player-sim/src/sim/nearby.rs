@@ -149,7 +149,7 @@ pub struct NearbyBoxes<'a> {
     asked: Option<((f64, f64, f64), Vec<usize>)>,
     /// How rangers walk to the cells: Stage's path for a sensor's range among the regions it
     /// walks (see [`NearbyBoxes::walked_in`]).
-    scene: Option<RayScene>,
+    scene: Option<Arc<RayScene>>,
 }
 
 impl<'a> NearbyBoxes<'a> {
@@ -260,7 +260,7 @@ impl<'a> NearbyBoxes<'a> {
 
     /// Rays walk to the boxes' cells along the path Stage's rays take in `scene` (see
     /// `sim/raster_walk.rs`).
-    pub(super) fn walked_in(mut self, scene: RayScene) -> Self {
+    pub(super) fn walked_in(mut self, scene: Arc<RayScene>) -> Self {
         self.scene = Some(scene);
         self
     }

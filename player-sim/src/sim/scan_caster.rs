@@ -96,7 +96,7 @@ fn boxes_within<'a>(
     (at, reach): ((f64, f64), f64),
     fan: Fan,
     z: f64,
-    scene: RayScene,
+    scene: Arc<RayScene>,
 ) -> (NearbyBoxes<'a>, BeamBoxes) {
     let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, reach)
         .with_mounted(sim, Some(robot), at, reach)
@@ -130,10 +130,12 @@ pub(super) fn caster(
         .flatten();
     let (walls, wall_beams) = seen.map_or((None, None), |(walls, beams)| (Some(walls), beams));
     let directions = sim.fan_directions.of(robot, fan);
-    let scene = ray_scene(sim, at, max);
-    let regions = scene.regions.clone();
-    let wall_along =
-        move |(dx, dy): (f64, f64)| walls.and_then(|w| w.cast(at.0, at.1, dx, dy, max, &regions));
+    // Shared by the walls' walks and the boxes', not copied for each.
+    let scene = Arc::new(ray_scene(sim, at, max));
+    let walked = scene.clone();
+    let wall_along = move |(dx, dy): (f64, f64)| {
+        walls.and_then(|w| w.cast(at.0, at.1, dx, dy, max, &walked.regions))
+    };
     let fan_walls: Vec<Option<f64>> = (0..fan.count)
         .map(|beam| {
             let may_meet = wall_beams.as_ref().is_none_or(|w| w[beam]);

@@ -21,7 +21,7 @@ impl<'a> NearbyBoxes<'a> {
             .map(|&k| (&self.boxes[k as usize], self.drawn(k as usize)));
         nearest_of(
             listed.filter(|(b, _)| counts(b)),
-            self.scene.as_ref(),
+            self.scene.as_deref(),
             (x, y),
             (dx, dy),
             max,
@@ -62,7 +62,7 @@ impl<'a> NearbyBoxes<'a> {
                 .enumerate()
                 .map(|(k, b)| (b, self.drawn(k)))
                 .filter(|(b, _)| counts(b)),
-            self.scene.as_ref(),
+            self.scene.as_deref(),
             (x, y),
             (dx, dy),
             max,
