@@ -26,6 +26,7 @@ mod raster;
 mod robot;
 mod shape_slices;
 mod stage_bitmap;
+mod unread;
 mod velocity_bounds;
 mod wall_rects;
 mod wall_sums;
@@ -51,7 +52,7 @@ pub use velocity_bounds::VelocityBounds;
 pub use wall_rects::WallRect;
 
 use crate::worldfile::{Item, Pos, Property, WorldFileError};
-use properties::{READ, err, name_of, number, opt_number};
+use properties::{err, name_of, number, opt_number};
 
 /// Stage's drive models.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -289,14 +290,6 @@ impl World {
         Ok(world)
     }
 
-    fn ignore(&mut self, what: &str, pos: &Pos) {
-        let note = format!("ignored: {what} at {}:{}", pos.file, pos.line);
-        if self.ignored_seen.insert(note.clone()) {
-            tracing::debug!("{note}");
-            self.ignored.push(note);
-        }
-    }
-
     fn top_property(&mut self, p: &Property) -> Result<(), WorldFileError> {
         match p.name.as_str() {
             "interval_sim" => self.interval = number(p)? / 1000.0,
@@ -327,53 +320,6 @@ impl World {
             other => self.ignore(&format!("world property {other}"), &p.pos),
         }
         Ok(())
-    }
-
-    fn note_unread(&mut self, model: &Model) {
-        for p in &model.properties {
-            if !READ.contains(&p.name.as_str()) {
-                self.ignore(&format!("{} property {}", model.declared, p.name), &p.pos);
-            }
-        }
-        for block in blocks::partial_height_blocks(model) {
-            self.ignore(
-                &format!(
-                    "a block not as tall as the rest of {} (solid at every height to collisions and cameras)",
-                    model.declared
-                ),
-                &block.pos,
-            );
-        }
-        // Sensors are read by the ranger and block() shapes by every model; nothing else is.
-        for part in &model.parts {
-            let read: &[&str] = match part.kind.as_str() {
-                // A sensor's colour only tints its beams in Stage's GUI.
-                "sensor" if model.kind == "ranger" => &[
-                    "pose",
-                    "size",
-                    "range",
-                    "fov",
-                    "samples",
-                    "color",
-                    "color_rgba",
-                    "noise",
-                ],
-                "block" => &["points", "z"],
-                _ => {
-                    self.ignore(&format!("{}() in {}", part.kind, model.declared), &part.pos);
-                    continue;
-                }
-            };
-            for p in &part.properties {
-                let indexed_point = part.kind == "block" && p.name.starts_with("point[");
-                if !read.contains(&p.name.as_str()) && !indexed_point {
-                    self.ignore(&format!("{} property {}", part.kind, p.name), &p.pos);
-                }
-            }
-            for inner in &part.children {
-                self.ignore(&format!("{}() in {}", inner.kind, part.kind), &inner.pos);
-            }
-        }
     }
 
     fn top_model(&mut self, model: &Model, base: &Path) -> Result<(), WorldFileError> {

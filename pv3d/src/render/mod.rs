@@ -7,6 +7,7 @@ pub mod billboard;
 pub mod camera;
 pub mod fill_layer;
 pub mod filtered_pictures;
+mod gl_buffers;
 pub mod gl_error;
 pub mod gl_renderer;
 pub mod gl_state;
