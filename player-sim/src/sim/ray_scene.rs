@@ -30,26 +30,20 @@ pub(super) fn ray_scene(sim: &Simulation, at: (f64, f64), reach: f64) -> RayScen
     index.near(at.0, at.1, reach, &mut near);
     for &i in &near {
         let spec = &sim.world.robots[i];
-        let place = index.place(i);
-        let bodies =
-            std::iter::once((i, spec.size, &spec.shape[..], !spec.shape_slices.is_empty()));
+        let body = std::iter::once((i, spec.size, &spec.shape[..]));
         let mounted = spec
             .mounted_bodies
             .iter()
             .enumerate()
-            .map(|(k, body)| (index.mounted_body(i, k), body.size, &body.shape[..], false));
-        for (number, size, shape, sliced) in bodies.chain(mounted) {
-            let place = if number == i {
-                place
-            } else {
-                index.place(number)
-            };
+            .map(|(k, body)| (index.mounted_body(i, k), body.size, &body.shape[..]));
+        for (number, size, shape) in body.chain(mounted) {
+            let place = index.place(number);
             if !place.within(at, reach) {
                 continue;
             }
+            // Whole, even a body cut by height: Stage's raster holds all its blocks.
             let placed = place.placed(size, shape);
-            // A body cut by height holds the regions of all its blocks, listed by the scan.
-            match index.held_regions(number).filter(|_| !sliced) {
+            match index.held_regions(number) {
                 Some(listed) => {
                     for &(x, y) in listed.get_or_init(|| placed.region_list(resolution)) {
                         regions.hold(x, y);
