@@ -256,6 +256,7 @@ impl BoxCells {
 }
 
 impl Cells for BoxCells {
+    #[inline]
     /// Inside the grid: 0 on the outline, else 1 (walked cell by cell). Outside, the square
     /// ahead is free as far as it misses the grid along either axis: up to the grid's nearer
     /// edge along an axis the ray heads towards it, without end along one where the grid lies

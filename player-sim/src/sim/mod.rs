@@ -16,6 +16,7 @@ mod directions;
 mod drivers;
 mod geometry;
 mod gripper;
+mod joint_walk;
 mod nearby;
 mod noise;
 mod odometry;

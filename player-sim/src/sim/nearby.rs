@@ -11,6 +11,7 @@ use std::sync::Arc;
 
 use super::body_index::BodyIndex;
 
+mod joint;
 mod mounted;
 mod nearest;
 
@@ -49,6 +50,13 @@ pub struct SolidBox<'a> {
     body: u32,
 }
 
+/// What of a box on the raster a ray may meet ([`SolidBox::near`]).
+pub(super) enum Near<'c> {
+    Beside,
+    Cells(&'c BoxCells),
+    Exact(Option<f64>),
+}
+
 /// [`SolidBox::body`] of a box whose cells each scan draws for itself.
 const NO_BODY: u32 = u32::MAX;
 
@@ -68,23 +76,40 @@ impl SolidBox<'_> {
         let Some(cells) = cells.filter(|_| self.resolution != 0.0) else {
             return self.exact_hit(x, y, dx, dy);
         };
-        // The box widened by its cells' margin first, in its frame: most rays near its circle
-        // pass beside it, and drawing its cells costs more than this test.
-        let margin = cell_margin(self.resolution);
-        let ((ox, oy), (lx, ly)) = self.in_frame(x, y, dx, dy);
-        let (hx, hy) = (self.half_length + margin, self.half_width + margin);
-        slab_hit(ox, oy, lx, ly, hx, hy)?;
-        let drawn = cells.get_or_init(|| BoxCells::of(&self.placed(), self.resolution));
-        match drawn {
+        match self.near(cells, (x, y), (dx, dy)) {
+            Near::Beside => None,
             // Nothing of the box lies farther than its far side.
-            Some(drawn) => {
+            Near::Cells(drawn) => {
                 let beyond = ((self.x - x) * dx + (self.y - y) * dy + self.radius).max(0.0);
                 match scene {
                     Some(scene) => drawn.cast_in(scene, (x, y), (dx, dy), beyond),
                     None => drawn.cast((x, y), (dx, dy), beyond),
                 }
             }
-            None => self.exact_hit(x, y, dx, dy),
+            Near::Exact(d) => d,
+        }
+    }
+
+    /// What of the box on the raster the ray from `(x, y)` along the unit `(dx, dy)` may meet:
+    /// nothing when its line passes beyond the box widened by its cells' margin (most rays
+    /// near its circle pass beside it, and drawing its cells costs more than this test), else
+    /// its cells, drawn into `cells` the first time; for a box too large for cells, where the
+    /// ray enters its exact outline.
+    pub(super) fn near<'c>(
+        &self,
+        cells: Drawn<'c>,
+        (x, y): (f64, f64),
+        (dx, dy): (f64, f64),
+    ) -> Near<'c> {
+        let margin = cell_margin(self.resolution);
+        let ((ox, oy), (lx, ly)) = self.in_frame(x, y, dx, dy);
+        let (hx, hy) = (self.half_length + margin, self.half_width + margin);
+        if slab_hit(ox, oy, lx, ly, hx, hy).is_none() {
+            return Near::Beside;
+        }
+        match cells.get_or_init(|| BoxCells::of(&self.placed(), self.resolution)) {
+            Some(drawn) => Near::Cells(drawn),
+            None => Near::Exact(self.exact_hit(x, y, dx, dy)),
         }
     }
 

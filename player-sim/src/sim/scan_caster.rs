@@ -1,11 +1,14 @@
-//! How a ranger's scan casts its beams: the walls first, every beam, and then only the boxes
-//! (robots, obstacles, bodies mounted on robots) within the farthest wall any beam met. In a
-//! cave most beams meet a wall a few metres away, so a scan asks the robots within those few
-//! metres instead of every robot within the sensor's 8 m — behind every wall a beam met, no box
-//! can be nearer than that wall. Readings are what casting walls and boxes together gave.
+//! How a ranger's scan casts its beams. On Stage's raster of the floorplan, each beam is one
+//! walk through the walls and the boxes (robots, obstacles, bodies mounted on robots) in its
+//! direction within the sensor's range, as Stage walks it (`sim/joint_walk.rs`): the first
+//! cell on its path that holds anything is what it meets. A beam that can meet neither a wall
+//! (`wall_free.rs`, `wall_box_beams.rs`) nor a box (`beams.rs`) reads its maximum unwalked.
 //!
-//! A beam turned by angular noise is not the fan's beam whose wall was cast: it is cast alone,
-//! against the boxes within the sensor's whole reach (listed only when such a beam comes).
+//! On a floorplan too large for a raster, whose rays meet its own grid, the walls are cast
+//! first, every beam, and then only the boxes within the farthest wall any beam met: behind
+//! every wall a beam met, no box can be nearer than that wall. A beam turned by angular noise
+//! is not the fan's beam whose wall was cast: it is cast alone, against the boxes within the
+//! sensor's whole reach (listed only when such a beam comes).
 
 use std::cell::OnceCell;
 use std::sync::{Arc, Mutex};
@@ -115,14 +118,14 @@ pub(super) fn walls_reach(sim: &Simulation, z: f64) -> bool {
 
 /// The caster of robot `robot`'s sensor at `origin` reaching `max`, with beams `fan` at height
 /// `z`: given a beam's number and direction, what it hits.
-pub(super) fn caster(
-    sim: &Simulation,
+pub(super) fn caster<'s>(
+    sim: &'s Simulation,
     robot: usize,
     origin: Pose,
     max: f64,
     fan: Fan,
     z: f64,
-) -> impl Fn(usize, f64) -> Option<Hit> + '_ {
+) -> Box<dyn Fn(usize, f64) -> Option<Hit> + 's> {
     let at = (origin.x, origin.y);
     // Only the beams that may meet a wall walk the walls.
     let seen = walls_reach(sim, z)
@@ -132,10 +135,62 @@ pub(super) fn caster(
     let directions = sim.fan_directions.of(robot, fan);
     // Shared by the walls' walks and the boxes', not copied for each.
     let scene = Arc::new(ray_scene(sim, at, max));
-    let walked = scene.clone();
-    let wall_along = move |(dx, dy): (f64, f64)| {
-        walls.and_then(|w| w.cast(at.0, at.1, dx, dy, max, &walked.regions))
+    let floor_return = sim.world.floor_ranger_return;
+    let raster = match walls {
+        Some(Walls::Grid(grid)) => {
+            return Box::new(grid_caster(
+                sim,
+                robot,
+                (at, max),
+                (fan, z),
+                scene,
+                grid,
+                wall_beams,
+            ));
+        }
+        Some(Walls::Raster(raster)) => Some(raster),
+        None => None,
     };
+    // Stage's raster: one walk a beam through the walls and the boxes in its direction
+    // (`sim/joint_walk.rs`), the boxes those within the sensor's range.
+    let (boxes, by_beam) = boxes_within(sim, robot, (at, max), fan, z, scene);
+    let resolution = sim.world.resolution;
+    Box::new(move |beam, angle| {
+        let direction = directions.of_beam(beam, angle);
+        // A beam turned off its fan's direction walks the walls whether or not the fan's
+        // beam may meet them.
+        let nominal = angle == fan_angle(fan, beam);
+        let may_meet = !nominal || wall_beams.as_ref().is_none_or(|w| w[beam]);
+        let walls = raster.filter(|_| may_meet);
+        let ahead = by_beam.of(beam);
+        // Nothing in this beam's direction: its maximum.
+        if walls.is_none() && ahead.is_empty() {
+            return None;
+        }
+        boxes
+            .nearest_joint(ahead, (walls, resolution), at, direction, max, |b| {
+                b.ranger_return >= 0.0
+            })
+            .map(|(d, met)| (d, met.map_or(floor_return, |b| b.ranger_return)))
+    })
+}
+
+/// [`caster`] for a floorplan too large for Stage's raster, whose rays meet its own grid: the
+/// walls first, every beam, and then only the boxes within the farthest wall any beam met.
+fn grid_caster<'s>(
+    sim: &'s Simulation,
+    robot: usize,
+    (at, max): ((f64, f64), f64),
+    (fan, z): (Fan, f64),
+    scene: Arc<RayScene>,
+    grid: &'s OccupancyGrid,
+    wall_beams: Option<Vec<bool>>,
+) -> impl Fn(usize, f64) -> Option<Hit> + 's {
+    let directions = sim.fan_directions.of(robot, fan);
+    let walls = Walls::Grid(grid);
+    let walked = scene.clone();
+    let wall_along =
+        move |(dx, dy): (f64, f64)| walls.cast(at.0, at.1, dx, dy, max, &walked.regions);
     let fan_walls: Vec<Option<f64>> = (0..fan.count)
         .map(|beam| {
             let may_meet = wall_beams.as_ref().is_none_or(|w| w[beam]);

@@ -1,0 +1,157 @@
+//! One walk a beam through the walls and the bodies it may meet together, as Stage walks its
+//! raster: each cell's free square is the smallest of the walls' and the bodies', and the first
+//! solid cell on the path is what the beam meets. A beam walked the walls and then, from the
+//! sensor again, each body its line passed near: a third of the cave's walks, each crossing
+//! the regions the walls' walk had crossed.
+//!
+//! The distance is the walls' and the bodies' walks' least, cell for cell: the path does not
+//! depend on what the cells hold (`raster_walk.rs`). What is met in the cell where the walk
+//! stops is the last of the bodies solid there, else the wall; where a wall's cell and a
+//! body's further along the path read the same distance (a step across the axis distances are
+//! counted along), the first on the path is met, as in Stage.
+
+use std::cell::Cell;
+
+use super::box_cells::BoxCells;
+use super::raster_walk::{Cells, Ray, RegionMap, walk};
+use super::wall_raster::WallRaster;
+
+/// What a joint walk met: the wall, or body `k` of those walked.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Met {
+    Wall,
+    Body(usize),
+}
+
+/// The walls (where a beam may meet them) and the bodies' cells, read as one raster.
+struct Joint<'a, T> {
+    walls: Option<&'a WallRaster>,
+    bodies: &'a [(&'a BoxCells, T)],
+    /// Whose was the solid cell read last.
+    met: Cell<Met>,
+}
+
+impl<T> Cells for Joint<'_, T> {
+    #[inline]
+    fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
+        let mut least = self.walls.map_or(u32::MAX, |w| w.ahead(x, y, q));
+        let mut met = Met::Wall;
+        for (k, (body, _)) in self.bodies.iter().enumerate() {
+            let clear = body.ahead(x, y, q);
+            if clear == 0 {
+                met = Met::Body(k);
+            }
+            least = least.min(clear);
+        }
+        if least == 0 {
+            self.met.set(met);
+        }
+        least
+    }
+}
+
+/// Distance along `ray` to the first cell of `walls` or `bodies` (each with what it is to the
+/// caller) on Stage's path through `regions` (which hold the bodies' regions), within `stop`
+/// metres, and what it met there.
+pub(super) fn walk_joint<T>(
+    walls: Option<&WallRaster>,
+    bodies: &[(&BoxCells, T)],
+    regions: &RegionMap,
+    ray: &Ray,
+    stop: f64,
+) -> Option<(f64, Met)> {
+    let joint = Joint {
+        walls,
+        bodies,
+        met: Cell::new(Met::Wall),
+    };
+    walk(&joint, regions, ray, stop).map(|d| (d, joint.met.get()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sim::box_cells::{Placed, RayScene};
+    use crate::sim::test_halls::{bordered, walled};
+    use crate::sim::test_randoms::randoms;
+    use crate::world::floor_i64;
+    use std::f64::consts::TAU;
+
+    /// One walk through walls and bodies meets what the walls' walk and each body's walk from
+    /// the sensor meet, the nearest of them: random rays across a hall strewn with walls, with
+    /// up to three turned bodies placed near each.
+    #[test]
+    fn one_walk_meets_the_nearest_of_the_walls_and_the_bodies() {
+        let mut next = randoms(0x1_0147);
+        let rows = bordered(80, 80, |_, _| next() < 0.02);
+        let resolution = 0.05;
+        let raster = WallRaster::of(&walled(&rows, 0.5, resolution)).expect("walls");
+        let (mut bodies_met, mut walls_met) = (0, 0);
+        for k in 0..3000 {
+            let (x, y) = (38.0 * next() - 19.0, 38.0 * next() - 19.0);
+            let (dy, dx) = (TAU * next()).sin_cos();
+            let max = [2.0, 5.0, 8.0][k % 3];
+            let placed: Vec<Placed> = (0..k % 4)
+                .map(|_| {
+                    let (along, turn) = (max * next(), TAU * next());
+                    Placed {
+                        x: x + dx * along + 0.6 * next() - 0.3,
+                        y: y + dy * along + 0.6 * next() - 0.3,
+                        sin: turn.sin(),
+                        cos: turn.cos(),
+                        half_length: 0.1 + 0.3 * next(),
+                        half_width: 0.1 + 0.2 * next(),
+                        shape: &[],
+                    }
+                })
+                .collect();
+            let cells: Vec<BoxCells> = placed
+                .iter()
+                .map(|p| BoxCells::of(p, resolution).expect("cells"))
+                .collect();
+            let span = |v: f64, s: f64| floor_i64((v + s * max) / resolution) + 64 * s as i64;
+            let mut regions =
+                RegionMap::over((span(x, -1.0), span(y, -1.0)), (span(x, 1.0), span(y, 1.0)));
+            regions.hold_all(raster.regions());
+            for p in &placed {
+                p.add_regions(resolution, &mut regions);
+            }
+            let scene = RayScene {
+                range: max,
+                regions,
+            };
+            let walls = (k % 5 != 0).then_some(&raster);
+            let separately = walls
+                .and_then(|w| w.cast_among(x, y, dx, dy, max, &scene.regions))
+                .map(|d| (d, Met::Wall));
+            let separately = cells.iter().enumerate().fold(separately, |best, (b, c)| {
+                match c.cast_in(&scene, (x, y), (dx, dy), max) {
+                    Some(d) if best.is_none_or(|(e, _)| d <= e) => Some((d, Met::Body(b))),
+                    _ => best,
+                }
+            });
+            let ray = Ray::new(1.0 / resolution, (x, y), (dx, dy), max).expect("ray");
+            let refs: Vec<(&BoxCells, ())> = cells.iter().map(|c| (c, ())).collect();
+            let joint = walk_joint(walls, &refs, &scene.regions, &ray, max);
+            let (got, want) = (joint.map(|(d, _)| d), separately.map(|(d, _)| d));
+            assert_eq!(got, want, "{k}: ({x}, {y}) along ({dx}, {dy}) to {max}");
+            // What was met reads that distance on its own walk.
+            match joint {
+                Some((d, Met::Body(b))) => {
+                    assert_eq!(cells[b].cast_in(&scene, (x, y), (dx, dy), max), Some(d));
+                    bodies_met += 1;
+                }
+                Some((d, Met::Wall)) => {
+                    let own = walls.and_then(|w| w.cast_among(x, y, dx, dy, max, &scene.regions));
+                    assert_eq!(own, Some(d), "{k}");
+                    walls_met += 1;
+                }
+                None => {}
+            }
+        }
+        assert!(
+            bodies_met > 300 && walls_met > 300,
+            "{bodies_met} {walls_met}"
+        );
+    }
+}

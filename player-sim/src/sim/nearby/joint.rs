@@ -1,0 +1,70 @@
+//! A beam's one walk through the walls and the boxes about its sensor together
+//! (`sim/joint_walk.rs`): the boxes in its direction whose cells its path may meet are drawn
+//! and walked with the walls; a box too large for cells is met on its exact outline.
+
+use super::{Near, NearbyBoxes, SolidBox};
+use crate::sim::box_cells::BoxCells;
+use crate::sim::joint_walk::{Met, walk_joint};
+use crate::sim::raster_walk::Ray;
+use crate::sim::wall_raster::WallRaster;
+
+impl<'a> NearbyBoxes<'a> {
+    /// What the ray from `(x, y)` along the unit `(dx, dy)` meets first within `max`: `walls`
+    /// (`None` where the beam cannot meet them) or one of the boxes `candidates` lists (those
+    /// `counts` accepts), walked on Stage's path through the scan's regions
+    /// ([`NearbyBoxes::walked_in`]) on a raster of `resolution`. The distance, and the wall or
+    /// the box met.
+    pub(in crate::sim) fn nearest_joint(
+        &self,
+        candidates: &[u32],
+        (walls, resolution): (Option<&WallRaster>, f64),
+        (x, y): (f64, f64),
+        (dx, dy): (f64, f64),
+        max: f64,
+        counts: impl Fn(&SolidBox<'a>) -> bool,
+    ) -> Option<(f64, Option<&SolidBox<'a>>)> {
+        let scene = self.scene.as_deref()?;
+        let mut cells: Vec<(&BoxCells, &SolidBox<'a>)> = Vec::new();
+        // The nearest box met on its exact outline, if any is.
+        let mut exact: Option<(f64, &SolidBox<'a>)> = None;
+        for &k in candidates {
+            let b = &self.boxes[k as usize];
+            if !counts(b) || !b.may_hit(x, y, dx, dy, max) {
+                continue;
+            }
+            let near = match self.drawn(k as usize) {
+                Some(drawn) if b.resolution != 0.0 => b.near(drawn, (x, y), (dx, dy)),
+                _ => Near::Exact(b.exact_hit(x, y, dx, dy)),
+            };
+            match near {
+                Near::Beside => {}
+                Near::Cells(drawn) => cells.push((drawn, b)),
+                Near::Exact(d) => {
+                    if let Some(d) = d.filter(|&d| d <= max)
+                        && exact.is_none_or(|(e, _)| d <= e)
+                    {
+                        exact = Some((d, b));
+                    }
+                }
+            }
+        }
+        let walked = if walls.is_none() && cells.is_empty() {
+            None
+        } else {
+            let per_metre = 1.0 / resolution;
+            Ray::new(per_metre, (x, y), (dx, dy), scene.range)
+                .and_then(|ray| walk_joint(walls, &cells, &scene.regions, &ray, max))
+        };
+        let walked = walked.map(|(d, met)| match met {
+            Met::Wall => (d, None),
+            Met::Body(k) => (d, Some(cells[k].1)),
+        });
+        match (walked, exact) {
+            // A box on its outline as near as the walk's cell is met (as a box met as near as
+            // a wall always was).
+            (Some((w, _)), Some((e, b))) if e <= w => Some((e, Some(b))),
+            (None, Some((e, b))) => Some((e, Some(b))),
+            (walked, _) => walked,
+        }
+    }
+}
