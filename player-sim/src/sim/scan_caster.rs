@@ -18,7 +18,6 @@ use super::beams::{BeamBoxes, Fan};
 use super::box_cells::RayScene;
 use super::directions::Directions;
 use super::nearby::NearbyBoxes;
-use super::raster_walk::RegionMap;
 use super::ray_scene::ray_scene;
 use super::wall_beams::WallBeams;
 use super::wall_free::beams_meeting;
@@ -34,24 +33,6 @@ pub(super) type Hit = (f64, f64);
 pub(super) enum Walls<'a> {
     Raster(&'a WallRaster),
     Grid(&'a OccupancyGrid),
-}
-
-impl Walls<'_> {
-    /// The walls along the ray; on the raster, Stage's path through `regions`.
-    pub(super) fn cast(
-        self,
-        x: f64,
-        y: f64,
-        dx: f64,
-        dy: f64,
-        max: f64,
-        regions: &RegionMap,
-    ) -> Option<f64> {
-        match self {
-            Walls::Raster(raster) => raster.cast_among(x, y, dx, dy, max, regions),
-            Walls::Grid(grid) => grid.raycast_along(x, y, dx, dy, max).map(|(d, _)| d),
-        }
-    }
 }
 
 /// The walls a sensor at `(x, y)` reaching `max` with beams `fan` sees, and which of its beams
@@ -132,10 +113,8 @@ pub(super) fn caster<'s>(
         .then(|| walls_seen(sim, at.0, at.1, max, fan))
         .flatten();
     let (walls, wall_beams) = seen.map_or((None, None), |(walls, beams)| (Some(walls), beams));
-    let directions = sim.fan_directions.of(robot, fan);
-    // Shared by the walls' walks and the boxes', not copied for each.
+    // Shared by the boxes' walks, not copied for each.
     let scene = Arc::new(ray_scene(sim, at, max));
-    let floor_return = sim.world.floor_ranger_return;
     let raster = match walls {
         Some(Walls::Grid(grid)) => {
             return Box::new(grid_caster(
@@ -154,7 +133,8 @@ pub(super) fn caster<'s>(
     // Stage's raster: one walk a beam through the walls and the boxes in its direction
     // (`sim/joint_walk.rs`), the boxes those within the sensor's range.
     let (boxes, by_beam) = boxes_within(sim, robot, (at, max), fan, z, scene);
-    let resolution = sim.world.resolution;
+    let directions = sim.fan_directions.of(robot, fan);
+    let (resolution, floor_return) = (sim.world.resolution, sim.world.floor_ranger_return);
     Box::new(move |beam, angle| {
         let direction = directions.of_beam(beam, angle);
         // A beam turned off its fan's direction walks the walls whether or not the fan's
@@ -187,10 +167,9 @@ fn grid_caster<'s>(
     wall_beams: Option<Vec<bool>>,
 ) -> impl Fn(usize, f64) -> Option<Hit> + 's {
     let directions = sim.fan_directions.of(robot, fan);
-    let walls = Walls::Grid(grid);
-    let walked = scene.clone();
+    // The grid's own cast: no regions, no stepped path.
     let wall_along =
-        move |(dx, dy): (f64, f64)| walls.cast(at.0, at.1, dx, dy, max, &walked.regions);
+        move |(dx, dy): (f64, f64)| grid.raycast_along(at.0, at.1, dx, dy, max).map(|(d, _)| d);
     let fan_walls: Vec<Option<f64>> = (0..fan.count)
         .map(|beam| {
             let may_meet = wall_beams.as_ref().is_none_or(|w| w[beam]);
