@@ -57,14 +57,25 @@ impl RegionMap {
         }
     }
 
-    /// The regions `other` holds, held here too (within this map).
+    /// The regions `other` holds, held here too (within this map): row by row, the rows'
+    /// overlap at once (every scan takes in the walls' regions within its reach).
     pub(in crate::sim) fn hold_all(&mut self, other: &RegionMap) {
-        for r in 0..self.height {
-            for c in 0..self.width {
-                let (x, y) = (self.first.0 + c, self.first.1 + r);
-                if other.populated(x, y) {
-                    self.held[(r * self.width + c) as usize] = true;
-                }
+        let from = self.first.0.max(other.first.0);
+        let to = (self.first.0 + self.width).min(other.first.0 + other.width);
+        if from >= to {
+            return;
+        }
+        let rows = self.first.1.max(other.first.1)
+            ..(self.first.1 + self.height).min(other.first.1 + other.height);
+        for y in rows {
+            let mine = ((y - self.first.1) * self.width + from - self.first.0) as usize;
+            let theirs = ((y - other.first.1) * other.width + from - other.first.0) as usize;
+            let n = (to - from) as usize;
+            for (a, &b) in self.held[mine..mine + n]
+                .iter_mut()
+                .zip(&other.held[theirs..theirs + n])
+            {
+                *a |= b;
             }
         }
     }
@@ -121,5 +132,35 @@ pub(in crate::sim) struct Nowhere;
 impl Regions for Nowhere {
     fn populated(&self, _: i64, _: i64) -> bool {
         false
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Holding another map's regions holds exactly those within this map, whichever way the
+    /// two overlap (or do not).
+    #[test]
+    fn holding_all_of_another_map_holds_its_regions_within_this_one() {
+        let mut other = RegionMap::over((-100, -70), (90, 200));
+        for (x, y) in [(-4, -3), (0, 0), (2, 6), (-1, 5), (1, -2), (2, -3)] {
+            other.hold(x, y);
+        }
+        for low in [(-300, -300), (-40, 10), (0, 0), (60, -100), (500, 500)] {
+            for high in [(-200, 40), (30, 100), (400, 400)] {
+                let mut map = RegionMap::over(low, high);
+                map.hold(region_of(high.0), region_of(high.1));
+                let before = map.clone();
+                map.hold_all(&other);
+                for y in -12..16 {
+                    for x in -12..16 {
+                        let inside = map.index(x, y).is_some();
+                        let want = before.populated(x, y) || (inside && other.populated(x, y));
+                        assert_eq!(map.populated(x, y), want, "{low:?} {high:?} ({x}, {y})");
+                    }
+                }
+            }
+        }
     }
 }
