@@ -379,15 +379,23 @@ impl WallRaster {
         self.outside(x, y)
     }
 
-    /// The same raster with its values in tiles, worked out when read (`wall_tiles.rs`).
+    /// The same raster with its values in tiles, worked out when read (`wall_tiles.rs`), a
+    /// tile with at most `few` wall boxes near keeping the boxes.
     #[cfg(test)]
-    pub(super) fn tiled(&self) -> WallRaster {
+    pub(super) fn tiled(&self, few: usize) -> WallRaster {
         WallRaster {
             clearance: Vec::new(),
             ahead: Default::default(),
-            tiles: Some(WallTiles::new(self.first, self.width, self.height)),
+            tiles: Some(WallTiles::new(self.first, self.width, self.height).keeping(few)),
             ..self.clone()
         }
+    }
+
+    /// How many of its tiles were worked out as far from walls, as their boxes, and as their
+    /// cells; `None` when it is not tiled.
+    #[cfg(test)]
+    pub(super) fn worked_out(&self) -> Option<[usize; 3]> {
+        self.tiles.as_ref().map(WallTiles::worked_out)
     }
 
     /// Are its values in tiles, worked out when read (a large raster of few walls)?

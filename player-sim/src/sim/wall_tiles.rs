@@ -31,8 +31,31 @@ pub(super) const CLEARANCE: usize = 4;
 /// A tile's cells, in blocks of 8 x 8 (see [`within`]).
 type Cells = Box<[u8; SIDE * SIDE]>;
 
-/// A tile, once worked out; `None`: every cell 255.
-type Tile = OnceLock<Option<Cells>>;
+/// Tiles with at most this many wall boxes near them keep the boxes, not the cells, and work a
+/// cell's value out when it is read: the swarm's tiles along its walls (a few boxes each) were
+/// tens of megabytes of cells read all over the hall, a wait on memory at nearly every read,
+/// where a few boxes stay in cache and take a few comparisons each.
+const FEW: usize = 8;
+
+/// A tile, once worked out.
+#[derive(Clone)]
+enum Tile {
+    /// Every cell 255: no wall near.
+    Far,
+    /// The few wall boxes near it, relative to its first cell.
+    Few(Box<[[i32; 4]]>),
+    Cells(Cells),
+}
+
+impl std::fmt::Debug for Tile {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Tile::Far => f.write_str("Far"),
+            Tile::Few(near) => write!(f, "Few({})", near.len()),
+            Tile::Cells(_) => f.write_str("Cells"),
+        }
+    }
+}
 
 /// Where cell `(c, r)` of its tile is kept: in blocks of 8 x 8 cells, a cache line each, so
 /// that the cells a ray reads near a wall, and its neighbouring beams' there, share lines
@@ -50,7 +73,9 @@ pub(super) struct WallTiles {
     first: (i64, i64),
     columns: usize,
     /// For each kind (four quarters, then the clearance), its tiles row-major.
-    tiles: [Vec<Tile>; 5],
+    tiles: [Vec<OnceLock<Tile>>; 5],
+    /// Tiles with at most this many boxes near keep the boxes ([`FEW`]; the tests vary it).
+    few: usize,
 }
 
 /// Two rasters of the same walls and size hold the same values, read or not.
@@ -72,7 +97,28 @@ impl WallTiles {
             first,
             columns,
             tiles: std::array::from_fn(|_| (0..count).map(|_| OnceLock::new()).collect()),
+            few: FEW,
         }
+    }
+
+    /// The same tiles, those with at most `few` wall boxes near keeping the boxes.
+    #[cfg(test)]
+    pub(super) fn keeping(self, few: usize) -> WallTiles {
+        WallTiles { few, ..self }
+    }
+
+    /// How many tiles were worked out as far from walls, as their boxes, and as their cells.
+    #[cfg(test)]
+    pub(super) fn worked_out(&self) -> [usize; 3] {
+        let mut counts = [0; 3];
+        for tile in self.tiles.iter().flatten().filter_map(OnceLock::get) {
+            counts[match tile {
+                Tile::Far => 0,
+                Tile::Few(_) => 1,
+                Tile::Cells(_) => 2,
+            }] += 1;
+        }
+        counts
     }
 
     /// The value of kind `kind` at raster column `c`, row `r` (within the raster), the walls
@@ -86,15 +132,16 @@ impl WallTiles {
             None => self.first_read(kind, k, walls),
         };
         match tile {
-            Some(cells) => cells[within(c, r)],
-            None => MOST as u8,
+            Tile::Cells(cells) => cells[within(c, r)],
+            Tile::Few(near) => value(kind, near, (c & (SIDE - 1)) as i32, (r & (SIDE - 1)) as i32),
+            Tile::Far => MOST as u8,
         }
     }
 
     /// Tile `k` of kind `kind`, worked out now unless another thread has.
     #[cold]
     #[inline(never)]
-    fn first_read(&self, kind: usize, k: usize, walls: &WallBoxes) -> &Option<Cells> {
+    fn first_read(&self, kind: usize, k: usize, walls: &WallBoxes) -> &Tile {
         let (tc, tr) = (k % self.columns, k / self.columns);
         self.tiles[kind][k].get_or_init(|| self.work_out(kind, tc, tr, walls))
     }
@@ -102,7 +149,7 @@ impl WallTiles {
     /// Tile `(tc, tr)` of kind `kind` from the boxes that may come within 255 cells of it.
     #[cold]
     #[inline(never)]
-    fn work_out(&self, kind: usize, tc: usize, tr: usize, walls: &WallBoxes) -> Option<Cells> {
+    fn work_out(&self, kind: usize, tc: usize, tr: usize, walls: &WallBoxes) -> Tile {
         // The tile's first cell, global.
         let (x0, y0) = (
             self.first.0 + (tc * SIDE) as i64,
@@ -129,7 +176,10 @@ impl WallTiles {
             near.push([rel(b[0], x0), rel(b[1], y0), rel(b[2], x0), rel(b[3], y0)]);
         });
         if near.is_empty() {
-            return None;
+            return Tile::Far;
+        }
+        if near.len() <= self.few {
+            return Tile::Few(near.into_boxed_slice());
         }
         let mut cells: Cells = vec![MOST as u8; SIDE * SIDE]
             .into_boxed_slice()
@@ -137,35 +187,54 @@ impl WallTiles {
             .expect("a tile's cells");
         for [bx0, by0, bx1, by1] in near {
             for r in 0..SIDE as i32 {
-                // The rows' share of the distance, or none of the box that way.
-                let dy = if all {
-                    (by0 - r).max(r - by1).max(0)
-                } else if south {
-                    if by0 > r { continue } else { (r - by1).max(0) }
-                } else if by1 < r {
+                let Some(dy) = share(all, south, (by0, by1), r).filter(|&dy| dy < MOST) else {
                     continue;
-                } else {
-                    (by0 - r).max(0)
                 };
-                if dy >= MOST {
-                    continue;
-                }
                 for c in 0..SIDE as i32 {
-                    let dx = if all {
-                        (bx0 - c).max(c - bx1).max(0)
-                    } else if west {
-                        if bx0 > c { MOST } else { (c - bx1).max(0) }
-                    } else if bx1 < c {
-                        MOST
-                    } else {
-                        (bx0 - c).max(0)
-                    };
-                    let cell = &mut cells[within(c as usize, r as usize)];
-                    *cell = (*cell).min(dx.max(dy).min(MOST) as u8);
+                    if let Some(dx) = share(all, west, (bx0, bx1), c) {
+                        let cell = &mut cells[within(c as usize, r as usize)];
+                        *cell = (*cell).min(dx.max(dy).min(MOST) as u8);
+                    }
                 }
             }
         }
-        cells.iter().any(|&v| v != MOST as u8).then_some(cells)
+        if cells.iter().all(|&v| v == MOST as u8) {
+            Tile::Far
+        } else {
+            Tile::Cells(cells)
+        }
+    }
+}
+
+/// The value of kind `kind` at cell `(c, r)` of a tile, the wall boxes near it being `near`
+/// (relative to the tile's first cell), as [`WallTiles::work_out`] gives it.
+#[inline]
+fn value(kind: usize, near: &[[i32; 4]], c: i32, r: i32) -> u8 {
+    let (west, south) = (kind & 1 == 1, kind & 2 == 2);
+    let all = kind == CLEARANCE;
+    let mut v = MOST;
+    for &[bx0, by0, bx1, by1] in near {
+        if let (Some(dx), Some(dy)) = (
+            share(all, west, (bx0, bx1), c),
+            share(all, south, (by0, by1), r),
+        ) {
+            v = v.min(dx.max(dy));
+        }
+    }
+    v.min(MOST) as u8
+}
+
+/// A wall box's share of a cell's distance along one axis, the cell at `v` and the box
+/// spanning `lo..=hi` that way: all round (`all`), or only ahead of a ray heading towards lower
+/// values (`back`) or higher; `None` for a box behind.
+#[inline]
+fn share(all: bool, back: bool, (lo, hi): (i32, i32), v: i32) -> Option<i32> {
+    if all {
+        Some((lo - v).max(v - hi).max(0))
+    } else if back {
+        (lo <= v).then(|| (v - hi).max(0))
+    } else {
+        (hi >= v).then(|| (lo - v).max(0))
     }
 }
 
@@ -199,7 +268,7 @@ mod tests {
             let mut point = || [14.0 * next() - 7.0, 11.0 * next() - 5.5];
             world.floor_blocks = vec![vec![point(), point(), point()], vec![point(), point()]];
             let passes = WallRaster::of(&world).expect("walls");
-            let tiles = passes.tiled();
+            let tiles = passes.tiled(super::FEW);
             let (x0, y0) = (floor_i64(-7.0 * 50.0) - 3, floor_i64(-5.5 * 50.0) - 3);
             for y in y0..y0 + 560 {
                 for x in x0..x0 + 710 {
@@ -210,6 +279,12 @@ mod tests {
                     }
                 }
             }
+            // Both ways of keeping a tile were read: its few boxes, and its cells.
+            let [_, kept_boxes, kept_cells] = tiles.worked_out().expect("tiled");
+            assert!(
+                kept_boxes > 0 && kept_cells > 0,
+                "round {round}: {kept_boxes} {kept_cells}"
+            );
         }
     }
 }
