@@ -2,6 +2,8 @@
 //! (`sim/joint_walk.rs`): the boxes in its direction whose cells its path may meet are drawn
 //! and walked with the walls; a box too large for cells is met on its exact outline.
 
+use smallvec::SmallVec;
+
 use super::{Near, NearbyBoxes, SolidBox};
 use crate::sim::box_cells::BoxCells;
 use crate::sim::joint_walk::{Met, walk_joint};
@@ -24,7 +26,7 @@ impl<'a> NearbyBoxes<'a> {
         counts: impl Fn(&SolidBox<'a>) -> bool,
     ) -> Option<(f64, Option<&SolidBox<'a>>)> {
         let scene = self.scene.as_deref()?;
-        let mut cells: Vec<(&BoxCells, &SolidBox<'a>)> = Vec::new();
+        let mut cells: SmallVec<[(&BoxCells, &SolidBox<'a>); 4]> = SmallVec::new();
         // The nearest box met on its exact outline, if any is.
         let mut exact: Option<(f64, &SolidBox<'a>)> = None;
         for &k in candidates {
