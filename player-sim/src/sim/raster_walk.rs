@@ -250,6 +250,7 @@ struct Jump {
 /// from the point in each region it enters) and the point keeps its side of the origin's
 /// column and row (where truncation towards zero moves the cell it is in). A region the path
 /// does not enter is not asked about: the path, not the square, decides what is crossed.
+#[inline(always)]
 fn free_run<R: Regions>(regions: &R, ray: &Ray, from: Jump, d: i64) -> (i64, i64) {
     let (sx, sy) = ray.step;
     let (ax, ay) = (ray.columns, ray.rows);
@@ -308,6 +309,7 @@ const SHORT: i64 = 8;
 /// The longest start of the stepping pattern from error `error` (a column while it is
 /// negative, else a row; a column adds `2 * rows`, a row takes `2 * columns`) that moves at
 /// most `most_x` columns and `most_y` rows: how many of each it moves.
+#[inline(always)]
 fn free_steps(error: i64, columns: i64, rows: i64, most_x: i64, most_y: i64) -> (i64, i64) {
     if columns == 0 {
         // The error never falls below 0: rows only.
