@@ -10,7 +10,8 @@
 //! distance to the nearest wall cell that way (a wall cell `dx` columns and `dy` rows ahead
 //! ends the square at side `max(dx, dy)`). A wall cell more than 255 cells away changes neither:
 //! only the boxes within 255 cells are asked, and a tile that none comes near, or whose cells
-//! are all 255, is stored as nothing. Tested cell for cell against the passes.
+//! are all 255, is stored as nothing. A tile with few boxes near keeps those and works a cell's
+//! value out when it is read ([`FEW`]). Tested cell for cell against the passes.
 
 use std::sync::OnceLock;
 
