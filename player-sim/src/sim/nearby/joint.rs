@@ -29,6 +29,10 @@ impl<'a> NearbyBoxes<'a> {
         let mut cells: SmallVec<[(&BoxCells, &SolidBox<'a>); 4]> = SmallVec::new();
         // The nearest box met on its exact outline, if any is.
         let mut exact: Option<(f64, &SolidBox<'a>)> = None;
+        // How far the farthest box walked may be met: no cell of a box lies beyond its circle
+        // (which takes in its cells' margin) along the line, plus two cells for the path's
+        // steps.
+        let mut farthest = 0.0f64;
         for &k in candidates {
             let b = &self.boxes[k as usize];
             if !counts(b) || !b.may_hit(x, y, dx, dy, max) {
@@ -40,7 +44,11 @@ impl<'a> NearbyBoxes<'a> {
             };
             match near {
                 Near::Beside => {}
-                Near::Cells(drawn) => cells.push((drawn, b)),
+                Near::Cells(drawn) => {
+                    let far = (b.x - x) * dx + (b.y - y) * dy + b.radius + 2.0 * resolution;
+                    farthest = farthest.max(far);
+                    cells.push((drawn, b));
+                }
                 Near::Exact(d) => {
                     if let Some(d) = d.filter(|&d| d <= max)
                         && exact.is_none_or(|(e, _)| d <= e)
@@ -50,12 +58,20 @@ impl<'a> NearbyBoxes<'a> {
                 }
             }
         }
+        // A beam that cannot meet a wall meets nothing past its farthest box: its walk ends
+        // there (most of the swarm's walked beams pass beside the robot they were walked for,
+        // and went on across empty regions to their range).
+        let stop = if walls.is_none() {
+            farthest.min(max)
+        } else {
+            max
+        };
         let walked = if walls.is_none() && cells.is_empty() {
             None
         } else {
             let per_metre = 1.0 / resolution;
             Ray::new(per_metre, (x, y), (dx, dy), scene.range)
-                .and_then(|ray| walk_joint(walls, &cells, &scene.regions, &ray, max))
+                .and_then(|ray| walk_joint(walls, &cells, &scene.regions, &ray, stop))
         };
         let walked = walked.map(|(d, met)| match met {
             Met::Wall => (d, None),
