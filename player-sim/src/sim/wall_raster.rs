@@ -379,14 +379,13 @@ impl WallRaster {
         self.outside(x, y)
     }
 
-    /// The same raster with its values in tiles, worked out when read (`wall_tiles.rs`), a
-    /// tile with at most `few` wall boxes near keeping the boxes.
+    /// The same raster with its values in tiles, worked out when read (`wall_tiles.rs`).
     #[cfg(test)]
-    pub(super) fn tiled(&self, few: usize) -> WallRaster {
+    pub(super) fn tiled(&self) -> WallRaster {
         WallRaster {
             clearance: Vec::new(),
             ahead: Default::default(),
-            tiles: Some(WallTiles::new(self.first, self.width, self.height).keeping(few)),
+            tiles: Some(WallTiles::new(self.first, self.width, self.height)),
             ..self.clone()
         }
     }

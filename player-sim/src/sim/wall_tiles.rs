@@ -75,8 +75,6 @@ pub(super) struct WallTiles {
     columns: usize,
     /// For each kind (four quarters, then the clearance), its tiles row-major.
     tiles: [Vec<OnceLock<Tile>>; 5],
-    /// Tiles with at most this many boxes near keep the boxes ([`FEW`]; the tests vary it).
-    few: usize,
 }
 
 /// Two rasters of the same walls and size hold the same values, read or not.
@@ -98,14 +96,7 @@ impl WallTiles {
             first,
             columns,
             tiles: std::array::from_fn(|_| (0..count).map(|_| OnceLock::new()).collect()),
-            few: FEW,
         }
-    }
-
-    /// The same tiles, those with at most `few` wall boxes near keeping the boxes.
-    #[cfg(test)]
-    pub(super) fn keeping(self, few: usize) -> WallTiles {
-        WallTiles { few, ..self }
     }
 
     /// How many tiles were worked out as far from walls, as their boxes, and as their cells.
@@ -179,7 +170,7 @@ impl WallTiles {
         if near.is_empty() {
             return Tile::Far;
         }
-        if near.len() <= self.few {
+        if near.len() <= FEW {
             return Tile::Few(near.into_boxed_slice());
         }
         let mut cells: Cells = vec![MOST as u8; SIDE * SIDE]
@@ -269,7 +260,7 @@ mod tests {
             let mut point = || [14.0 * next() - 7.0, 11.0 * next() - 5.5];
             world.floor_blocks = vec![vec![point(), point(), point()], vec![point(), point()]];
             let passes = WallRaster::of(&world).expect("walls");
-            let tiles = passes.tiled(super::FEW);
+            let tiles = passes.tiled();
             let (x0, y0) = (floor_i64(-7.0 * 50.0) - 3, floor_i64(-5.5 * 50.0) - 3);
             for y in y0..y0 + 560 {
                 for x in x0..x0 + 710 {
