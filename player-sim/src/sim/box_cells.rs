@@ -256,11 +256,11 @@ impl BoxCells {
 }
 
 impl Cells for BoxCells {
-    #[inline]
     /// Inside the grid: 0 on the outline, else 1 (walked cell by cell). Outside, the square
     /// ahead is free as far as it misses the grid along either axis: up to the grid's nearer
     /// edge along an axis the ray heads towards it, without end along one where the grid lies
     /// behind (a ray past a body, or beside it heading away, jumps to its stop).
+    #[inline]
     fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
         let (c, r) = (x - self.first.0, y - self.first.1);
         if c >= 0 && r >= 0 && c < self.width && r < self.height {

@@ -73,14 +73,10 @@ impl SolidBox<'_> {
         dx: f64,
         dy: f64,
     ) -> Option<f64> {
-        let Some(cells) = cells.filter(|_| self.resolution != 0.0) else {
-            return self.exact_hit(x, y, dx, dy);
-        };
         match self.near(cells, (x, y), (dx, dy)) {
             Near::Beside => None,
-            // Nothing of the box lies farther than its far side.
             Near::Cells(drawn) => {
-                let beyond = ((self.x - x) * dx + (self.y - y) * dy + self.radius).max(0.0);
+                let beyond = self.far_side((x, y), (dx, dy)).max(0.0);
                 match scene {
                     Some(scene) => drawn.cast_in(scene, (x, y), (dx, dy), beyond),
                     None => drawn.cast((x, y), (dx, dy), beyond),
@@ -90,17 +86,21 @@ impl SolidBox<'_> {
         }
     }
 
-    /// What of the box on the raster the ray from `(x, y)` along the unit `(dx, dy)` may meet:
-    /// nothing when its line passes beyond the box widened by its cells' margin (most rays
-    /// near its circle pass beside it, and drawing its cells costs more than this test), else
-    /// its cells, drawn into `cells` the first time; for a box too large for cells, where the
-    /// ray enters its exact outline.
+    /// What of the box the ray from `(x, y)` along the unit `(dx, dy)` may meet. On the
+    /// world's raster (`cells` given, [`NearbyBoxes::on_raster`]): nothing when its line passes
+    /// beyond the box widened by its cells' margin (most rays near its circle pass beside it,
+    /// and drawing its cells costs more than this test), else its cells, drawn into `cells`
+    /// the first time. Off the raster, or for a box too large for cells, where the ray enters
+    /// its exact outline.
     pub(super) fn near<'c>(
         &self,
-        cells: Drawn<'c>,
+        cells: Option<Drawn<'c>>,
         (x, y): (f64, f64),
         (dx, dy): (f64, f64),
     ) -> Near<'c> {
+        let Some(cells) = cells.filter(|_| self.resolution != 0.0) else {
+            return Near::Exact(self.exact_hit(x, y, dx, dy));
+        };
         let margin = cell_margin(self.resolution);
         let ((ox, oy), (lx, ly)) = self.in_frame(x, y, dx, dy);
         let (hx, hy) = (self.half_length + margin, self.half_width + margin);
@@ -111,6 +111,12 @@ impl SolidBox<'_> {
             Some(drawn) => Near::Cells(drawn),
             None => Near::Exact(self.exact_hit(x, y, dx, dy)),
         }
+    }
+
+    /// How far along the ray from `(x, y)` along the unit `(dx, dy)` the box's far side lies,
+    /// at most: its bounding circle (which takes in its cells' margin) along the line.
+    pub(super) fn far_side(&self, (x, y): (f64, f64), (dx, dy): (f64, f64)) -> f64 {
+        (self.x - x) * dx + (self.y - y) * dy + self.radius
     }
 
     fn placed(&self) -> Placed<'_> {

@@ -29,23 +29,18 @@ impl<'a> NearbyBoxes<'a> {
         let mut cells: SmallVec<[(&BoxCells, &SolidBox<'a>); 4]> = SmallVec::new();
         // The nearest box met on its exact outline, if any is.
         let mut exact: Option<(f64, &SolidBox<'a>)> = None;
-        // How far the farthest box walked may be met: no cell of a box lies beyond its circle
-        // (which takes in its cells' margin) along the line, plus two cells for the path's
-        // steps.
+        // How far the farthest box walked may be met: its far side, plus two cells for the
+        // path's steps.
         let mut farthest = 0.0f64;
         for &k in candidates {
             let b = &self.boxes[k as usize];
             if !counts(b) || !b.may_hit(x, y, dx, dy, max) {
                 continue;
             }
-            let near = match self.drawn(k as usize) {
-                Some(drawn) if b.resolution != 0.0 => b.near(drawn, (x, y), (dx, dy)),
-                _ => Near::Exact(b.exact_hit(x, y, dx, dy)),
-            };
-            match near {
+            match b.near(self.drawn(k as usize), (x, y), (dx, dy)) {
                 Near::Beside => {}
                 Near::Cells(drawn) => {
-                    let far = (b.x - x) * dx + (b.y - y) * dy + b.radius + 2.0 * resolution;
+                    let far = b.far_side((x, y), (dx, dy)) + 2.0 * resolution;
                     farthest = farthest.max(far);
                     cells.push((drawn, b));
                 }
