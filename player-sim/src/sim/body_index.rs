@@ -15,6 +15,7 @@ use super::RobotState;
 use super::body_places::{Place, places};
 use super::body_pose::body_at;
 use super::box_cells::{BoxCells, DrawnCells};
+use super::raster_walk::RegionMap;
 use crate::world::{Pose, World, floor_i64};
 
 /// The robots bucketed by cell; built from one set of poses.
@@ -42,6 +43,9 @@ pub struct BodyIndex {
     drawn: DrawnCells,
     /// Where each body lies (numbered as `drawn`'s): placed once for every scan.
     places: Vec<Place>,
+    /// The regions of Stage's raster the walls and these bodies hold, over the whole world
+    /// (`sim/ray_scene.rs`): held once for every scan; `None` for a world too large.
+    world_regions: OnceLock<Option<Arc<RegionMap>>>,
 }
 
 impl BodyIndex {
@@ -113,6 +117,7 @@ impl BodyIndex {
         let places = places(world, robots, &trig);
         let mut index = BodyIndex {
             places,
+            world_regions: OnceLock::new(),
             trig,
             mounted,
             drawn: DrawnCells::new(bodies),
@@ -161,6 +166,22 @@ impl BodyIndex {
     /// Where body `k` (numbered as in [`BodyIndex::drawn`]) lies.
     pub(super) fn place(&self, k: usize) -> Place {
         self.places[k]
+    }
+
+    /// How many bodies it places: the robots' own, then their mounted bodies.
+    pub(super) fn bodies(&self) -> usize {
+        self.places.len()
+    }
+
+    /// The regions the walls and these bodies hold over the whole world, held by `hold` the
+    /// first time they are asked for; `None` for a world too large for one map.
+    pub(super) fn world_regions(
+        &self,
+        hold: impl FnOnce() -> Option<RegionMap>,
+    ) -> Option<&Arc<RegionMap>> {
+        self.world_regions
+            .get_or_init(|| hold().map(Arc::new))
+            .as_ref()
     }
 
     /// Where the regions body `k` (numbered as in [`BodyIndex::drawn`]) holds are listed, once

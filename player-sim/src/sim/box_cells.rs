@@ -40,7 +40,7 @@ pub(super) fn cell_margin(resolution: f64) -> f64 {
 #[derive(Debug, Clone, Default)]
 pub(super) struct RayScene {
     pub range: f64,
-    pub regions: RegionMap,
+    pub regions: std::sync::Arc<RegionMap>,
 }
 
 /// A box placed in the world: centre, frame, half sizes, and its blocks in its frame (empty: the
@@ -240,7 +240,7 @@ impl BoxCells {
         stop: f64,
     ) -> Option<f64> {
         let ray = Ray::new(self.per_metre, (x, y), (dx, dy), scene.range)?;
-        self.cast_ray(&ray, &scene.regions, stop)
+        self.cast_ray(&ray, &*scene.regions, stop)
     }
 
     /// Distance along `ray` (on this box's raster) to the first of the cells on Stage's path,

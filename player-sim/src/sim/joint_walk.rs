@@ -118,7 +118,7 @@ mod tests {
             }
             let scene = RayScene {
                 range: max,
-                regions,
+                regions: regions.into(),
             };
             let walls = (k % 5 != 0).then_some(&raster);
             let separately = walls

@@ -95,13 +95,13 @@ fn jumps_about_a_body_keep_the_path_cell_for_cell() {
         regions.hold_all(raster.regions());
         let scene = RayScene {
             range: max,
-            regions,
+            regions: regions.into(),
         };
         // Beyond the body, as a scan's walks stop.
         let stop = along + 1.0;
         let jumped = cells.cast_in(&scene, (x, y), (dx, dy), stop);
         let ray = Ray::new(1.0 / resolution, (x, y), (dx, dy), max).expect("ray");
-        let regions = Both(&cells.regions, &scene.regions);
+        let regions = Both(&cells.regions, &*scene.regions);
         assert_eq!(
             jumped,
             walk(&OneByOne(&cells), &regions, &ray, stop),
