@@ -184,12 +184,6 @@ impl BodyIndex {
             .as_ref()
     }
 
-    /// Where the regions body `k` (numbered as in [`BodyIndex::drawn`]) holds are listed, once
-    /// for every scan of these poses.
-    pub(super) fn held_regions(&self, k: usize) -> Option<&OnceLock<Vec<(i64, i64)>>> {
-        self.drawn.regions(k)
-    }
-
     /// Was the index built from robots standing where these stand?
     pub fn is_for(&self, robots: &[RobotState]) -> bool {
         self.poses.len() == robots.len() && self.poses.iter().zip(robots).all(|(p, r)| *p == r.pose)

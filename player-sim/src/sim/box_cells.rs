@@ -161,12 +161,10 @@ impl BoxCells {
 
 /// The cells of every robot's body and mounted bodies for one set of poses, each drawn the
 /// first time any scan's ray needs it (`BodyIndex`): in the swarm a robot is seen by a dozen
-/// scans a step, and each drew its cells anew. With them, the regions each body holds
-/// ([`Placed::region_list`]), listed the first time a scan's reach takes it in.
+/// scans a step, and each drew its cells anew.
 #[derive(Debug, Default)]
 pub(super) struct DrawnCells {
     cells: Vec<OnceLock<Option<BoxCells>>>,
-    regions: Vec<OnceLock<Vec<(i64, i64)>>>,
 }
 
 impl DrawnCells {
@@ -174,18 +172,12 @@ impl DrawnCells {
     pub(super) fn new(count: usize) -> DrawnCells {
         DrawnCells {
             cells: (0..count).map(|_| OnceLock::new()).collect(),
-            regions: (0..count).map(|_| OnceLock::new()).collect(),
         }
     }
 
     /// Body `k`'s cells, once drawn.
     pub(super) fn get(&self, k: usize) -> Option<&OnceLock<Option<BoxCells>>> {
         self.cells.get(k)
-    }
-
-    /// Body `k`'s regions, once listed.
-    pub(super) fn regions(&self, k: usize) -> Option<&OnceLock<Vec<(i64, i64)>>> {
-        self.regions.get(k)
     }
 }
 

@@ -16,17 +16,6 @@ impl Placed<'_> {
         self.each_region(resolution, |x, y| regions.hold(x, y));
     }
 
-    /// The regions [`Placed::add_regions`] adds, listed once each: a robot's, kept for every
-    /// scan of a step (each scan held the regions of every body within its reach anew, a
-    /// tenth of the cave's run).
-    pub(super) fn region_list(&self, resolution: f64) -> Vec<(i64, i64)> {
-        let mut list = Vec::new();
-        self.each_region(resolution, |x, y| list.push((x, y)));
-        list.sort_unstable();
-        list.dedup();
-        list
-    }
-
     /// Calls `hold` with each region the box's outline cells lie in (some more than once).
     fn each_region(&self, resolution: f64, mut hold: impl FnMut(i64, i64)) {
         let per_metre = 1.0 / resolution;
@@ -99,8 +88,5 @@ mod tests {
         let mut one = RegionMap::over((0, 0), (95, 95));
         Placed::leg(40.0, 40.0).add_regions(1.0, &mut one);
         assert!(one.populated(1, 1) && !one.populated(0, 0));
-        // Listed, the same regions once each.
-        assert_eq!(bar.region_list(1.0), [(0, 0), (0, 1), (1, 0)]);
-        assert_eq!(Placed::leg(40.0, 40.0).region_list(1.0), [(1, 1)]);
     }
 }

@@ -151,15 +151,10 @@ fn hold_robots(
             .enumerate()
             .map(|(k, body)| (index.mounted_body(i, k), body.size, &body.shape[..]));
         for (number, size, shape) in body.chain(mounted) {
-            let placed = index.place(number).placed(size, shape);
-            match index.held_regions(number) {
-                Some(listed) => {
-                    for &(x, y) in listed.get_or_init(|| placed.region_list(resolution)) {
-                        regions.hold(x, y);
-                    }
-                }
-                None => placed.add_regions(resolution, regions),
-            }
+            index
+                .place(number)
+                .placed(size, shape)
+                .add_regions(resolution, regions);
         }
     }
 }
