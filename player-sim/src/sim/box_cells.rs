@@ -14,6 +14,8 @@
 use std::cell::OnceCell;
 use std::sync::OnceLock;
 
+use smallvec::SmallVec;
+
 use super::raster_walk::{Both, Cells, Listed, Nowhere, Ray, RegionMap, Regions, walk};
 use super::wall_raster::line_cells;
 use crate::world::{Polygon, floor_i64};
@@ -65,16 +67,13 @@ impl Placed<'_> {
         (floor_i64(x * per_metre), floor_i64(y * per_metre))
     }
 
-    /// The corners of each block in world cells.
-    pub(super) fn corner_cells(&self, per_metre: f64) -> Vec<Vec<(i64, i64)>> {
+    /// The corners of each block in world cells: kept inline for a plain box (the world's
+    /// map of regions takes every robot's corners each step).
+    pub(super) fn corner_cells(&self, per_metre: f64) -> SmallVec<[SmallVec<[(i64, i64); 4]>; 1]> {
         if self.shape.is_empty() {
             let (h, w) = (self.half_length, self.half_width);
-            return vec![
-                [[h, w], [-h, w], [-h, -w], [h, -w]]
-                    .iter()
-                    .map(|&p| self.cell(p, per_metre))
-                    .collect(),
-            ];
+            let corners = [[h, w], [-h, w], [-h, -w], [h, -w]].map(|p| self.cell(p, per_metre));
+            return smallvec::smallvec![SmallVec::from_buf(corners)];
         }
         self.shape
             .iter()

@@ -32,11 +32,20 @@ pub fn default_threads() -> usize {
 }
 
 impl Simulation {
-    /// The ranges of each `(robot, ranger)` of `which`, in order, on up to the simulation's
-    /// threads.
-    pub(super) fn scans_of(&self, which: &[(usize, usize)]) -> Vec<Vec<f64>> {
+    /// What `read` makes of the ranges of each `(robot, ranger)` of `which`, in order, on up
+    /// to the simulation's threads: each scan is read on the thread that cast it, so that only
+    /// what the caller needs of it comes back to the step's own thread.
+    pub(super) fn scans_of<T: Send>(
+        &self,
+        which: &[(usize, usize)],
+        read: impl Fn(&[f64]) -> T + Sync,
+    ) -> Vec<T> {
         let scan = |&(robot, ranger): &(usize, usize)| {
-            ranger_scan(self, robot, &self.world.robots[robot].rangers[ranger])
+            read(&ranger_scan(
+                self,
+                robot,
+                &self.world.robots[robot].rangers[ranger],
+            ))
         };
         let threads = self.threads.min(which.len() / SCANS_PER_THREAD).max(1);
         self.sensing(|_| {

@@ -30,6 +30,48 @@ pub struct WanderState {
     pub turn: i8,
 }
 
+/// What the wander controller reads of a scan.
+#[derive(Debug, Clone, Copy)]
+struct Sight {
+    /// Something nearer than [`MIN_FRONT_DISTANCE`] in the scan's middle third.
+    obstruction: bool,
+    /// Anything nearer than [`STOP_DISTANCE`].
+    stop: bool,
+    /// The nearest reading of each half (the left one from past the middle beam).
+    min_left: f64,
+    min_right: f64,
+}
+
+impl Sight {
+    /// What `scan` shows; `None` for a scan of no beams. Read on the thread that cast the scan.
+    fn of(scan: &[f64]) -> Option<Sight> {
+        let n = scan.len();
+        if n == 0 {
+            return None;
+        }
+        let mut sight = Sight {
+            obstruction: false,
+            stop: false,
+            min_left: f64::INFINITY,
+            min_right: f64::INFINITY,
+        };
+        for (i, &range) in scan.iter().enumerate() {
+            if i > n / 3 && i < n - n / 3 && range < MIN_FRONT_DISTANCE {
+                sight.obstruction = true;
+            }
+            if range < STOP_DISTANCE {
+                sight.stop = true;
+            }
+            if i > n / 2 {
+                sight.min_left = sight.min_left.min(range);
+            } else {
+                sight.min_right = sight.min_right.min(range);
+            }
+        }
+        Some(sight)
+    }
+}
+
 impl Simulation {
     /// Every wandering robot's next command, each from its ranger's scan of the world as the
     /// step found it (the scans cast on the simulation's threads).
@@ -43,33 +85,22 @@ impl Simulation {
         if wanderers.is_empty() {
             return;
         }
-        let scans = self.scans_of(&wanderers);
-        for (&(robot, _), scan) in wanderers.iter().zip(&scans) {
-            self.wander(robot, scan);
+        let sights = self.scans_of(&wanderers, Sight::of);
+        for (&(robot, _), sight) in wanderers.iter().zip(sights) {
+            if let Some(sight) = sight {
+                self.wander(robot, sight);
+            }
         }
     }
 
-    /// Robot `robot`'s next command from its ranger's `scan`, as Stage's wander decides it.
-    fn wander(&mut self, robot: usize, scan: &[f64]) {
-        let n = scan.len();
-        if n == 0 {
-            return;
-        }
-        let (mut obstruction, mut stop) = (false, false);
-        let (mut min_left, mut min_right) = (f64::INFINITY, f64::INFINITY);
-        for (i, &range) in scan.iter().enumerate() {
-            if i > n / 3 && i < n - n / 3 && range < MIN_FRONT_DISTANCE {
-                obstruction = true;
-            }
-            if range < STOP_DISTANCE {
-                stop = true;
-            }
-            if i > n / 2 {
-                min_left = min_left.min(range);
-            } else {
-                min_right = min_right.min(range);
-            }
-        }
+    /// Robot `robot`'s next command from what its ranger saw, as Stage's wander decides it.
+    fn wander(&mut self, robot: usize, sight: Sight) {
+        let Sight {
+            obstruction,
+            stop,
+            min_left,
+            min_right,
+        } = sight;
         let steps = self.steps;
         let noise = self.noise;
         let state = &mut self.robots[robot].wander;
