@@ -45,6 +45,9 @@ pub(super) struct RayScene {
     pub regions: std::sync::Arc<RegionMap>,
 }
 
+/// Each block's corners in world cells, a plain box's kept inline.
+pub(super) type CornerCells = SmallVec<[SmallVec<[(i64, i64); 4]>; 1]>;
+
 /// A box placed in the world: centre, frame, half sizes, and its blocks in its frame (empty: the
 /// box itself is the one block).
 #[derive(Debug, Clone, Copy)]
@@ -69,7 +72,7 @@ impl Placed<'_> {
 
     /// The corners of each block in world cells: kept inline for a plain box (the world's
     /// map of regions takes every robot's corners each step).
-    pub(super) fn corner_cells(&self, per_metre: f64) -> SmallVec<[SmallVec<[(i64, i64); 4]>; 1]> {
+    pub(super) fn corner_cells(&self, per_metre: f64) -> CornerCells {
         if self.shape.is_empty() {
             let (h, w) = (self.half_length, self.half_width);
             let corners = [[h, w], [-h, w], [-h, -w], [h, -w]].map(|p| self.cell(p, per_metre));
