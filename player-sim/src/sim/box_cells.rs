@@ -254,23 +254,34 @@ impl Cells for BoxCells {
     /// ahead is free as far as it misses the grid along either axis: up to the grid's nearer
     /// edge along an axis the ray heads towards it, without end along one where the grid lies
     /// behind (a ray past a body, or beside it heading away, jumps to its stop).
+    ///
+    /// Without branches on where the cell lies: a ray's cells fall inside and outside a body's
+    /// grid in no pattern a branch predictor learns, and these branches were a tenth of the
+    /// walk's mispredictions.
     #[inline]
     fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
         let (c, r) = (x - self.first.0, y - self.first.1);
-        if c >= 0 && r >= 0 && c < self.width && r < self.height {
-            return u32::from(!self.solid[(r * self.width + c) as usize]);
-        }
-        // Free cells from `v` the way the ray heads along an axis of `n` cells.
-        let free = |v: i64, n: i64, back: bool| match (v < 0, v >= n, back) {
-            (true, _, false) => -v,
-            (_, true, true) => v - n + 1,
-            (false, false, _) => 0,
-            _ => i64::MAX,
+        let inside = (c >= 0) & (r >= 0) & (c < self.width) & (r < self.height);
+        // The cell's own flag, read from the first cell when outside (the grid is never empty).
+        let k = ((r * self.width + c) & -i64::from(inside)) as usize;
+        let own = u32::from(!self.solid[k]);
+        // Free cells from `v` the way the ray heads along an axis of `n` cells: up to the
+        // grid's near edge when it lies ahead, none when the cell is level with it, without end
+        // when it lies behind.
+        let free = |v: i64, n: i64, back: bool| {
+            let (ahead, behind) = if back {
+                (v - n + 1, v < 0)
+            } else {
+                (-v, v >= n)
+            };
+            let behind = -i64::from(behind);
+            (ahead.max(0) & !behind) | (i64::MAX & behind)
         };
         let (west, south) = (q & 1 == 1, q & 2 == 2);
-        free(c, self.width, west)
+        let outside = free(c, self.width, west)
             .max(free(r, self.height, south))
-            .clamp(1, i64::from(u32::MAX)) as u32
+            .clamp(1, i64::from(u32::MAX)) as u32;
+        if inside { own } else { outside }
     }
 }
 

@@ -35,16 +35,18 @@ impl<T> Cells for Joint<'_, T> {
     #[inline]
     fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
         let mut least = self.walls.map_or(u32::MAX, |w| w.ahead(x, y, q));
-        let mut met = Met::Wall;
+        // The last body solid here, as `k + 1` (0: none); chosen without branches.
+        let mut solid = 0;
         for (k, (body, _)) in self.bodies.iter().enumerate() {
             let clear = body.ahead(x, y, q);
-            if clear == 0 {
-                met = Met::Body(k);
-            }
+            solid = if clear == 0 { k + 1 } else { solid };
             least = least.min(clear);
         }
         if least == 0 {
-            self.met.set(met);
+            self.met.set(match solid {
+                0 => Met::Wall,
+                k => Met::Body(k - 1),
+            });
         }
         least
     }

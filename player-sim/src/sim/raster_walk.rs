@@ -357,6 +357,11 @@ fn free_steps(error: i64, columns: i64, rows: i64, most_x: i64, most_y: i64) -> 
         // The largest i with 2 * rows * (i - 1) < room: ceil(room / (2 * rows)).
         (-(-room).div_euclid(2 * rows)).clamp(0, most_x)
     };
+    if i < most_x {
+        // Column i + 1 comes only after a row past `most_y`: the rows run out first, all
+        // of them moved (no second division).
+        return (i, most_y);
+    }
     (i, rows_before(i).min(most_y))
 }
 
