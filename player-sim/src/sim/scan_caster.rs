@@ -97,8 +97,16 @@ pub(super) fn walls_reach(sim: &Simulation, z: f64) -> bool {
     (0.0..=sim.world.floor_height).contains(&z)
 }
 
+/// A sensor's caster: given a beam's number and direction, what it hits; and which of its fan's
+/// own beams may meet anything (`None`: any may). The others read their maximum uncast: in the
+/// swarm seven beams in ten, each of which had cost a call, its direction and its lists' checks.
+pub(super) struct Caster<'s> {
+    pub cast: Box<dyn Fn(usize, f64) -> Option<Hit> + 's>,
+    pub busy: Option<Vec<bool>>,
+}
+
 /// The caster of robot `robot`'s sensor at `origin` reaching `max`, with beams `fan` at height
-/// `z`: given a beam's number and direction, what it hits.
+/// `z`.
 pub(super) fn caster<'s>(
     sim: &'s Simulation,
     robot: usize,
@@ -106,7 +114,7 @@ pub(super) fn caster<'s>(
     max: f64,
     fan: Fan,
     z: f64,
-) -> Box<dyn Fn(usize, f64) -> Option<Hit> + 's> {
+) -> Caster<'s> {
     let at = (origin.x, origin.y);
     // Only the beams that may meet a wall walk the walls.
     let seen = walls_reach(sim, z)
@@ -117,15 +125,12 @@ pub(super) fn caster<'s>(
     let scene = Arc::new(ray_scene(sim, at, max));
     let raster = match walls {
         Some(Walls::Grid(grid)) => {
-            return Box::new(grid_caster(
-                sim,
-                robot,
-                (at, max),
-                (fan, z),
-                scene,
-                grid,
-                wall_beams,
-            ));
+            let (cast, busy) =
+                grid_caster(sim, robot, (at, max), (fan, z), scene, grid, wall_beams);
+            return Caster {
+                cast: Box::new(cast),
+                busy: Some(busy),
+            };
         }
         Some(Walls::Raster(raster)) => Some(raster),
         None => None,
@@ -135,7 +140,13 @@ pub(super) fn caster<'s>(
     let (boxes, by_beam) = boxes_within(sim, robot, (at, max), fan, z, scene);
     let directions = sim.fan_directions.of(robot, fan);
     let (resolution, floor_return) = (sim.world.resolution, sim.world.floor_ranger_return);
-    Box::new(move |beam, angle| {
+    let busy = (0..fan.count)
+        .map(|beam| {
+            let walls = raster.is_some() && wall_beams.as_ref().is_none_or(|w| w[beam]);
+            walls || !by_beam.of(beam).is_empty()
+        })
+        .collect();
+    let cast = Box::new(move |beam, angle| {
         let direction = directions.of_beam(beam, angle);
         // A beam turned off its fan's direction walks the walls whether or not the fan's
         // beam may meet them.
@@ -152,11 +163,16 @@ pub(super) fn caster<'s>(
                 b.ranger_return >= 0.0
             })
             .map(|(d, met)| (d, met.map_or(floor_return, |b| b.ranger_return)))
-    })
+    });
+    Caster {
+        cast,
+        busy: Some(busy),
+    }
 }
 
 /// [`caster`] for a floorplan too large for Stage's raster, whose rays meet its own grid: the
-/// walls first, every beam, and then only the boxes within the farthest wall any beam met.
+/// walls first, every beam, and then only the boxes within the farthest wall any beam met. With
+/// it, which of the fan's beams may meet anything.
 fn grid_caster<'s>(
     sim: &'s Simulation,
     robot: usize,
@@ -165,7 +181,7 @@ fn grid_caster<'s>(
     scene: Arc<RayScene>,
     grid: &'s OccupancyGrid,
     wall_beams: Option<Vec<bool>>,
-) -> impl Fn(usize, f64) -> Option<Hit> + 's {
+) -> (impl Fn(usize, f64) -> Option<Hit> + 's, Vec<bool>) {
     let directions = sim.fan_directions.of(robot, fan);
     // The grid's own cast: no regions, no stepped path.
     let wall_along =
@@ -184,9 +200,12 @@ fn grid_caster<'s>(
         .try_fold(0.0f64, |far, wall| wall.map(|d| far.max(d)))
         .map_or(max, |far| far.min(max));
     let (boxes, by_beam) = boxes_within(sim, robot, (at, reach), fan, z, scene.clone());
+    let busy = (0..fan.count)
+        .map(|beam| fan_walls[beam].is_some() || !by_beam.of(beam).is_empty())
+        .collect();
     let everything = OnceCell::new();
     let floor_return = sim.world.floor_ranger_return;
-    move |beam, angle| {
+    let cast = move |beam, angle| {
         let direction = directions.of_beam(beam, angle);
         let nominal = angle == fan_angle(fan, beam);
         let (wall, boxes, ahead) = if nominal {
@@ -207,7 +226,8 @@ fn grid_caster<'s>(
             .nearest_among(ahead, at, direction, limit, |b| b.ranger_return >= 0.0)
             .map(|(d, b)| (d, b.ranger_return));
         thing.or(wall.map(|d| (d, floor_return)))
-    }
+    };
+    (cast, busy)
 }
 
 /// Each robot's last fan of beams and their directions: a robot driving straight on scans the

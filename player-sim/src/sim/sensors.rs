@@ -116,7 +116,8 @@ pub struct RangerReturns {
 /// [`ranger_scan`] with the intensities.
 pub fn ranger_returns(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> RangerReturns {
     scan_with(sim, robot, ranger, |origin, max, fan, z| {
-        caster(sim, robot, origin, max, fan, z)
+        let caster = caster(sim, robot, origin, max, fan, z);
+        (caster.cast, caster.busy)
     })
 }
 
@@ -125,22 +126,25 @@ pub fn ranger_scan_exhaustive(sim: &Simulation, robot: usize, ranger: &RangerSpe
     let scan = scan_with(sim, robot, ranger, |origin, max, fan, z| {
         let directions = Directions::of(fan);
         let scene = ray_scene(sim, (origin.x, origin.y), max);
-        move |i, angle| {
+        let cast = move |i, angle| {
             let along = (angle, directions.of_beam(i, angle));
             let at = (origin.x, origin.y, z);
             cast_exhaustive(sim, robot, at, along, &scene).map(|d| (d, 1.0))
-        }
+        };
+        (cast, None)
     });
     scan.ranges
 }
 
 /// A ranger's beams, each cast by the caster `prepare` makes for a sensor's origin, reach,
-/// beams and height; the caster is given a beam's number and direction.
+/// beams and height; the caster is given a beam's number and direction. With it `prepare` may
+/// tell which of the fan's own beams may meet anything: without noise the others read the
+/// maximum uncast.
 fn scan_with<F: Fn(usize, f64) -> Option<Hit>>(
     sim: &Simulation,
     robot: usize,
     ranger: &RangerSpec,
-    prepare: impl Fn(Pose, f64, Fan, f64) -> F,
+    prepare: impl Fn(Pose, f64, Fan, f64) -> (F, Option<Vec<bool>>),
 ) -> RangerReturns {
     let base = on_robot(sim.robots[robot].pose, ranger.pose);
     // Sized once: grown reading by reading, a 181-beam scan reallocated both lists 8 times.
@@ -170,10 +174,24 @@ fn scan_with<F: Fn(usize, f64) -> Option<Hit>>(
             step,
             count: n,
         };
-        let caster = prepare(origin, sensor.max_range, fan, sensor.z);
+        let (caster, busy) = prepare(origin, sensor.max_range, fan, sensor.z);
         // No noise of the sensor's own nor of the run's: every reading is the range itself,
-        // without a draw per beam.
+        // without a draw per beam, and no beam turns off its fan's direction.
         let quiet = sensor.noise.is_none() && sim.noise.range_sd <= 0.0;
+        if let Some(busy) = busy.filter(|b| quiet && b.len() == n) {
+            let at = out.ranges.len();
+            out.ranges
+                .resize(at + n, sensor.max_range.max(sensor.min_range));
+            out.intensities.resize(at + n, 0.0);
+            for i in (0..n).filter(|&i| busy[i]) {
+                let angle = origin.a + first + i as f64 * step + 0.0;
+                if let Some((range, intensity)) = caster(i, angle) {
+                    out.ranges[at + i] = range.max(sensor.min_range);
+                    out.intensities[at + i] = intensity;
+                }
+            }
+            continue;
+        }
         for i in 0..n {
             let draw = [sim.steps, robot as u64, place, index as u64, i as u64];
             let turn = sim.noise.beam_turn(&sensor.noise, step, &draw);
