@@ -10,6 +10,8 @@
 
 use std::f64::consts::{PI, TAU};
 
+use smallvec::SmallVec;
+
 /// Evenly spaced beams: beam `i` points at `first + i * step` (world angle).
 #[derive(Debug, Clone, Copy)]
 pub struct Fan {
@@ -38,30 +40,33 @@ impl BeamBoxes {
     ) -> BeamBoxes {
         let n = fan.count;
         // Each box's beams as (first, last) ranges; at most two (a fan over the full circle
-        // may see one box at both of its ends).
-        let ranges: Vec<[(usize, usize); 2]> = circles
+        // may see one box at both of its ends). Inline for the boxes about a scan.
+        let ranges: SmallVec<[[(usize, usize); 2]; 32]> = circles
             .map(|(cx, cy, radius)| beams_towards(fan, cx - x, cy - y, radius))
             .collect();
-        let mut counts = vec![0u32; n + 1];
+        // A counting sort by beam in one list: each beam's count at its end, then where each
+        // begins, then (filled in order, so each beam's boxes stay in increasing order) where
+        // each ends, moved back a place to be where the next begins.
+        let mut starts = vec![0u32; n + 1];
         for (lo, hi) in ranges.iter().flatten().copied() {
-            for c in &mut counts[lo..hi] {
+            for c in &mut starts[lo + 1..hi + 1] {
                 *c += 1;
             }
         }
-        let mut starts = vec![0u32; n + 1];
         for i in 0..n {
-            starts[i + 1] = starts[i] + counts[i];
+            starts[i + 1] += starts[i];
         }
-        let mut next = starts.clone();
         let mut boxes = vec![0u32; starts[n] as usize];
         for (k, both) in ranges.iter().enumerate() {
             for &(lo, hi) in both {
-                for i in lo..hi {
-                    boxes[next[i] as usize] = k as u32;
-                    next[i] += 1;
+                for next in &mut starts[lo..hi] {
+                    boxes[*next as usize] = k as u32;
+                    *next += 1;
                 }
             }
         }
+        starts.copy_within(0..n, 1);
+        starts[0] = 0;
         BeamBoxes { starts, boxes }
     }
 
@@ -130,6 +135,34 @@ pub(super) fn beams_spanning(fan: Fan, bearing: f64, half: f64) -> [(usize, usiz
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Each beam lists, in increasing order, exactly the boxes whose beams take it in.
+    #[test]
+    fn each_beam_lists_the_boxes_in_its_direction_in_order() {
+        let fan = Fan {
+            first: -PI / 2.0,
+            step: PI / 180.0,
+            count: 181,
+        };
+        let circles: Vec<(f64, f64, f64)> = (0..40)
+            .map(|k| {
+                let a = k as f64 * 0.77;
+                let d = 0.2 + (k % 7) as f64;
+                (d * a.cos(), d * a.sin(), 0.1 + (k % 3) as f64 * 0.3)
+            })
+            .collect();
+        let lists = BeamBoxes::new(circles.iter().copied(), 0.0, 0.0, fan);
+        for i in 0..fan.count {
+            let want: Vec<u32> = (0..circles.len() as u32)
+                .filter(|&k| {
+                    let (cx, cy, r) = circles[k as usize];
+                    let ranges = beams_towards(fan, cx, cy, r);
+                    ranges.iter().any(|&(lo, hi)| (lo..hi).contains(&i))
+                })
+                .collect();
+            assert_eq!(lists.of(i), &want[..], "beam {i}");
+        }
+    }
 
     #[test]
     fn a_box_ahead_is_listed_for_the_beams_around_its_bearing() {
