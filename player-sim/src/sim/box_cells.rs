@@ -249,6 +249,14 @@ impl BoxCells {
     }
 }
 
+#[cfg(test)]
+impl BoxCells {
+    /// The regions its cells lie in, in order.
+    pub(super) fn listed_regions(&self) -> &[(i64, i64)] {
+        self.regions.listed()
+    }
+}
+
 impl Cells for BoxCells {
     /// Inside the grid: 0 on the outline, else 1 (walked cell by cell). Outside, the square
     /// ahead is free as far as it misses the grid along either axis: up to the grid's nearer

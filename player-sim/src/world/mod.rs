@@ -185,6 +185,26 @@ pub struct BoxObstacle {
     pub obstacle_return: bool,
 }
 
+impl BoxObstacle {
+    /// A plain box of `size` at `pose`: no blocks, no marker, centred on its pose, seen by
+    /// rangers as a wall is, bumped into, not picked up.
+    pub fn plain(name: String, pose: Pose, size: [f64; 3], color: [u8; 3]) -> BoxObstacle {
+        BoxObstacle {
+            name,
+            pose,
+            size,
+            color,
+            fiducial_id: None,
+            ranger_return: 1.0,
+            origin: Pose::default(),
+            shape: Vec::new(),
+            shape_slices: Vec::new(),
+            gripper_return: false,
+            obstacle_return: true,
+        }
+    }
+}
+
 /// Where the floorplan bitmap lies, so a viewer can draw the same walls.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Floorplan {

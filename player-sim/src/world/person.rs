@@ -72,19 +72,12 @@ impl World {
         let mut legs = [0; 2];
         for (leg, side) in legs.iter_mut().zip(["left", "right"]) {
             *leg = self.obstacles.len();
-            self.obstacles.push(BoxObstacle {
-                name: format!("{name} {side} leg"),
-                pose: start,
-                size: [leg_size, leg_size, LEG_HEIGHT],
-                color: TROUSERS,
-                fiducial_id: None,
-                ranger_return: 1.0,
-                origin: Pose::default(),
-                shape: Vec::new(),
-                shape_slices: Vec::new(),
-                gripper_return: false,
-                obstacle_return: true,
-            });
+            self.obstacles.push(BoxObstacle::plain(
+                format!("{name} {side} leg"),
+                start,
+                [leg_size, leg_size, LEG_HEIGHT],
+                TROUSERS,
+            ));
         }
         self.people.push(PersonSpec {
             name,

@@ -119,6 +119,14 @@ impl Listed {
     }
 }
 
+#[cfg(test)]
+impl Listed {
+    /// The regions, in order.
+    pub(in crate::sim) fn listed(&self) -> &[(i64, i64)] {
+        &self.0
+    }
+}
+
 impl Regions for Listed {
     #[inline]
     fn populated(&self, x: i64, y: i64) -> bool {

@@ -1,4 +1,5 @@
 use super::*;
+use crate::sim::box_cells::{BoxCells, Placed};
 use crate::sim::raster_walk::{Regions, region_of};
 use crate::sim::test_randoms::randoms;
 use crate::world::{BoxObstacle, Pose, World};
@@ -7,18 +8,13 @@ use crate::world::{BoxObstacle, Pose, World};
 fn scattered() -> Simulation {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../stage-worlds/swarm.world");
     let mut world = World::load(&path).expect("swarm.world");
-    let obstacle = |name: &str, x: f64, y: f64| BoxObstacle {
-        name: name.into(),
-        pose: Pose { x, y, a: 0.7 },
-        size: [0.5, 0.3, 0.4],
-        color: [0, 0, 0],
-        fiducial_id: None,
-        ranger_return: 1.0,
-        origin: Pose::default(),
-        shape: Vec::new(),
-        shape_slices: Vec::new(),
-        gripper_return: false,
-        obstacle_return: true,
+    let obstacle = |name: &str, x: f64, y: f64| {
+        BoxObstacle::plain(
+            name.into(),
+            Pose { x, y, a: 0.7 },
+            [0.5, 0.3, 0.4],
+            [0, 0, 0],
+        )
     };
     world.obstacles = vec![obstacle("crate", 3.0, 4.0), obstacle("bin", -20.0, 11.0)];
     let mut sim = Simulation::new(world);
@@ -34,30 +30,30 @@ fn scattered() -> Simulation {
     sim
 }
 
-/// The regions a sensor's scene must hold, each worked out on its own: the walls', every
-/// body's (however far), and every obstacle's.
+/// The regions a sensor's scene must hold, worked out another way: the walls', and those of
+/// every cell each body (however far) and each obstacle marks on the raster.
 fn every_region(sim: &Simulation, index: &BodyIndex) -> RegionMap {
     let mut all = RegionMap::over((-20_000, -20_000), (20_000, 20_000));
     all.hold_all(sim.wall_raster().expect("walls").regions());
     let resolution = sim.world.resolution;
+    let mut hold = |placed: Placed| {
+        let cells = BoxCells::of(&placed, resolution).expect("a body's cells");
+        for &(x, y) in cells.listed_regions() {
+            all.hold(x, y);
+        }
+    };
     for (i, spec) in sim.world.robots.iter().enumerate() {
-        let body = std::iter::once((i, spec.size, &spec.shape[..]));
-        let mounted = spec
-            .mounted_bodies
-            .iter()
-            .enumerate()
-            .map(|(k, m)| (index.mounted_body(i, k), m.size, &m.shape[..]));
-        for (number, size, shape) in body.chain(mounted) {
-            index
-                .place(number)
-                .placed(size, shape)
-                .add_regions(resolution, &mut all);
+        hold(index.place(i).placed(spec.size, &spec.shape));
+        for (k, m) in spec.mounted_bodies.iter().enumerate() {
+            hold(
+                index
+                    .place(index.mounted_body(i, k))
+                    .placed(m.size, &m.shape),
+            );
         }
     }
     for o in &sim.world.obstacles {
-        obstacle_place(o, resolution)
-            .placed(o.size, &o.shape)
-            .add_regions(resolution, &mut all);
+        hold(obstacle_place(o, resolution).placed(o.size, &o.shape));
     }
     all
 }
