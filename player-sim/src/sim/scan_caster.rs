@@ -98,11 +98,11 @@ pub(super) fn walls_reach(sim: &Simulation, z: f64) -> bool {
 }
 
 /// A sensor's caster: given a beam's number and direction, what it hits; and which of its fan's
-/// own beams may meet anything (`None`: any may). The others read their maximum uncast: in the
-/// swarm seven beams in ten, each of which had cost a call, its direction and its lists' checks.
+/// own beams may meet anything. The others read their maximum uncast: in the swarm seven beams
+/// in ten, each of which had cost a call, its direction and its lists' checks.
 pub(super) struct Caster<'s> {
     pub cast: Box<dyn Fn(usize, f64) -> Option<Hit> + 's>,
-    pub busy: Option<Vec<bool>>,
+    pub busy: Vec<bool>,
 }
 
 /// The caster of robot `robot`'s sensor at `origin` reaching `max`, with beams `fan` at height
@@ -129,7 +129,7 @@ pub(super) fn caster<'s>(
                 grid_caster(sim, robot, (at, max), (fan, z), scene, grid, wall_beams);
             return Caster {
                 cast: Box::new(cast),
-                busy: Some(busy),
+                busy,
             };
         }
         Some(Walls::Raster(raster)) => Some(raster),
@@ -164,10 +164,7 @@ pub(super) fn caster<'s>(
             })
             .map(|(d, met)| (d, met.map_or(floor_return, |b| b.ranger_return)))
     });
-    Caster {
-        cast,
-        busy: Some(busy),
-    }
+    Caster { cast, busy }
 }
 
 /// [`caster`] for a floorplan too large for Stage's raster, whose rays meet its own grid: the

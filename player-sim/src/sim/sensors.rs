@@ -117,7 +117,7 @@ pub struct RangerReturns {
 pub fn ranger_returns(sim: &Simulation, robot: usize, ranger: &RangerSpec) -> RangerReturns {
     scan_with(sim, robot, ranger, |origin, max, fan, z| {
         let caster = caster(sim, robot, origin, max, fan, z);
-        (caster.cast, caster.busy)
+        (caster.cast, Some(caster.busy))
     })
 }
 
