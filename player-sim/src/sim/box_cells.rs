@@ -270,8 +270,9 @@ impl Cells for BoxCells {
     fn ahead(&self, x: i64, y: i64, q: usize) -> u32 {
         let (c, r) = (x - self.first.0, y - self.first.1);
         let inside = (c >= 0) & (r >= 0) & (c < self.width) & (r < self.height);
-        // The cell's own flag, read from the first cell when outside (the grid is never empty).
-        let k = ((r * self.width + c) & -i64::from(inside)) as usize;
+        // The cell's own flag, read from the first cell when outside (the grid is never empty;
+        // the index wraps where far outside, and is not used there).
+        let k = (r.wrapping_mul(self.width).wrapping_add(c) & -i64::from(inside)) as usize;
         let own = u32::from(!self.solid[k]);
         // Free cells from `v` the way the ray heads along an axis of `n` cells: up to the
         // grid's near edge when it lies ahead, none when the cell is level with it, without end
