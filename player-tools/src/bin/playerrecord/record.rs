@@ -5,12 +5,14 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
-use player_proto::client::{ClientOptions, MultiClient};
+use player_proto::client::{ClientOptions, ConnectionState, MultiClient};
 use player_proto::wire::DevAddr;
 
 /// How often progress is printed.
 const PROGRESS_EVERY: Duration = Duration::from_secs(5);
-/// How long the robots get for their first handshake.
+/// How long the robots get for their first handshake: a robot whose server is not up yet
+/// (refused, retrying) is waited for this long, since its devices are listed, and subscribed,
+/// only once it has connected.
 const HANDSHAKE_WAIT: Duration = Duration::from_secs(10);
 
 /// Record robots until the time is up (or the program is stopped: a recording is readable up
@@ -72,7 +74,15 @@ pub fn run(args: Args) -> Result<()> {
             clients.add(&host, port, options.clone())?;
         }
     }
-    let connected = clients.wait_for_handshakes(HANDSHAKE_WAIT);
+    // Connected, or refused for good: a server still starting (its first try refused) comes
+    // up within the wait, and was otherwise recorded with none of its devices.
+    let deadline = Instant::now() + HANDSHAKE_WAIT;
+    for client in clients.iter() {
+        client.wait_until(deadline, |s| {
+            matches!(s, ConnectionState::Connected | ConnectionState::Failed(_))
+        });
+    }
+    let connected = clients.connected();
     eprintln!("{connected} of {} robots connected", clients.len());
     // Asked of every robot at once, then waited for: 256 robots take one round trip, not 256.
     let mut pending = Vec::new();
