@@ -69,10 +69,26 @@ impl MultiClient {
     /// Waits until every client has finished its first handshake — done, or failed and
     /// retrying — or `timeout` passes; returns how many are connected.
     pub fn wait_for_handshakes(&self, timeout: Duration) -> usize {
+        self.wait_for_each(timeout, |s| *s != ConnectionState::Connecting)
+    }
+
+    /// Waits until every client is connected or refused for good, or `timeout` passes;
+    /// returns how many are connected. Unlike [`MultiClient::wait_for_handshakes`], a server
+    /// still starting (its first try refused, retrying) is waited for: a recorder lists and
+    /// subscribes the devices once, when its robots have connected.
+    pub fn wait_for_connections(&self, timeout: Duration) -> usize {
+        self.wait_for_each(timeout, |s| {
+            matches!(s, ConnectionState::Connected | ConnectionState::Failed(_))
+        })
+    }
+
+    /// Waits until every client's state satisfies `done`, or `timeout` passes; returns how
+    /// many are connected.
+    fn wait_for_each(&self, timeout: Duration, done: impl Fn(&ConnectionState) -> bool) -> usize {
         let deadline = Instant::now() + timeout;
         for client in &self.clients {
             // One deadline for all: the waits overlap, so the whole takes the slowest's time.
-            client.wait_until(deadline, |s| *s != ConnectionState::Connecting);
+            client.wait_until(deadline, &done);
         }
         self.connected()
     }

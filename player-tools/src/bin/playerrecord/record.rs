@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
-use player_proto::client::{ClientOptions, ConnectionState, MultiClient};
+use player_proto::client::{ClientOptions, MultiClient};
 use player_proto::wire::DevAddr;
 
 /// How often progress is printed.
@@ -74,15 +74,7 @@ pub fn run(args: Args) -> Result<()> {
             clients.add(&host, port, options.clone())?;
         }
     }
-    // Connected, or refused for good: a server still starting (its first try refused) comes
-    // up within the wait, and was otherwise recorded with none of its devices.
-    let deadline = Instant::now() + HANDSHAKE_WAIT;
-    for client in clients.iter() {
-        client.wait_until(deadline, |s| {
-            matches!(s, ConnectionState::Connected | ConnectionState::Failed(_))
-        });
-    }
-    let connected = clients.connected();
+    let connected = clients.wait_for_connections(HANDSHAKE_WAIT);
     eprintln!("{connected} of {} robots connected", clients.len());
     // Asked of every robot at once, then waited for: 256 robots take one round trip, not 256.
     let mut pending = Vec::new();
