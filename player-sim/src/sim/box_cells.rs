@@ -224,6 +224,12 @@ impl BoxCells {
         self.cast_ray(&ray, &Nowhere, max)
     }
 
+    /// Its grid's first and last column, and its first and last row (global cells).
+    pub(super) fn spans(&self) -> ((i64, i64), (i64, i64)) {
+        let (x, y) = self.first;
+        ((x, x + self.width - 1), (y, y + self.height - 1))
+    }
+
     /// Distance along the ray from `(x, y)` in the unit direction `(dx, dy)` of a sensor in
     /// `scene` to the first of the cells on Stage's path, within `stop` metres.
     pub(super) fn cast_in(

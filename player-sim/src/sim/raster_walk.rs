@@ -106,6 +106,11 @@ impl Ray {
         })
     }
 
+    /// The way the ray steps along each axis: 1 or -1.
+    pub(super) fn steps(&self) -> (i64, i64) {
+        self.step
+    }
+
     /// Cells from the start to `(x, y)` along the axis with more steps, the one distances
     /// are counted along.
     #[inline]
