@@ -126,6 +126,27 @@ mod tests {
     use crate::world::floor_i64;
     use std::f64::consts::TAU;
 
+    /// A box of random size and heading centred on `(x, y)`.
+    fn turned_box(x: f64, y: f64, next: &mut impl FnMut() -> f64) -> Placed<'static> {
+        let turn = TAU * next();
+        Placed {
+            x,
+            y,
+            sin: turn.sin(),
+            cos: turn.cos(),
+            half_length: 0.1 + 0.3 * next(),
+            half_width: 0.1 + 0.2 * next(),
+            shape: &[],
+        }
+    }
+
+    fn drawn(placed: &[Placed], resolution: f64) -> Vec<BoxCells> {
+        placed
+            .iter()
+            .map(|p| BoxCells::of(p, resolution).expect("cells"))
+            .collect()
+    }
+
     /// A cell the bodies' window says lies outside it has no body's cell within the square it
     /// gives (endless: none within 30 cells): bodies of up to three turned boxes about the
     /// origin, rays every way from it, cells all about.
@@ -138,22 +159,11 @@ mod tests {
         for k in 0..60 {
             let placed: Vec<Placed> = (0..1 + k % 3)
                 .map(|_| {
-                    let turn = TAU * next();
-                    Placed {
-                        x: 3.0 * next() - 1.5,
-                        y: 3.0 * next() - 1.5,
-                        sin: turn.sin(),
-                        cos: turn.cos(),
-                        half_length: 0.1 + 0.3 * next(),
-                        half_width: 0.1 + 0.2 * next(),
-                        shape: &[],
-                    }
+                    let (x, y) = (3.0 * next() - 1.5, 3.0 * next() - 1.5);
+                    turned_box(x, y, &mut next)
                 })
                 .collect();
-            let cells: Vec<BoxCells> = placed
-                .iter()
-                .map(|p| BoxCells::of(p, resolution).expect("cells"))
-                .collect();
+            let cells = drawn(&placed, resolution);
             let refs: Vec<(&BoxCells, ())> = cells.iter().map(|c| (c, ())).collect();
             let (dy, dx) = (TAU * next()).sin_cos();
             let ray = Ray::new(1.0 / resolution, (0.0, 0.0), (dx, dy), 5.0).expect("ray");
@@ -198,22 +208,12 @@ mod tests {
             let max = [2.0, 5.0, 8.0][k % 3];
             let placed: Vec<Placed> = (0..k % 4)
                 .map(|_| {
-                    let (along, turn) = (max * next(), TAU * next());
-                    Placed {
-                        x: x + dx * along + 0.6 * next() - 0.3,
-                        y: y + dy * along + 0.6 * next() - 0.3,
-                        sin: turn.sin(),
-                        cos: turn.cos(),
-                        half_length: 0.1 + 0.3 * next(),
-                        half_width: 0.1 + 0.2 * next(),
-                        shape: &[],
-                    }
+                    let along = max * next();
+                    let (bx, by) = (x + dx * along, y + dy * along);
+                    turned_box(bx + 0.6 * next() - 0.3, by + 0.6 * next() - 0.3, &mut next)
                 })
                 .collect();
-            let cells: Vec<BoxCells> = placed
-                .iter()
-                .map(|p| BoxCells::of(p, resolution).expect("cells"))
-                .collect();
+            let cells = drawn(&placed, resolution);
             let span = |v: f64, s: f64| floor_i64((v + s * max) / resolution) + 64 * s as i64;
             let mut regions =
                 RegionMap::over((span(x, -1.0), span(y, -1.0)), (span(x, 1.0), span(y, 1.0)));
