@@ -40,7 +40,12 @@
 //! its own free square, so that cell is not read. In the cave a ray reads about 7.6 cells of
 //! the raster (most are cache misses in its 800 × 800 raster).
 
+mod divisor;
+mod pattern;
 mod regions;
+
+use divisor::Divisor;
+use pattern::{divisors, free_steps};
 
 pub(super) use regions::{Both, Listed, Nowhere, REGION_BITS, RegionMap, Regions, region_of};
 
@@ -72,6 +77,8 @@ pub(super) struct Ray {
     step: (i64, i64),
     columns: i64,
     rows: i64,
+    /// Twice the columns and twice the rows, the divisors of [`free_steps`].
+    by: (Divisor, Divisor),
     per_metre: f64,
 }
 
@@ -95,13 +102,15 @@ impl Ray {
         let sin = if dy == 0.0 && dx > 0.0 { 1e-12 } else { dy };
         let (along_x, along_y) = (per_metre * range * dx, per_metre * range * sin);
         let sign = |v: f64| if v < 0.0 { -1 } else { 1 };
+        let (columns, rows) = (along_x.abs() as i64, along_y.abs() as i64);
         Some(Ray {
             start,
             cos: dx,
             sin,
             step: (sign(along_x), sign(along_y)),
-            columns: along_x.abs() as i64,
-            rows: along_y.abs() as i64,
+            columns,
+            rows,
+            by: divisors(columns, rows),
             per_metre,
         })
     }
@@ -268,7 +277,13 @@ fn free_run<R: Regions>(regions: &R, ray: &Ray, from: Jump, d: i64) -> (i64, i64
         steps_keeping_sign(from.at.1, sy),
     );
     loop {
-        let (a, b) = free_steps(error, ax, ay, d.min(limit_x) - i, d.min(limit_y) - j);
+        let (a, b) = free_steps(
+            error,
+            (ax, ay),
+            ray.by,
+            d.min(limit_x) - i,
+            d.min(limit_y) - j,
+        );
         (i, j) = (i + a, j + b);
         error += 2 * ay * a - 2 * ax * b;
         if !from.own {
@@ -306,68 +321,6 @@ fn steps_keeping_sign(v: f64, step: i64) -> i64 {
         // `v + step * k` keeps its sign while k <= |v| (the sum's rounding keeps its sign).
         v.abs() as i64
     }
-}
-
-/// Starts of the pattern moving at most this many columns and rows together are stepped.
-const SHORT: i64 = 8;
-
-/// The longest start of the stepping pattern from error `error` (a column while it is
-/// negative, else a row; a column adds `2 * rows`, a row takes `2 * columns`) that moves at
-/// most `most_x` columns and `most_y` rows: how many of each it moves.
-#[inline(always)]
-fn free_steps(error: i64, columns: i64, rows: i64, most_x: i64, most_y: i64) -> (i64, i64) {
-    if columns == 0 {
-        // The error never falls below 0: rows only.
-        return (0, most_y);
-    }
-    // A short start is stepped: cheaper than the divisions below.
-    if most_x + most_y <= SHORT {
-        let (mut i, mut j, mut e) = (0, 0, error);
-        loop {
-            if e < 0 {
-                if i == most_x {
-                    return (i, j);
-                }
-                i += 1;
-                e += 2 * rows;
-            } else {
-                if j == most_y {
-                    return (i, j);
-                }
-                j += 1;
-                e -= 2 * columns;
-            }
-        }
-    }
-    // The rows moved before the column after `i` columns: until the error falls below 0.
-    let rows_before = |i: i64| {
-        let e = error + 2 * rows * i;
-        if e < 0 {
-            0
-        } else {
-            e.div_euclid(2 * columns) + 1
-        }
-    };
-    // Column `i` (≥ 1) is reached while no more than `most_y` rows have been moved:
-    // error + 2 * rows * (i - 1) < 2 * columns * most_y. With no more rows than columns and as
-    // many of each allowed, that holds for every column allowed (the error is below
-    // 2 * rows): no division.
-    if rows <= columns && most_x <= most_y {
-        return (most_x, rows_before(most_x).min(most_y));
-    }
-    let room = 2 * columns * most_y - error;
-    let i = if rows == 0 {
-        if room > 0 { most_x } else { 0 }
-    } else {
-        // The largest i with 2 * rows * (i - 1) < room: ceil(room / (2 * rows)).
-        (-(-room).div_euclid(2 * rows)).clamp(0, most_x)
-    };
-    if i < most_x {
-        // Column i + 1 comes only after a row past `most_y`: the rows run out first, all
-        // of them moved (no second division).
-        return (i, most_y);
-    }
-    (i, rows_before(i).min(most_y))
 }
 
 /// Where a ray crossing empty regions crosses into the next one, across a column of regions

@@ -178,7 +178,13 @@ fn free_steps_are_the_patterns_steps() {
             e += if e < 0 { 2 * rows } else { -2 * columns };
             (i, j) = (ni, nj);
         }
-        let got = free_steps(error, columns, rows, most_x, most_y);
+        let got = free_steps(
+            error,
+            (columns, rows),
+            divisors(columns, rows),
+            most_x,
+            most_y,
+        );
         assert_eq!(got, (i, j), "{error} {columns} {rows} {most_x} {most_y}");
     }
 }

@@ -1,0 +1,90 @@
+//! The stepping pattern of a ray's path (a column while the error is negative, else a row;
+//! `raster_walk.rs`) taken many steps at once: how far it goes within a free square.
+
+use super::divisor::Divisor;
+
+/// The divisors of [`free_steps`] for a ray of `columns` and `rows`: twice each, for the
+/// dividends it takes (below `2 (m + 2)²`, `m` the larger of the ray's steps and a free
+/// square's 255 cells: a jump moves no farther than either).
+pub(super) fn divisors(columns: i64, rows: i64) -> (Divisor, Divisor) {
+    let m = columns.saturating_add(rows).max(256);
+    let most = if m < 1 << 15 {
+        2 * (m + 2) * (m + 2)
+    } else {
+        i64::MAX
+    };
+    (
+        Divisor::new(columns.saturating_mul(2), most),
+        Divisor::new(rows.saturating_mul(2), most),
+    )
+}
+
+/// Starts of the pattern moving at most this many columns and rows together are stepped.
+const SHORT: i64 = 8;
+
+/// The longest start of the stepping pattern from error `error` (a column while it is
+/// negative, else a row; a column adds `2 * rows`, a row takes `2 * columns`) that moves at
+/// most `most_x` columns and `most_y` rows: how many of each it moves. `by` divides by twice
+/// the columns and twice the rows ([`divisors`]).
+#[inline(always)]
+pub(super) fn free_steps(
+    error: i64,
+    (columns, rows): (i64, i64),
+    by: (Divisor, Divisor),
+    most_x: i64,
+    most_y: i64,
+) -> (i64, i64) {
+    if columns == 0 {
+        // The error never falls below 0: rows only.
+        return (0, most_y);
+    }
+    // A short start is stepped: cheaper than the divisions below.
+    if most_x + most_y <= SHORT {
+        let (mut i, mut j, mut e) = (0, 0, error);
+        loop {
+            if e < 0 {
+                if i == most_x {
+                    return (i, j);
+                }
+                i += 1;
+                e += 2 * rows;
+            } else {
+                if j == most_y {
+                    return (i, j);
+                }
+                j += 1;
+                e -= 2 * columns;
+            }
+        }
+    }
+    // The rows moved before the column after `i` columns: until the error falls below 0.
+    let rows_before = |i: i64| {
+        let e = error + 2 * rows * i;
+        if e < 0 { 0 } else { by.0.floor_of(e) + 1 }
+    };
+    // Column `i` (≥ 1) is reached while no more than `most_y` rows have been moved:
+    // error + 2 * rows * (i - 1) < 2 * columns * most_y. With no more rows than columns and as
+    // many of each allowed, that holds for every column allowed (the error is below
+    // 2 * rows): no division.
+    if rows <= columns && most_x <= most_y {
+        return (most_x, rows_before(most_x).min(most_y));
+    }
+    let room = 2 * columns * most_y - error;
+    let i = if rows == 0 {
+        if room > 0 { most_x } else { 0 }
+    } else {
+        // The largest i with 2 * rows * (i - 1) < room: ceil(room / (2 * rows)), none when
+        // there is no room.
+        if room > 0 {
+            by.1.floor_of(room + 2 * rows - 1).min(most_x)
+        } else {
+            0
+        }
+    };
+    if i < most_x {
+        // Column i + 1 comes only after a row past `most_y`: the rows run out first, all
+        // of them moved (no second division).
+        return (i, most_y);
+    }
+    (i, rows_before(i).min(most_y))
+}
