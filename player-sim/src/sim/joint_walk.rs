@@ -27,7 +27,7 @@ pub(super) enum Met {
 struct Joint<'a, T> {
     walls: Option<&'a WallRaster>,
     bodies: &'a [(&'a BoxCells, T)],
-    /// Where along the ray's leading axis the bodies' grids lie (see [`Window`]).
+    /// The columns and rows the bodies' grids span (see [`Window`]).
     window: Window,
     /// Whose was the solid cell read last.
     met: Cell<Met>,

@@ -29,6 +29,9 @@ impl Divisor {
     /// `⌊n / d⌋` for `n` from 0 to the bound.
     #[inline(always)]
     pub(in crate::sim) fn floor_of(self, n: i64) -> i64 {
+        // The multiplication is exact only for a dividend of 32 bits; the caller's bound
+        // promises one (checked where debug assertions are on, as in the tests).
+        debug_assert!(n >= 0 && (self.by == 0 || n < 1 << 32), "{n} / {}", self.d);
         if self.by != 0 {
             ((u128::from(self.by) * n as u128) >> 64) as i64
         } else {
