@@ -12,6 +12,9 @@ use std::f64::consts::{PI, TAU};
 
 use smallvec::SmallVec;
 
+use super::quick_angles;
+use crate::world::floor_i64;
+
 /// Evenly spaced beams: beam `i` points at `first + i * step` (world angle).
 #[derive(Debug, Clone, Copy)]
 pub struct Fan {
@@ -77,8 +80,9 @@ impl BeamBoxes {
 }
 
 /// The beams of `fan` that may pass within `radius` of the point `(cx, cy)` (relative to the
-/// sensor), ahead of it: up to two half-open ranges of beam indices (empty ones `(0, 0)`).
-fn beams_towards(fan: Fan, cx: f64, cy: f64, radius: f64) -> [(usize, usize); 2] {
+/// sensor), ahead of it: up to two half-open ranges of beam indices (empty ones `(0, 0)`);
+/// every beam from within the circle.
+pub(super) fn beams_towards(fan: Fan, cx: f64, cy: f64, radius: f64) -> [(usize, usize); 2] {
     let all = [(0, fan.count), (0, 0)];
     // A square root, not `hypot` (a call into the maths library, for every box of every scan).
     let distance = (cx * cx + cy * cy).sqrt();
@@ -88,10 +92,11 @@ fn beams_towards(fan: Fan, cx: f64, cy: f64, radius: f64) -> [(usize, usize); 2]
     if !apart || !spread {
         return all;
     }
-    let half = (radius / distance).asin();
-    let bearing = cy.atan2(cx);
+    // Both angles a little wide of the exact ones at most, so the fan a little wider.
+    let half = quick_angles::asin(radius / distance) + 2.0 * quick_angles::ANGLE_ERROR;
+    let bearing = quick_angles::atan2(cy, cx);
     // `half` is below π/2 here: a box never covers more than half a turn of directions.
-    debug_assert!(half < PI / 2.0 || half.is_nan());
+    debug_assert!(half < PI / 2.0 + 3.0 * quick_angles::ANGLE_ERROR || half.is_nan());
     beams_spanning(fan, bearing, half)
 }
 
@@ -109,19 +114,23 @@ pub(super) fn beams_spanning(fan: Fan, bearing: f64, half: f64) -> [(usize, usiz
     }
     // The box's fan, and the same a turn before and after: a fan of beams spanning nearly a
     // turn sees a box near its first beam from its last ones too.
-    let last = (fan.count - 1) as f64;
+    let last = (fan.count - 1) as i64;
     let mut out = [(0, 0); 2];
     let mut found = 0;
     for centre in [from_first, from_first - TAU, from_first + TAU] {
-        let lo = ((centre - half) / fan.step).floor() - 1.0;
-        let hi = ((centre + half) / fan.step).ceil() + 1.0;
-        if hi < 0.0 || lo > last {
+        // `floor` and `ceil` without the calls (`floor_i64`); the quotients are finite and
+        // within about 2e10 (a step of at least 1e-9 across at most two turns).
+        let lo = floor_i64((centre - half) / fan.step).saturating_sub(1);
+        let hi = floor_i64(-(centre + half) / fan.step)
+            .saturating_neg()
+            .saturating_add(1);
+        if hi < 0 || lo > last {
             continue;
         }
         if found == 2 {
             return all;
         }
-        out[found] = (lo.max(0.0) as usize, hi.min(last) as usize + 1);
+        out[found] = (lo.max(0) as usize, hi.min(last) as usize + 1);
         found += 1;
     }
     // Two ranges that meet (a fan wider than a turn): every beam, each listed once.

@@ -22,6 +22,7 @@ mod noise;
 mod odometry;
 mod parallel_scans;
 mod position_control;
+mod quick_angles;
 mod raster_walk;
 mod ray_scene;
 mod scan_caster;

@@ -12,7 +12,7 @@
 //! quarters of the last level not proven free are the parts that may hold walls. A beam is
 //! left unwalked only when it passes none of them. Readings cannot change.
 
-use super::beams::{Fan, beams_spanning};
+use super::beams::{Fan, beams_towards};
 use super::wall_raster::WallRaster;
 use crate::world::floor_i64;
 
@@ -128,15 +128,7 @@ impl WallRaster {
 pub(super) fn beams_meeting(parts: &[Part], x: f64, y: f64, fan: Fan) -> Vec<bool> {
     let mut may_meet = vec![false; fan.count];
     for &(cx, cy, radius) in parts {
-        let (ex, ey) = (cx - x, cy - y);
-        let distance = (ex * ex + ey * ey).sqrt();
-        let ranges = if distance > radius * (1.0 + 1e-9) + 1e-9 {
-            beams_spanning(fan, ey.atan2(ex), (radius / distance).asin())
-        } else {
-            // From within a part: every beam.
-            [(0, fan.count), (0, 0)]
-        };
-        for (lo, hi) in ranges {
+        for (lo, hi) in beams_towards(fan, cx - x, cy - y, radius) {
             may_meet[lo..hi].fill(true);
         }
     }
