@@ -5,6 +5,22 @@
 //! `n × (⌊(2⁶⁴ − 1) / d⌋ + 1)` exactly (Lemire, Kaser and Kurz, "Faster remainder by direct
 //! computation", 2019): the multiplier is worked out once a ray.
 
+/// Divisors below this take their multiplier from [`MULTIPLIERS`]: every ray works out two
+/// (twice its columns and twice its rows, a few hundred in the cave), and each is a 64-bit
+/// division of its own.
+const TABLED: usize = 2048;
+
+/// The multiplier of each divisor below [`TABLED`] (none for 0 and 1), worked out when built.
+static MULTIPLIERS: [u64; TABLED] = {
+    let mut table = [0; TABLED];
+    let mut d = 2;
+    while d < TABLED {
+        table[d] = u64::MAX / d as u64 + 1;
+        d += 1;
+    }
+    table
+};
+
 /// A divisor (at least 1) for dividends from 0 to a bound given with it.
 #[derive(Debug, Clone, Copy)]
 pub(in crate::sim) struct Divisor {
@@ -19,7 +35,10 @@ impl Divisor {
         let d = d.max(1);
         let fits = |v: i64| v < 1 << 32;
         let by = if d >= 2 && fits(d) && fits(most) {
-            u64::MAX / d as u64 + 1
+            match MULTIPLIERS.get(d as usize) {
+                Some(&by) => by,
+                None => u64::MAX / d as u64 + 1,
+            }
         } else {
             0
         };
