@@ -14,6 +14,7 @@ mod camera;
 mod cell_blocks;
 mod directions;
 mod drivers;
+mod fan_facing;
 mod geometry;
 mod gripper;
 mod joint_walk;

@@ -17,6 +17,7 @@ mod nearest;
 
 use super::body_places::obstacle_place;
 use super::box_cells::{BoxCells, Drawn, Placed, RayScene, cell_margin};
+use super::fan_facing::Facing;
 use super::geometry::slab_hit;
 use super::shapes::ray_into_polygons;
 use crate::world::{Polygon, ShapeSlice, slice_at};
@@ -181,12 +182,26 @@ pub struct NearbyBoxes<'a> {
     /// How rangers walk to the cells: Stage's path for a sensor's range among the regions it
     /// walks (see [`NearbyBoxes::walked_in`]).
     scene: Option<Arc<RayScene>>,
+    /// The half-plane of the scan's beams, behind which no box is taken in.
+    facing: Option<Facing>,
 }
 
 impl<'a> NearbyBoxes<'a> {
     /// Every robot but `except` and every obstacle whose bounding circle comes within `reach`
     /// of `(x, y)`.
     pub fn around(sim: &'a Simulation, except: Option<usize>, x: f64, y: f64, reach: f64) -> Self {
+        Self::around_facing(sim, except, (x, y), reach, None)
+    }
+
+    /// [`NearbyBoxes::around`] leaving out the boxes wholly behind `facing`, the half-plane of
+    /// a scan's beams (and, through [`NearbyBoxes::with_mounted`], the mounted bodies there).
+    pub(super) fn around_facing(
+        sim: &'a Simulation,
+        except: Option<usize>,
+        (x, y): (f64, f64),
+        reach: f64,
+        facing: Option<Facing>,
+    ) -> Self {
         // The robots in the cells within reach, not every robot: in increasing order, as
         // every robot was asked before, so that ties between boxes go the same way.
         let mut near = Vec::new();
@@ -226,7 +241,10 @@ impl<'a> NearbyBoxes<'a> {
         boxes.extend(
             robots
                 .chain(obstacles)
-                .filter(|(place, ..)| place.within((x, y), reach))
+                .filter(|(place, ..)| {
+                    place.within((x, y), reach)
+                        && facing.is_none_or(|f| f.may_see((place.x, place.y), place.radius))
+                })
                 .map(
                     |(place, body, size, color, ranger_return, (shape, slices))| SolidBox {
                         x: place.x,
@@ -254,6 +272,7 @@ impl<'a> NearbyBoxes<'a> {
             index: Some(index),
             asked: Some(((x, y, reach), near)),
             scene: None,
+            facing,
         }
     }
 

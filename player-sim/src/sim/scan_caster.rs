@@ -17,6 +17,7 @@ use super::Simulation;
 use super::beams::{BeamBoxes, Fan};
 use super::box_cells::RayScene;
 use super::directions::Directions;
+use super::fan_facing::Facing;
 use super::nearby::NearbyBoxes;
 use super::ray_scene::ray_scene;
 use super::wall_beams::WallBeams;
@@ -82,7 +83,8 @@ fn boxes_within<'a>(
     z: f64,
     scene: Arc<RayScene>,
 ) -> (NearbyBoxes<'a>, BeamBoxes) {
-    let boxes = NearbyBoxes::around(sim, Some(robot), at.0, at.1, reach)
+    let facing = Facing::of(fan, at);
+    let boxes = NearbyBoxes::around_facing(sim, Some(robot), at, reach, facing)
         .with_mounted(sim, Some(robot), at, reach)
         .reaching(z)
         .on_raster(sim.world.resolution)

@@ -43,7 +43,10 @@ impl<'a> NearbyBoxes<'a> {
                 // Placed once for every scan by the index.
                 let number = index.mounted_body(i, k);
                 let place = index.place(number);
-                if !place.within((x, y), reach) {
+                let facing = self.facing;
+                if !place.within((x, y), reach)
+                    || facing.is_some_and(|f| !f.may_see((place.x, place.y), place.radius))
+                {
                     continue;
                 }
                 self.boxes.push(SolidBox {
