@@ -1,7 +1,8 @@
 //! Division by a ray's constants as a multiplication. A jump's length along the stepping
-//! pattern takes a division by twice the ray's columns or rows (`free_steps`), five times a
-//! cave ray, each on the way to the next cell read; a 64-bit division waits 10 to 20 cycles,
-//! a multiplication 3 or 4. Where dividend and divisor fit 32 bits, `n / d` is the high word of
+//! pattern takes a division or two by twice the ray's columns or rows (`free_steps`), at every
+//! jump, each on the way to the next cell read; a 64-bit division waits 10 to 20 cycles, a
+//! multiplication 3 or 4 (cheap enough that even a jump of a cell or two is divided, not
+//! stepped). Where dividend and divisor fit 32 bits, `n / d` is the high word of
 //! `n × (⌊(2⁶⁴ − 1) / d⌋ + 1)` exactly (Lemire, Kaser and Kurz, "Faster remainder by direct
 //! computation", 2019): the multiplier is worked out once a ray.
 

@@ -19,9 +19,6 @@ pub(super) fn divisors(columns: i64, rows: i64) -> (Divisor, Divisor) {
     )
 }
 
-/// Starts of the pattern moving at most this many columns and rows together are stepped.
-const SHORT: i64 = 8;
-
 /// The longest start of the stepping pattern from error `error` (a column while it is
 /// negative, else a row; a column adds `2 * rows`, a row takes `2 * columns`) that moves at
 /// most `most_x` columns and `most_y` rows: how many of each it moves. `by` divides by twice
@@ -37,25 +34,6 @@ pub(super) fn free_steps(
     if columns == 0 {
         // The error never falls below 0: rows only.
         return (0, most_y);
-    }
-    // A short start is stepped: cheaper than the divisions below.
-    if most_x + most_y <= SHORT {
-        let (mut i, mut j, mut e) = (0, 0, error);
-        loop {
-            if e < 0 {
-                if i == most_x {
-                    return (i, j);
-                }
-                i += 1;
-                e += 2 * rows;
-            } else {
-                if j == most_y {
-                    return (i, j);
-                }
-                j += 1;
-                e -= 2 * columns;
-            }
-        }
     }
     // The rows moved before the column after `i` columns: until the error falls below 0.
     let rows_before = |i: i64| {
