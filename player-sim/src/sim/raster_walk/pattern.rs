@@ -35,34 +35,27 @@ pub(super) fn free_steps(
         // The error never falls below 0: rows only.
         return (0, most_y);
     }
-    // The rows moved before the column after `i` columns: until the error falls below 0.
-    let rows_before = |i: i64| {
-        let e = error + 2 * rows * i;
-        if e < 0 { 0 } else { by.0.floor_of(e) + 1 }
-    };
     // Column `i` (≥ 1) is reached while no more than `most_y` rows have been moved:
-    // error + 2 * rows * (i - 1) < 2 * columns * most_y. With no more rows than columns and as
-    // many of each allowed, that holds for every column allowed (the error is below
-    // 2 * rows): no division.
-    if rows <= columns && most_x <= most_y {
-        return (most_x, rows_before(most_x).min(most_y));
-    }
+    // error + 2 * rows * (i - 1) < 2 * columns * most_y. The largest such i is
+    // ceil(room / (2 * rows)), none when there is no room (the dividend is then below one
+    // divisor); any with no rows at all.
     let room = 2 * columns * most_y - error;
     let i = if rows == 0 {
         if room > 0 { most_x } else { 0 }
     } else {
-        // The largest i with 2 * rows * (i - 1) < room: ceil(room / (2 * rows)), none when
-        // there is no room.
-        if room > 0 {
-            by.1.floor_of(room + 2 * rows - 1).min(most_x)
-        } else {
-            0
-        }
+        by.1.floor_of((room + 2 * rows - 1).max(0)).min(most_x)
     };
-    if i < most_x {
-        // Column i + 1 comes only after a row past `most_y`: the rows run out first, all
-        // of them moved (no second division).
-        return (i, most_y);
-    }
-    (i, rows_before(i).min(most_y))
+    // Short of `most_x`, column i + 1 comes only after a row past `most_y`: the rows run out
+    // first, all of them moved. Else the rows moved before the column after the i-th: until
+    // the error falls below 0. Both worked out, one kept, without a branch on which: which
+    // way a jump ends follows no pattern a predictor learns.
+    let e = error + 2 * rows * i;
+    let before = by.0.floor_of(e.max(0)) + 1;
+    let before = if e < 0 { 0 } else { before };
+    let j = if i < most_x {
+        most_y
+    } else {
+        before.min(most_y)
+    };
+    (i, j)
 }
