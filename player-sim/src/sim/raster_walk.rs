@@ -181,13 +181,16 @@ pub(super) fn walk<C: Cells, R: Regions>(
         let region = (region_of(cx), region_of(cy));
         if regions.populated(region.0, region.1) {
             crossings = None;
-            // Steps left within this region along each axis.
-            let room = |c: i64, r: i64, s: i64| if s > 0 { r * 32 + 31 - c } else { c - r * 32 };
+            // Steps left within this region along each axis: the cell's place in its region
+            // counted from the far side the way the ray steps (31 - place heading east or
+            // north, as `place ^ 31`).
+            let (flip_x, flip_y) = (if sx > 0 { 31 } else { 0 }, if sy > 0 { 31 } else { 0 });
+            let room = |c: i64, flip: i64| (c & 31) ^ flip;
             // Whether the cell the walk is in lies within the free square of the cell it last
             // read (every cell a jump or a step from a free square lands in does).
             let mut known_free = false;
             loop {
-                let (room_x, room_y) = (room(cx, region.0, sx), room(cy, region.1, sy));
+                let (room_x, room_y) = (room(cx, flip_x), room(cy, flip_y));
                 if known_free {
                     // A free cell on the region's edge whose next step leaves for a region
                     // not walked: whatever its free square, that step is all the walk takes

@@ -44,9 +44,11 @@ impl RegionMap {
         }
     }
 
+    #[inline]
     fn index(&self, x: i64, y: i64) -> Option<usize> {
         let (c, r) = (x - self.first.0, y - self.first.1);
-        (c >= 0 && r >= 0 && c < self.width && r < self.height)
+        // One comparison an axis: below 0 wraps past any width.
+        ((c as u64) < self.width as u64 && (r as u64) < self.height as u64)
             .then(|| (r * self.width + c) as usize)
     }
 
