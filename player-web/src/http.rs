@@ -27,6 +27,9 @@ const MAX_WRITE_BUFFER: usize = 2 * 1024 * 1024;
 const INDEX: &str = include_str!("../assets/index.html");
 const SCRIPT: &str = include_str!("../assets/app.js");
 const WORLD_SCRIPT: &str = include_str!("../assets/world.js");
+const ROBOT_SCRIPT: &str = include_str!("../assets/robot_draw.js");
+const ROWS_SCRIPT: &str = include_str!("../assets/rows.js");
+const IN_VIEW_SCRIPT: &str = include_str!("../assets/in_view.js");
 const STYLE: &str = include_str!("../assets/style.css");
 
 #[derive(Clone)]
@@ -36,7 +39,8 @@ struct Shared {
     stopping: Stopping,
 }
 
-/// The routes: `/` (the page), `/app.js`, `/world.js`, `/style.css`, `/ws` (the live socket);
+/// The routes: `/` (the page), its scripts (`/app.js`, `/world.js`, `/robot_draw.js`,
+/// `/rows.js`, `/in_view.js`), `/style.css`, `/ws` (the live socket);
 /// the sockets end on `stopping` (the front stopped).
 pub fn router(hub: Arc<Hub>, control: Arc<Control>, stopping: Stopping) -> Router {
     Router::new()
@@ -51,6 +55,18 @@ pub fn router(hub: Arc<Hub>, control: Arc<Control>, stopping: Stopping) -> Route
         .route(
             "/world.js",
             get(|| async { asset("text/javascript; charset=utf-8", WORLD_SCRIPT) }),
+        )
+        .route(
+            "/robot_draw.js",
+            get(|| async { asset("text/javascript; charset=utf-8", ROBOT_SCRIPT) }),
+        )
+        .route(
+            "/rows.js",
+            get(|| async { asset("text/javascript; charset=utf-8", ROWS_SCRIPT) }),
+        )
+        .route(
+            "/in_view.js",
+            get(|| async { asset("text/javascript; charset=utf-8", IN_VIEW_SCRIPT) }),
         )
         .route(
             "/style.css",
