@@ -24,13 +24,25 @@ pub const MAX_FROM_PAGE: usize = 16 * 1024;
 const WRITE_BUFFER: usize = 32 * 1024;
 const MAX_WRITE_BUFFER: usize = 2 * 1024 * 1024;
 
-const INDEX: &str = include_str!("../assets/index.html");
-const SCRIPT: &str = include_str!("../assets/app.js");
-const WORLD_SCRIPT: &str = include_str!("../assets/world.js");
-const ROBOT_SCRIPT: &str = include_str!("../assets/robot_draw.js");
-const ROWS_SCRIPT: &str = include_str!("../assets/rows.js");
-const IN_VIEW_SCRIPT: &str = include_str!("../assets/in_view.js");
-const STYLE: &str = include_str!("../assets/style.css");
+const HTML: &str = "text/html; charset=utf-8";
+const SCRIPT: &str = "text/javascript; charset=utf-8";
+const CSS: &str = "text/css; charset=utf-8";
+
+/// The page and its files, each served as compiled in: its path, its type and its text. The
+/// scripts are classic ones, loaded in the order the page names them (`app.js` last).
+const ASSETS: [(&str, &str, &str); 7] = [
+    ("/", HTML, include_str!("../assets/index.html")),
+    ("/app.js", SCRIPT, include_str!("../assets/app.js")),
+    ("/world.js", SCRIPT, include_str!("../assets/world.js")),
+    (
+        "/robot_draw.js",
+        SCRIPT,
+        include_str!("../assets/robot_draw.js"),
+    ),
+    ("/rows.js", SCRIPT, include_str!("../assets/rows.js")),
+    ("/in_view.js", SCRIPT, include_str!("../assets/in_view.js")),
+    ("/style.css", CSS, include_str!("../assets/style.css")),
+];
 
 #[derive(Clone)]
 struct Shared {
@@ -39,39 +51,14 @@ struct Shared {
     stopping: Stopping,
 }
 
-/// The routes: `/` (the page), its scripts (`/app.js`, `/world.js`, `/robot_draw.js`,
-/// `/rows.js`, `/in_view.js`), `/style.css`, `/ws` (the live socket);
-/// the sockets end on `stopping` (the front stopped).
+/// The routes: the page and its files ([`ASSETS`]), `/ws` (the live socket); the sockets end on
+/// `stopping` (the front stopped).
 pub fn router(hub: Arc<Hub>, control: Arc<Control>, stopping: Stopping) -> Router {
-    Router::new()
-        .route(
-            "/",
-            get(|| async { asset("text/html; charset=utf-8", INDEX) }),
-        )
-        .route(
-            "/app.js",
-            get(|| async { asset("text/javascript; charset=utf-8", SCRIPT) }),
-        )
-        .route(
-            "/world.js",
-            get(|| async { asset("text/javascript; charset=utf-8", WORLD_SCRIPT) }),
-        )
-        .route(
-            "/robot_draw.js",
-            get(|| async { asset("text/javascript; charset=utf-8", ROBOT_SCRIPT) }),
-        )
-        .route(
-            "/rows.js",
-            get(|| async { asset("text/javascript; charset=utf-8", ROWS_SCRIPT) }),
-        )
-        .route(
-            "/in_view.js",
-            get(|| async { asset("text/javascript; charset=utf-8", IN_VIEW_SCRIPT) }),
-        )
-        .route(
-            "/style.css",
-            get(|| async { asset("text/css; charset=utf-8", STYLE) }),
-        )
+    ASSETS
+        .iter()
+        .fold(Router::new(), |router, &(path, kind, text)| {
+            router.route(path, get(move || async move { asset(kind, text) }))
+        })
         .route("/ws", get(upgrade))
         // Browsers ask; there is none, and saying so quietly keeps their consoles clean.
         .route(
