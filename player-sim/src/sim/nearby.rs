@@ -15,7 +15,7 @@ mod joint;
 mod mounted;
 mod nearest;
 
-use super::body_places::obstacle_place;
+use super::body_places::{Place, obstacle_place};
 use super::box_cells::{BoxCells, Drawn, Placed, RayScene, cell_margin};
 use super::fan_facing::Facing;
 use super::geometry::slab_hit;
@@ -56,6 +56,12 @@ pub(super) enum Near<'c> {
     Beside,
     Cells(&'c BoxCells),
     Exact(Option<f64>),
+}
+
+/// Is a body at `place` taken in by a sensor at `at` reaching `reach`, whose beams (if
+/// `facing` says) point into a half-plane: within reach, and not wholly behind it.
+fn taken_in(place: &Place, at: (f64, f64), reach: f64, facing: Option<Facing>) -> bool {
+    place.within(at, reach) && facing.is_none_or(|f| f.may_see((place.x, place.y), place.radius))
 }
 
 /// [`SolidBox::body`] of a box whose cells each scan draws for itself.
@@ -241,10 +247,7 @@ impl<'a> NearbyBoxes<'a> {
         boxes.extend(
             robots
                 .chain(obstacles)
-                .filter(|(place, ..)| {
-                    place.within((x, y), reach)
-                        && facing.is_none_or(|f| f.may_see((place.x, place.y), place.radius))
-                })
+                .filter(|(place, ..)| taken_in(place, (x, y), reach, facing))
                 .map(
                     |(place, body, size, color, ranger_return, (shape, slices))| SolidBox {
                         x: place.x,

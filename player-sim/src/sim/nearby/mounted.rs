@@ -4,7 +4,7 @@
 
 use std::sync::Arc;
 
-use super::{NO_BODY, NearbyBoxes, SolidBox};
+use super::{NO_BODY, NearbyBoxes, SolidBox, taken_in};
 use crate::sim::BodyIndex;
 use crate::sim::Simulation;
 
@@ -43,10 +43,7 @@ impl<'a> NearbyBoxes<'a> {
                 // Placed once for every scan by the index.
                 let number = index.mounted_body(i, k);
                 let place = index.place(number);
-                let facing = self.facing;
-                if !place.within((x, y), reach)
-                    || facing.is_some_and(|f| !f.may_see((place.x, place.y), place.radius))
-                {
+                if !taken_in(&place, (x, y), reach, self.facing) {
                     continue;
                 }
                 self.boxes.push(SolidBox {
