@@ -4,8 +4,10 @@
 # 100 Pioneers with SICK lasers wandering in simple.world's cave for 60 simulated seconds, as fast
 # as each can. Stage runs pinned to one core (`stage -g`, which quits at the world's quit_time);
 # player-sim is `sim_speed`'s one-thread pass and its every-core pass. Rounds alternate the two so
-# that a busy moment of the machine falls on both. Prints the times and the ratios; only those
-# numbers go into BENCHMARKS.md.
+# that a busy moment of the machine falls on both. Prints the times and the ratios, and after
+# the rounds each side's median and the ratio of the medians (Stage's own time moves by half
+# from hour to hour on a shared VM: quote many rounds, not one); only those numbers go into
+# BENCHMARKS.md.
 #
 # Usage: bench/stage-speed.sh [ROUNDS]      (3 by default)
 # Environment: REF_ROOT (/opt/ref), ROBOTS (100), SECONDS_SIM (60)
@@ -28,6 +30,9 @@ world=$("$SIM_SPEED" --write-world "$tmp" --robots "$ROBOTS" --seconds "$SECONDS
   --stage-worlds "$REF_ROOT/src/stage/worlds")
 
 now() { date +%s.%N; }
+# The median of the numbers on standard input, one a line.
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+stages=() ones=() manys=()
 echo "$ROBOTS wandering Pioneers with SICK lasers in Stage's cave, $SECONDS_SIM simulated s; $(nproc) cores"
 for ((round = 1; round <= ROUNDS; round++)); do
   start=$(now)
@@ -41,4 +46,11 @@ for ((round = 1; round <= ROUNDS; round++)); do
   printf 'round %d: Stage %.3f s, player-sim one thread %.3f s (%.1fx Stage), every core %.3f s (%.1fx Stage); load %s\n' \
     "$round" "$stage_s" "$one" "$(echo "$stage_s / $one" | bc -l)" "$many" \
     "$(echo "$stage_s / $many" | bc -l)" "$(cut -d' ' -f1-3 /proc/loadavg)"
+  stages+=("$stage_s") ones+=("$one") manys+=("$many")
 done
+stage_m=$(printf '%s\n' "${stages[@]}" | median)
+one_m=$(printf '%s\n' "${ones[@]}" | median)
+many_m=$(printf '%s\n' "${manys[@]}" | median)
+printf 'medians of %d rounds: Stage %.3f s, player-sim one thread %.3f s (%.1fx Stage), every core %.3f s (%.1fx Stage)\n' \
+  "$ROUNDS" "$stage_m" "$one_m" "$(echo "$stage_m / $one_m" | bc -l)" "$many_m" \
+  "$(echo "$stage_m / $many_m" | bc -l)"
