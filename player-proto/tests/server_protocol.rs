@@ -2,108 +2,19 @@
 
 mod support;
 
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::atomic::Ordering;
 use std::time::Duration;
 
-use player_proto::interfaces::common::{BBox3d, Pose2d, Pose3d};
-use player_proto::interfaces::laser::{Laser, LaserGeometry, LaserScan};
+use player_proto::interfaces::common::Pose2d;
+use player_proto::interfaces::laser::{Laser, LaserScan};
 use player_proto::interfaces::player::{
     self, AddReplaceRuleReq, DataModeReq, DeviceReq, DriverInfo, Player,
 };
 use player_proto::interfaces::position2d::{Position2d, Position2dCmdVel};
 use player_proto::message::{Body, Message};
-use player_proto::server::{Device, Reply, Server, ServerConfig};
 use player_proto::wire::{DevAddr, Interface, MsgType, PlayerString};
 use support::RawClient;
-
-/// A laser that answers GET_GEOM and counts subscriptions.
-struct TestLaser {
-    subscribers: Arc<AtomicUsize>,
-    refuse: bool,
-}
-
-impl Device for TestLaser {
-    fn driver_name(&self) -> &str {
-        "sicklms200"
-    }
-    fn on_subscribe(&mut self) -> bool {
-        self.subscribers.fetch_add(1, Ordering::SeqCst);
-        !self.refuse
-    }
-    fn on_unsubscribe(&mut self) {
-        self.subscribers.fetch_sub(1, Ordering::SeqCst);
-    }
-    fn on_request(&mut self, request: &Message) -> Reply {
-        match request.header.subtype {
-            1 => Reply::Ack(Body::Laser(Laser::Geometry(LaserGeometry {
-                pose: Pose3d {
-                    px: 0.1,
-                    ..Pose3d::default()
-                },
-                size: BBox3d {
-                    sw: 0.15,
-                    sl: 0.15,
-                    sh: 0.1,
-                },
-            }))),
-            _ => Reply::Nack,
-        }
-    }
-}
-
-/// A base that records its commands.
-struct TestBase(Arc<Mutex<Vec<Message>>>);
-
-impl Device for TestBase {
-    fn driver_name(&self) -> &str {
-        "stage"
-    }
-    fn on_command(&mut self, command: &Message) {
-        self.0.lock().unwrap().push(command.clone());
-    }
-}
-
-struct Fixture {
-    server: Server,
-    subscribers: Arc<AtomicUsize>,
-    commands: Arc<Mutex<Vec<Message>>>,
-}
-
-fn fixture() -> Fixture {
-    let subscribers = Arc::new(AtomicUsize::new(0));
-    let commands = Arc::new(Mutex::new(Vec::new()));
-    let mut config = ServerConfig::default();
-    let a = config.robot(0);
-    let b = config.robot(0);
-    config.device(
-        a,
-        "laser:0".parse().unwrap(),
-        TestLaser {
-            subscribers: subscribers.clone(),
-            refuse: false,
-        },
-    );
-    config.device(
-        a,
-        "laser:1".parse().unwrap(),
-        TestLaser {
-            subscribers: Arc::default(),
-            refuse: true,
-        },
-    );
-    config.device(
-        a,
-        "position2d:0".parse().unwrap(),
-        TestBase(commands.clone()),
-    );
-    config.device(b, "position2d:0".parse().unwrap(), TestBase(Arc::default()));
-    Fixture {
-        server: Server::start(config).unwrap(),
-        subscribers,
-        commands,
-    }
-}
+use support::test_server::{Fixture, fixture};
 
 fn player_addr() -> DevAddr {
     DevAddr::local(Interface::PLAYER, 0)

@@ -7,6 +7,7 @@ pub mod annotated;
 pub mod captures;
 pub mod served_robots;
 pub mod sessions;
+pub mod test_server;
 
 use std::io::{Read, Write};
 use std::net::TcpStream;
