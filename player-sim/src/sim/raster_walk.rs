@@ -34,16 +34,19 @@
 //! error ([`free_steps`]) rather than cell by cell. Both walks visit the same cells.
 //!
 //! A jump goes on into each next region its path enters that Stage walks too, while the cell
-//! stepped is the point's ([`free_run`]); it is cut at the edge of a region not walked, and
+//! stepped is the point's ([`free_run`]), and the walk goes on from where it lands without
+//! looking the cell up again from the point; a jump is cut at the edge of a region not walked, and
 //! the cell it is cut at lies within the free square it jumped from: free. When that cell's
 //! next step leaves for a region not walked, the step is all the walk takes from it whatever
 //! its own free square, so that cell is not read. In the cave a ray reads about 7.6 cells of
 //! the raster (most are cache misses in its 800 × 800 raster).
 
+mod crossings;
 mod divisor;
 mod pattern;
 mod regions;
 
+use crossings::Crossings;
 use divisor::Divisor;
 use pattern::{divisors, free_steps};
 
@@ -178,7 +181,7 @@ pub(super) fn walk<C: Cells, R: Regions>(
     let surely_within = ray.surely_within(stop);
     while left > 0 {
         let (mut cx, mut cy) = (cell_of(at.0), cell_of(at.1));
-        let region = (region_of(cx), region_of(cy));
+        let mut region = (region_of(cx), region_of(cy));
         if regions.populated(region.0, region.1) {
             crossings = None;
             // Steps left within this region along each axis: the cell's place in its region
@@ -226,15 +229,25 @@ pub(super) fn walk<C: Cells, R: Regions>(
                         return None;
                     }
                 }
-                if i + j == 0 {
+                let jumped = i + j > 0;
+                if !jumped {
                     (i, j) = if error < 0 { (1, 0) } else { (0, 1) };
                 }
                 error += 2 * ay * i - 2 * ax * j;
                 left -= i + j;
                 (cx, cy) = (cx + sx * i, cy + sy * j);
                 at = (at.0 + (sx * i) as f64, at.1 + (sy * j) as f64);
-                if left <= 0 || i > room_x || j > room_y {
+                if left <= 0 {
                     break;
+                }
+                if i > room_x || j > room_y {
+                    // A jump goes on into a region only where Stage walks it and the cell
+                    // stepped stays the point's own (`free_run`): there the walk goes on as it
+                    // would on entering that region, without working the cell out again.
+                    if !jumped || ray.along(at) > surely_within && ray.distance(at) > stop {
+                        break;
+                    }
+                    region = (region_of(cx), region_of(cy));
                 }
             }
         } else {
@@ -323,76 +336,6 @@ fn steps_keeping_sign(v: f64, step: i64) -> i64 {
     } else {
         // `v + step * k` keeps its sign while k <= |v| (the sum's rounding keeps its sign).
         v.abs() as i64
-    }
-}
-
-/// Where a ray crossing empty regions crosses into the next one, across a column of regions
-/// and across a row, and how far (in Stage's sum of the moves along both axes) each lies.
-struct Crossings {
-    across_x: (f64, f64),
-    across_y: (f64, f64),
-    to_x: f64,
-    to_y: f64,
-    /// From one crossing to the next of each kind, and its length.
-    jump_x: (f64, f64),
-    jump_y: (f64, f64),
-    length_x: f64,
-    length_y: f64,
-}
-
-impl Crossings {
-    /// The crossings ahead of `at`, on the line through it along `ray`.
-    fn new(ray: &Ray, at: (f64, f64)) -> Crossings {
-        let (sx, sy) = (ray.step.0 as f64, ray.step.1 as f64);
-        let tan = ray.sin / ray.cos;
-        let corner = |v: f64| (region_of(cell_of(v)) * 32) as f64;
-        // Heading west or south, Stage aims a cell past the region's edge.
-        let towards = |v: f64, s: f64| {
-            if s < 0.0 {
-                corner(v) - v - 1.0
-            } else {
-                corner(v) + 32.0 - v
-            }
-        };
-        let x_move = towards(at.0, sx);
-        let y_move = towards(at.1, sy);
-        let (x_rise, y_run) = (x_move * tan, y_move / tan);
-        let jump_x = (sx * 32.0, sx * 32.0 * tan);
-        let jump_y = (sy * 32.0 / tan, sy * 32.0);
-        Crossings {
-            across_x: (at.0 + x_move, at.1 + x_rise),
-            across_y: (at.0 + y_run, at.1 + y_move),
-            to_x: x_move.abs() + x_rise.abs(),
-            to_y: y_run.abs() + y_move.abs(),
-            jump_x,
-            jump_y,
-            length_x: jump_x.0.abs() + jump_x.1.abs(),
-            length_y: jump_y.0.abs() + jump_y.1.abs(),
-        }
-    }
-
-    /// The nearer crossing and how far it is, the next of its kind set up; `None` when neither
-    /// can be reached.
-    fn next(&mut self) -> Option<((f64, f64), f64)> {
-        if self.to_x < self.to_y {
-            let reached = (self.across_x, self.to_x);
-            self.across_x = (
-                self.across_x.0 + self.jump_x.0,
-                self.across_x.1 + self.jump_x.1,
-            );
-            self.to_y -= self.to_x;
-            self.to_x = self.length_x;
-            (reached.1 > 0.0).then_some(reached)
-        } else {
-            let reached = (self.across_y, self.to_y);
-            self.across_y = (
-                self.across_y.0 + self.jump_y.0,
-                self.across_y.1 + self.jump_y.1,
-            );
-            self.to_x -= self.to_y;
-            self.to_y = self.length_y;
-            (reached.1 > 0.0).then_some(reached)
-        }
     }
 }
 
