@@ -55,6 +55,16 @@ pub enum McapReadError {
         reason: LayoutError,
     },
     #[error(
+        "message {index} of channel {topic:?} (at or before byte {offset}) is record {found} of the recording, but {records} records came before it: the records between are missing (damage the MCAP reader passed over, such as a chunk whose opcode changed)"
+    )]
+    OutOfSequence {
+        topic: String,
+        index: u64,
+        records: u64,
+        found: u32,
+        offset: u64,
+    },
+    #[error(
         "a message at or before byte {offset} is on channel id {channel}, which no channel record declared"
     )]
     UnknownChannel { channel: u16, offset: u64 },
@@ -188,6 +198,18 @@ impl<R: Read> McapRecords<R> {
                     let Some((connection, stream)) = channel.player else {
                         continue;
                     };
+                    // Each Player message's sequence number is its record's place in the
+                    // recording (modulo 2³², `layout.rs`): a gap is records lost, never a
+                    // recording's beginning with its middle left out.
+                    if header.sequence != self.records as u32 {
+                        return Err(McapReadError::OutOfSequence {
+                            topic: channel.topic.clone(),
+                            index,
+                            records: self.records,
+                            found: header.sequence,
+                            offset,
+                        });
+                    }
                     let event =
                         to_event(stream, &data).map_err(|reason| McapReadError::BadMessage {
                             topic: channel.topic.clone(),

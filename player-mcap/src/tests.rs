@@ -229,6 +229,51 @@ fn a_lying_record_length_is_refused_without_allocating_it() {
     assert!(error.contains("at or before byte"), "{error}");
 }
 
+/// A chunk whose opcode byte is damaged into another record's (a summary offset, which a
+/// linear reader passes over) loses its records: the reading stops where they are missing,
+/// naming it, instead of going on with the records after them as if they followed.
+#[test]
+fn a_chunk_passed_over_is_a_gap_not_a_shorter_recording() {
+    let (records, mcap) = small_recording();
+    let mut chunks = Vec::new();
+    let mut at = MAGIC.len();
+    while mcap[at] != 0x0F {
+        // Up to the data section's end record.
+        if mcap[at] == 0x06 {
+            chunks.push(at);
+        }
+        let length = u64::from_le_bytes(mcap[at + 1..at + 9].try_into().unwrap());
+        at += 9 + usize::try_from(length).unwrap();
+    }
+    assert!(chunks.len() > 4, "{}", chunks.len());
+    let mut gaps = 0;
+    for &chunk in &chunks {
+        let mut damaged = mcap.clone();
+        damaged[chunk] = 0x0E;
+        let (got, stopped) = read_mcap(&damaged);
+        assert_eq!(&got[..], &records[..got.len()], "chunk at {chunk}");
+        // A chunk after the recording's last Player message (Foxglove's alone) loses only the
+        // end, which reads as a shorter recording, as a cut does.
+        let Some(error) = stopped.map(|e| e.to_string()) else {
+            continue;
+        };
+        // Else it stopped: at the gap, or at a message whose channel the lost chunk declared.
+        if error.contains("the records between are missing") {
+            gaps += 1;
+            assert!(
+                error.contains(&format!("but {} records came", got.len())),
+                "{error}"
+            );
+        } else {
+            assert!(
+                error.contains("which no channel record declared"),
+                "{error}"
+            );
+        }
+    }
+    assert!(gaps > 0);
+}
+
 #[cfg(feature = "foxglove")]
 #[test]
 fn every_laser_scan_is_also_a_foxglove_laser_scan() {
