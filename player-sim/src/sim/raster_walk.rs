@@ -179,6 +179,8 @@ pub(super) fn walk<C: Cells, R: Regions>(
     let mut left = ax + ay;
     let mut crossings: Option<Crossings> = None;
     let surely_within = ray.surely_within(stop);
+    // Has the point passed `stop`? Only a point near it needs the distance's divisions.
+    let past = |at: (f64, f64)| ray.along(at) > surely_within && ray.distance(at) > stop;
     while left > 0 {
         let (mut cx, mut cy) = (cell_of(at.0), cell_of(at.1));
         let mut region = (region_of(cx), region_of(cy));
@@ -244,7 +246,7 @@ pub(super) fn walk<C: Cells, R: Regions>(
                     // A jump goes on into a region only where Stage walks it and the cell
                     // stepped stays the point's own (`free_run`): there the walk goes on as it
                     // would on entering that region, without working the cell out again.
-                    if !jumped || ray.along(at) > surely_within && ray.distance(at) > stop {
+                    if !jumped || past(at) {
                         break;
                     }
                     region = (region_of(cx), region_of(cy));
@@ -256,7 +258,7 @@ pub(super) fn walk<C: Cells, R: Regions>(
             at = to;
             left = (left as f64 - moved) as i64;
         }
-        if ray.along(at) > surely_within && ray.distance(at) > stop {
+        if past(at) {
             return None;
         }
     }
