@@ -1,22 +1,15 @@
 //! The `player-sim` program itself: serves on --port-base, steps --headless-once N times and
 //! exits cleanly; a broken world fails with its file:line:col and a non-zero status.
 
+mod support;
+
 use std::io::{BufRead, BufReader};
-use std::net::TcpListener;
 use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use player_proto::client::{Client, ClientOptions};
-
-/// A port nobody listens on right now (the system's choice, released at once).
-fn free_port() -> u16 {
-    TcpListener::bind("127.0.0.1:0")
-        .unwrap()
-        .local_addr()
-        .unwrap()
-        .port()
-}
+use support::free_port;
 
 #[test]
 fn headless_once_serves_on_the_port_base_then_exits() {

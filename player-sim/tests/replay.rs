@@ -3,8 +3,9 @@
 //! seeks; a torn recording plays up to its cut; a client that vanishes or a replay that is
 //! killed leaves the others, and the recording, as they were.
 
+mod support;
+
 use std::io::{BufRead, BufReader};
-use std::net::TcpListener;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::sync::mpsc::{self, Receiver};
@@ -23,6 +24,7 @@ use player_sim::serve::{ServeOptions, serve};
 use player_sim::served::from_cfg;
 use player_sim::sim::Simulation;
 use player_sim::world::World;
+use support::free_port;
 
 const WAIT: Duration = Duration::from_secs(20);
 /// DATA messages recorded from the live simulation.
@@ -138,15 +140,6 @@ fn data_in(path: &Path) -> Vec<Seen> {
             _ => None,
         })
         .collect()
-}
-
-/// A port nobody listens on right now.
-fn free_port() -> u16 {
-    TcpListener::bind("127.0.0.1:0")
-        .unwrap()
-        .local_addr()
-        .unwrap()
-        .port()
 }
 
 /// `player-sim --replay`, once it says it serves.

@@ -1,6 +1,6 @@
 //! What the world and simulation tests share: the shipped worlds, a scratch world file,
-//! stepping a simulation for so many simulated seconds, navigation.world served over TCP, and
-//! waiting — bounded in time — for what a server sends.
+//! stepping a simulation for so many simulated seconds, navigation.world served over TCP, a
+//! free port, and waiting — bounded in time — for what a server sends.
 
 #![allow(dead_code)] // each test file uses its own part
 
@@ -20,6 +20,15 @@ pub fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     let path = dir.join(name);
     std::fs::write(&path, text).unwrap();
     path
+}
+
+/// A port nobody listens on right now (the system's choice, released at once).
+pub fn free_port() -> u16 {
+    std::net::TcpListener::bind("127.0.0.1:0")
+        .unwrap()
+        .local_addr()
+        .unwrap()
+        .port()
 }
 
 pub fn run(sim: &mut Simulation, seconds: f64) {
