@@ -18,6 +18,7 @@
 pub mod foxglove_channels;
 pub mod layout;
 pub mod reader;
+pub mod record_lengths;
 pub mod sink;
 pub mod source;
 pub mod writer;

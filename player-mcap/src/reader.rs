@@ -65,6 +65,14 @@ pub enum McapReadError {
         offset: u64,
     },
     #[error(
+        "a record at or before byte {offset} (after {records} whole Player records) is damaged: {reason}"
+    )]
+    LengthPastRecord {
+        offset: u64,
+        records: u64,
+        reason: crate::record_lengths::LengthPastRecord,
+    },
+    #[error(
         "a message at or before byte {offset} is on channel id {channel}, which no channel record declared"
     )]
     UnknownChannel { channel: u16, offset: u64 },
@@ -163,6 +171,14 @@ impl<R: Read> McapRecords<R> {
                 records: self.records,
                 source,
             };
+            // The parser reserves what a record's lengths claim: they are checked first.
+            crate::record_lengths::check(opcode, data).map_err(|reason| {
+                McapReadError::LengthPastRecord {
+                    offset,
+                    records: self.records,
+                    reason,
+                }
+            })?;
             match mcap::parse_record(opcode, data).map_err(mcap_error)? {
                 mcap::records::Record::Channel(channel) => {
                     let player = match player_channel(&channel.metadata) {

@@ -296,6 +296,8 @@ fn other(e: impl std::error::Error + Send + Sync + 'static) -> SourceError {
 /// The file's summary section, `None` when it has none (a file cut short has no footer).
 fn read_summary(file: &mut File) -> Result<Option<mcap::Summary>, mcap::McapError> {
     let size = file.seek(SeekFrom::End(0))?;
+    // The summary reader parses what it reads as the lengths claim: checked first.
+    summary_lengths(file, size)?;
     let options = mcap::sans_io::summary_reader::SummaryReaderOptions::default()
         .with_file_size(size)
         .with_record_length_limit(RECORD_LIMIT);
@@ -314,4 +316,49 @@ fn read_summary(file: &mut File) -> Result<Option<mcap::Summary>, mcap::McapErro
         }
     }
     Ok(reader.finish())
+}
+
+/// Checks every record of the file's summary section (from the footer's `summary_start` to the
+/// footer) with [`record_lengths::check`]: a length past its record is an error, and the file
+/// is then read without its index. A file without a footer or a summary passes: the summary
+/// reader finds none.
+fn summary_lengths(file: &mut File, size: u64) -> Result<(), mcap::McapError> {
+    // The footer record (opcode, length, 20 bytes) and the closing magic.
+    const FOOTER: u64 = 1 + 8 + 20;
+    const MAGIC: u64 = 8;
+    let Some(footer) = size.checked_sub(FOOTER + MAGIC) else {
+        return Ok(());
+    };
+    let mut tail = [0u8; (FOOTER + MAGIC) as usize];
+    file.seek(SeekFrom::Start(footer))?;
+    file.read_exact(&mut tail)?;
+    // No footer (a file cut short): nothing to check; the summary reader says so itself.
+    if tail[0] != 0x02 || &tail[FOOTER as usize..] != crate::MAGIC {
+        return Ok(());
+    }
+    let start = u64::from_le_bytes(tail[9..17].try_into().expect("8 bytes"));
+    if start == 0 || start >= footer {
+        return Ok(());
+    }
+    let damaged = |reason: String| mcap::McapError::Io(std::io::Error::other(reason));
+    let mut at = start;
+    file.seek(SeekFrom::Start(at))?;
+    let mut body = Vec::new();
+    while at < footer {
+        let mut head = [0u8; 9];
+        file.read_exact(&mut head)?;
+        let length = u64::from_le_bytes(head[1..].try_into().expect("8 bytes"));
+        let left = footer - at - 9;
+        if length > left || length > RECORD_LIMIT as u64 {
+            return Err(damaged(format!(
+                "a summary record at byte {at} claims {length} bytes, {left} remain before the footer"
+            )));
+        }
+        body.resize(length as usize, 0);
+        file.read_exact(&mut body)?;
+        crate::record_lengths::check(head[0], &body)
+            .map_err(|e| damaged(format!("the summary record at byte {at}: {e}")))?;
+        at += 9 + length;
+    }
+    Ok(())
 }

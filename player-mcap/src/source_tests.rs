@@ -101,3 +101,43 @@ fn a_foreign_mcap_file_is_refused_when_opened() {
     let error = McapFile::open(&path).err().expect("refused").to_string();
     assert!(error.contains("not a Player recording"), "{error}");
 }
+
+/// The byte where the first record of opcode `opcode` in the summary section of `file` starts.
+fn summary_record(file: &[u8], opcode: u8) -> usize {
+    let footer = file.len() - 8 - 29;
+    let word = |at: usize| u64::from_le_bytes(file[at..at + 8].try_into().unwrap()) as usize;
+    let mut at = word(footer + 9);
+    while file[at] != opcode {
+        at += 9 + word(at + 1);
+    }
+    at
+}
+
+#[test]
+fn a_summary_length_past_its_record_leaves_the_file_read_without_its_index() {
+    let dir = tempfile::tempdir().unwrap();
+    let (records, _, mcap_path) = files(dir.path());
+    let mut bytes = std::fs::read(&mcap_path).unwrap();
+    // A summary channel record's topic claims 3 GB (the body: id, schema id, topic length).
+    let channel = summary_record(&bytes, 0x04);
+    bytes[channel + 13..channel + 17].copy_from_slice(&3_327_152_921u32.to_le_bytes());
+    let damaged = dir.path().join("damaged.mcap");
+    std::fs::write(&damaged, &bytes).unwrap();
+    let mcap = McapFile::open(&damaged).unwrap();
+    assert!(!mcap.indexed(), "the damaged summary is not used");
+    // Every record comes back; the damage is named where the reading meets it, after them.
+    let mut stream = mcap.read().unwrap();
+    let mut got = Vec::new();
+    let error = loop {
+        match stream.next_record() {
+            Ok(Some(record)) => got.push(record),
+            Ok(None) => panic!("the damage went unnoticed"),
+            Err(e) => break e.to_string(),
+        }
+    };
+    assert_eq!(got, records, "the data section is whole");
+    assert!(
+        error.contains("channel record's field 3 claims 3327152921 bytes"),
+        "{error}"
+    );
+}

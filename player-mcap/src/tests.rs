@@ -372,3 +372,18 @@ fn small_recording() -> &'static (Vec<Record>, Vec<u8>) {
         (records, mcap)
     })
 }
+
+#[test]
+fn a_length_past_its_record_stops_the_reading_before_it_is_parsed() {
+    let (records, mcap) = small_recording();
+    // The header record right after the magic: opcode, length, then its profile's length.
+    let mut damaged = mcap.clone();
+    damaged[17..21].copy_from_slice(&3_327_152_921u32.to_le_bytes());
+    let (got, error) = read_mcap(&damaged);
+    assert!(got.is_empty() && !records.is_empty());
+    let error = error.expect("an error").to_string();
+    assert!(
+        error.contains("header record's field 1 claims 3327152921 bytes"),
+        "{error}"
+    );
+}
