@@ -30,13 +30,14 @@ seeds=()
 case $target in
   composition | valid_composition) seeds=(../configs) ;;
   stage_world) seeds=(../stage-worlds) ;;
+  player_cfg) seeds=(../stage-worlds) ;;
 esac
 # Longest input tried. libFuzzer's default is the longest seed, and swarm1024.world is 90 KB:
 # world files that long only repeat the model lines the shorter seeds already hold, and made
 # each input several times slower to load.
 max_len=()
 case $target in
-  stage_world) max_len=(-max_len=16384) ;;
+  stage_world | player_cfg) max_len=(-max_len=16384) ;;
 esac
 log=target/$target${LANE:+.$LANE}.log
 build=()
