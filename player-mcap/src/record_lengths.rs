@@ -18,13 +18,19 @@ enum Field {
     Bytes64,
     /// A `u32` byte length, then string keys and string values, pair by pair.
     StrMap,
-    /// A `u32` byte length, then fixed-size entries.
-    FixedMap,
+    /// A `u32` byte length, then entries of so many bytes each: whole entries only, since the
+    /// parser reads a whole entry whenever any of the length is left.
+    FixedMap(usize),
     /// Whatever remains (a message's data).
     Rest,
 }
 
 use Field::{Bytes32, Bytes64, Fixed, FixedMap, Rest, Str, StrMap};
+
+/// An entry of a map from channel id to count or offset (`u16`, `u64`).
+const CHANNEL_ENTRY: usize = 2 + 8;
+/// A message index entry: log time and offset (`u64`, `u64`).
+const INDEX_ENTRY: usize = 8 + 8;
 
 /// Each record kind's name and fields, by opcode; `None` for an opcode MCAP does not define
 /// (the reader passes over those).
@@ -39,20 +45,27 @@ fn layout(opcode: u8) -> Option<(&'static str, &'static [Field])> {
             "chunk",
             &[Fixed(8), Fixed(8), Fixed(8), Fixed(4), Str, Bytes64],
         ),
-        0x07 => ("message index", &[Fixed(2), FixedMap]),
+        0x07 => ("message index", &[Fixed(2), FixedMap(INDEX_ENTRY)]),
         0x08 => (
             "chunk index",
-            &[Fixed(32), FixedMap, Fixed(8), Str, Fixed(16)],
+            &[Fixed(32), FixedMap(CHANNEL_ENTRY), Fixed(8), Str, Fixed(16)],
         ),
         0x09 => ("attachment", &[Fixed(16), Str, Str, Bytes64, Fixed(4)]),
         0x0A => ("attachment index", &[Fixed(40), Str, Str]),
-        0x0B => ("statistics", &[Fixed(42), FixedMap]),
+        0x0B => ("statistics", &[Fixed(42), FixedMap(CHANNEL_ENTRY)]),
         0x0C => ("metadata", &[Str, StrMap]),
         0x0D => ("metadata index", &[Fixed(16), Str]),
         0x0E => ("summary offset", &[Fixed(17)]),
         0x0F => ("data end", &[Fixed(4)]),
         _ => return None,
     })
+}
+
+/// Is `opcode` a record a summary section holds (schemas, channels, the indexes, statistics,
+/// summary offsets)? A chunk or a message there is damage: the summary reader would open it
+/// and parse what it holds unchecked.
+pub fn in_summary(opcode: u8) -> bool {
+    matches!(opcode, 0x03 | 0x04 | 0x08 | 0x0A | 0x0B | 0x0D | 0x0E)
 }
 
 /// A length a record declares past the end of its body.
@@ -84,12 +97,13 @@ pub fn check(opcode: u8, body: &[u8]) -> Result<(), LengthPastRecord> {
         };
         let (claimed, prefix) = match field {
             Fixed(n) => (n as u64, 0),
-            Str | Bytes32 | StrMap | FixedMap => (word(rest, 4).ok_or(fault(4, rest.len()))?, 4),
+            Str | Bytes32 | StrMap | FixedMap(_) => (word(rest, 4).ok_or(fault(4, rest.len()))?, 4),
             Bytes64 => (word(rest, 8).ok_or(fault(8, rest.len()))?, 8),
             Rest => return Ok(()),
         };
         let left = rest.len() - prefix;
-        if claimed > left as u64 {
+        let partial = matches!(field, FixedMap(entry) if claimed % entry as u64 != 0);
+        if claimed > left as u64 || partial {
             return Err(fault(claimed, left));
         }
         let (inside, after) = rest[prefix..].split_at(claimed as usize);
@@ -174,6 +188,20 @@ mod tests {
         body.extend(0x919b_7961u32.to_le_bytes());
         let err = check(0x0C, &body).unwrap_err();
         assert_eq!((err.record, err.field, err.claimed), ("metadata", 2, 4));
+    }
+
+    #[test]
+    fn a_map_of_part_of_an_entry_is_refused() {
+        // A chunk index whose offsets map claims 47 bytes: the parser reads five whole
+        // 10-byte entries, three bytes past it, and its compression's length from there.
+        let mut body = vec![0u8; 32];
+        body.extend(47u32.to_le_bytes());
+        body.extend([0u8; 47 + 8 + 4 + 16]);
+        let err = check(0x08, &body).unwrap_err();
+        assert_eq!((err.record, err.field, err.claimed), ("chunk index", 2, 47));
+        body[32..36].copy_from_slice(&40u32.to_le_bytes());
+        body.truncate(32 + 4 + 40 + 8 + 4 + 16);
+        assert_eq!(check(0x08, &body), Ok(()));
     }
 
     #[test]

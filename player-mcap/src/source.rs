@@ -354,6 +354,12 @@ fn summary_lengths(file: &mut File, size: u64) -> Result<(), mcap::McapError> {
                 "a summary record at byte {at} claims {length} bytes, {left} remain before the footer"
             )));
         }
+        if !crate::record_lengths::in_summary(head[0]) {
+            return Err(damaged(format!(
+                "a record of opcode {:#04x} at byte {at} in the summary section",
+                head[0]
+            )));
+        }
         body.resize(length as usize, 0);
         file.read_exact(&mut body)?;
         crate::record_lengths::check(head[0], &body)
