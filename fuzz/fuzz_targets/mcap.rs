@@ -67,8 +67,7 @@ fn as_source(bytes: &[u8], time_ns: u64) {
         offset: 0,
         records: 0,
     };
-    for stream in [file.read(), file.read_from(point)].into_iter().flatten() {
-        let mut stream = stream;
+    for mut stream in [file.read(), file.read_from(point)].into_iter().flatten() {
         while let Ok(Some(_)) = stream.next_record() {}
     }
 }

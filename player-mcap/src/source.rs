@@ -323,17 +323,17 @@ fn read_summary(file: &mut File) -> Result<Option<mcap::Summary>, mcap::McapErro
 /// is then read without its index. A file without a footer or a summary passes: the summary
 /// reader finds none.
 fn summary_lengths(file: &mut File, size: u64) -> Result<(), mcap::McapError> {
-    // The footer record (opcode, length, 20 bytes) and the closing magic.
-    const FOOTER: u64 = 1 + 8 + 20;
-    const MAGIC: u64 = 8;
-    let Some(footer) = size.checked_sub(FOOTER + MAGIC) else {
+    // The footer record (opcode, length, 20 bytes), then the closing magic.
+    const FOOTER: usize = 1 + 8 + 20;
+    let end = FOOTER + crate::MAGIC.len();
+    let Some(footer) = size.checked_sub(end as u64) else {
         return Ok(());
     };
-    let mut tail = [0u8; (FOOTER + MAGIC) as usize];
+    let mut tail = vec![0u8; end];
     file.seek(SeekFrom::Start(footer))?;
     file.read_exact(&mut tail)?;
     // No footer (a file cut short): nothing to check; the summary reader says so itself.
-    if tail[0] != 0x02 || &tail[FOOTER as usize..] != crate::MAGIC {
+    if tail[0] != 0x02 || &tail[FOOTER..] != crate::MAGIC {
         return Ok(());
     }
     let start = u64::from_le_bytes(tail[9..17].try_into().expect("8 bytes"));
@@ -341,12 +341,14 @@ fn summary_lengths(file: &mut File, size: u64) -> Result<(), mcap::McapError> {
         return Ok(());
     }
     let damaged = |reason: String| mcap::McapError::Io(std::io::Error::other(reason));
+    file.seek(SeekFrom::Start(start))?;
+    // A long recording's summary holds thousands of small chunk indexes: read in pieces.
+    let mut input = BufReader::new(&mut *file);
     let mut at = start;
-    file.seek(SeekFrom::Start(at))?;
     let mut body = Vec::new();
     while at < footer {
         let mut head = [0u8; 9];
-        file.read_exact(&mut head)?;
+        input.read_exact(&mut head)?;
         let length = u64::from_le_bytes(head[1..].try_into().expect("8 bytes"));
         let left = footer - at - 9;
         if length > left || length > RECORD_LIMIT as u64 {
@@ -361,7 +363,7 @@ fn summary_lengths(file: &mut File, size: u64) -> Result<(), mcap::McapError> {
             )));
         }
         body.resize(length as usize, 0);
-        file.read_exact(&mut body)?;
+        input.read_exact(&mut body)?;
         crate::record_lengths::check(head[0], &body)
             .map_err(|e| damaged(format!("the summary record at byte {at}: {e}")))?;
         at += 9 + length;
