@@ -294,7 +294,7 @@ fn other(e: impl std::error::Error + Send + Sync + 'static) -> SourceError {
 }
 
 /// The file's summary section, `None` when it has none (a file cut short has no footer).
-fn read_summary(file: &mut File) -> Result<Option<mcap::Summary>, mcap::McapError> {
+pub(crate) fn read_summary(file: &mut File) -> Result<Option<mcap::Summary>, mcap::McapError> {
     let size = file.seek(SeekFrom::End(0))?;
     // The summary reader parses what it reads as the lengths claim: checked first.
     summary_lengths(file, size)?;
@@ -337,10 +337,18 @@ fn summary_lengths(file: &mut File, size: u64) -> Result<(), mcap::McapError> {
         return Ok(());
     }
     let start = u64::from_le_bytes(tail[9..17].try_into().expect("8 bytes"));
-    if start == 0 || start >= footer {
+    let damaged = |reason: String| mcap::McapError::Io(std::io::Error::other(reason));
+    // No summary, or an empty one ending at the footer.
+    if start == 0 || start == footer {
         return Ok(());
     }
-    let damaged = |reason: String| mcap::McapError::Io(std::io::Error::other(reason));
+    // Past the footer's start the summary reader would parse the footer's own bytes and the
+    // closing magic as records, unchecked.
+    if start > footer {
+        return Err(damaged(format!(
+            "the summary starts at byte {start}, past the footer at byte {footer}"
+        )));
+    }
     file.seek(SeekFrom::Start(start))?;
     // A long recording's summary holds thousands of small chunk indexes: read in pieces.
     let mut input = BufReader::new(&mut *file);

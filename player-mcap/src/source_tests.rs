@@ -141,3 +141,28 @@ fn a_summary_length_past_its_record_leaves_the_file_read_without_its_index() {
         "{error}"
     );
 }
+
+/// The fuzzer's file (45 bytes): the opening magic, a footer whose `summary_start` (16)
+/// points into the footer itself, where byte 16 reads as a Header record's opcode, and the
+/// closing magic. The summary reader parsed the footer's bytes as that record, whose
+/// strings claimed 4 GB.
+#[test]
+fn a_summary_starting_past_the_footer_is_damage() {
+    let mut bytes = crate::MAGIC.to_vec();
+    bytes.extend([0x02, 0x7f, 0, 0, 0, 0, 0, 0, 0x01]);
+    bytes.extend(16u64.to_le_bytes());
+    bytes.extend([0xa1, 0x4a, 0, 0, 0, 0, 0, 0, 0x6b, 0x7d, 0xb8, 0xf0]);
+    bytes.extend(crate::MAGIC);
+    assert_eq!(bytes.len(), 45);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("past.mcap");
+    std::fs::write(&path, &bytes).unwrap();
+    let mut file = std::fs::File::open(&path).unwrap();
+    let error = format!(
+        "{:?}",
+        crate::source::read_summary(&mut file).expect_err("damaged")
+    );
+    assert!(error.contains("past the footer at byte 8"), "{error}");
+    // Opened all the same, without an index.
+    assert!(!McapFile::open(&path).unwrap().indexed());
+}
