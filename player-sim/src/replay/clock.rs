@@ -69,6 +69,10 @@ pub struct Clock {
 }
 
 impl Clock {
+    /// The count of seeks a clock starts with: the playback thread waits from it, not from the
+    /// count when the thread first looks, since the servers answer seeks from their start.
+    pub const SEEKS_AT_START: u64 = 0;
+
     pub fn new(duration: u64, speed: f64, playing: bool) -> Clock {
         Clock {
             state: Mutex::new(State {
@@ -76,7 +80,7 @@ impl Clock {
                 speed,
                 position_at_anchor: 0,
                 anchor: Instant::now(),
-                seeks: 0,
+                seeks: Self::SEEKS_AT_START,
                 changes: 0,
                 step_to_next: false,
                 stopped: false,
@@ -169,7 +173,7 @@ impl Clock {
         }
     }
 
-    /// The number of seeks so far, for the playback thread to note where it reads from.
+    /// The number of seeks so far ([`Clock::SEEKS_AT_START`] when it was made).
     pub fn seeks(&self) -> u64 {
         self.state.lock().expect("clock").seeks
     }

@@ -48,10 +48,9 @@ type Reader = Box<dyn RecordStream>;
 
 impl Playback {
     pub fn run(self) {
-        // The clock's count of seeks when it was made, not when this thread came to read it:
-        // the servers answer requests from their start, and a seek asked before this thread
-        // ran is one still to make (read as done, every message up to it was published).
-        let mut seeks = 0;
+        // From the clock's first count, not the count now: a seek asked before this thread ran
+        // is one still to make (read as done, every message up to it was published).
+        let mut seeks = Clock::SEEKS_AT_START;
         let mut changes = 0;
         let mut reader = self.open_at(self.seek_points.first().copied());
         let mut next: Option<Due> = None;
